@@ -1,0 +1,32 @@
+# Counter-Steer: every entry point. Each target provisions what it needs first, so
+# `make play` and `make test` work on a bare machine. See README.md.
+SHELL := bash
+.DEFAULT_GOAL := help
+.PHONY: help setup build play test bench export clean
+
+help: ## List the targets
+	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-7s %s\n", $$1, $$2}'
+
+setup: ## Provision host tools, Godot 4.6, ODE and the Python tools (idempotent)
+	@tools/provision-host.sh
+	@tools/provision-godot.sh
+	@tools/build-ode.sh
+	@tools/provision-python.sh
+
+build: setup ## Build the native extension (release) and import the project
+	@tools/build.sh
+
+play: build ## Launch the game window
+	@tools/play.sh
+
+test: build ## Run every check: Rust fmt/clippy/tests, gdlint, GDScript suites, screenshots, export
+	@tools/test.sh
+
+bench: setup ## Print the performance figures (see docs/benchmarks.md)
+	@tools/cargo run --release --quiet -p cpbp-core --bin cpbp-bench
+
+export: build ## Export the Linux build into build/linux/
+	@tools/export.sh
+
+clean: ## Remove build products (not the provisioning cache)
+	rm -rf build native/target addons/cpbp/bin/*.so .godot

@@ -1,0 +1,13 @@
+//! Counter-Steer's GDExtension entry point: the Godot classes that wrap `cpbp-core`.
+
+mod native_info;
+mod ode_world;
+
+use godot::prelude::*;
+
+struct CounterSteerExtension;
+
+// SAFETY: this is the one entry point of the library; gdext's macro generates the
+// `gdext_rust_init` symbol named in addons/cpbp/cpbp.gdextension.
+#[gdextension]
+unsafe impl ExtensionLibrary for CounterSteerExtension {}

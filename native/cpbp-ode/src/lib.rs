@@ -1,0 +1,17 @@
+//! Safe, minimal bindings to ODE 0.16 (double precision, thread-local collision data).
+//!
+//! All `unsafe` of the project lives in this crate. The API is shaped so that no handle
+//! can outlive what it names: one [`World`] owns its ODE world, collision space, contact
+//! joint group, bodies and geoms, and hands out plain index handles ([`BodyId`], [`GeomId`]).
+
+mod ffi;
+mod runtime;
+mod world;
+
+pub use runtime::{configuration, ensure_thread_data, Configuration};
+pub use world::{BodyId, GeomId, Mass, SurfaceParams, World};
+
+/// Three-component vector as ODE uses it (double precision).
+pub type Vec3 = [f64; 3];
+/// Quaternion in ODE's order: w, x, y, z.
+pub type Quat = [f64; 4];

@@ -1,0 +1,377 @@
+//! One ODE world with its collision space and contact joints, owned as a unit.
+
+use std::os::raw::c_void;
+use std::ptr;
+
+use crate::ffi;
+use crate::runtime::ensure_thread_data;
+use crate::{Quat, Vec3};
+
+/// Most contact points generated for one pair of geoms in one step.
+const MAX_CONTACTS_PER_PAIR: usize = 8;
+
+/// Index of a body inside its [`World`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct BodyId(pub usize);
+
+/// Index of a collision geom inside its [`World`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct GeomId(pub usize);
+
+/// Mass properties of a rigid body, in the body's own frame.
+#[derive(Clone, Copy, Debug)]
+pub struct Mass {
+    raw: ffi::dMass,
+}
+
+impl Mass {
+    /// A solid sphere of the given total mass (kg) and radius (m).
+    pub fn sphere(total: f64, radius: f64) -> Self {
+        let mut raw = ffi::dMass::default();
+        // SAFETY: `raw` is a valid, exclusively borrowed dMass.
+        unsafe { ffi::dMassSetSphereTotal(&mut raw, total, radius) };
+        Self { raw }
+    }
+
+    /// A solid box of the given total mass (kg) and full side lengths (m).
+    pub fn cuboid(total: f64, size: Vec3) -> Self {
+        let mut raw = ffi::dMass::default();
+        // SAFETY: `raw` is a valid, exclusively borrowed dMass.
+        unsafe { ffi::dMassSetBoxTotal(&mut raw, total, size[0], size[1], size[2]) };
+        Self { raw }
+    }
+
+    /// Total mass in kg.
+    pub fn total(&self) -> f64 {
+        self.raw.mass
+    }
+}
+
+/// Contact surface shared by every contact of a world: Coulomb friction and softness.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceParams {
+    /// Coulomb friction coefficient.
+    pub mu: f64,
+    /// Contact constraint error reduction (0–1).
+    pub soft_erp: f64,
+    /// Contact constraint force mixing (softness).
+    pub soft_cfm: f64,
+}
+
+impl Default for SurfaceParams {
+    fn default() -> Self {
+        Self {
+            mu: 1.0,
+            soft_erp: 0.2,
+            soft_cfm: 1e-5,
+        }
+    }
+}
+
+/// An ODE world, its collision space, its contact joints, bodies and geoms.
+///
+/// Everything is destroyed together when the `World` is dropped, so handles cannot dangle.
+pub struct World {
+    world: ffi::dWorldID,
+    space: ffi::dSpaceID,
+    contacts: ffi::dJointGroupID,
+    threading: ffi::dThreadingImplementationID,
+    bodies: Vec<ffi::dBodyID>,
+    geoms: Vec<ffi::dGeomID>,
+    surface: SurfaceParams,
+}
+
+// SAFETY: a World owns all ODE objects it names and ODE keeps no hidden links between
+// worlds; moving it to another thread is safe as long as that thread has ODE data,
+// which every method ensures through `ensure_thread_data`.
+unsafe impl Send for World {}
+
+impl World {
+    /// An empty world with the given gravity (m/s²) and a simple collision space.
+    pub fn new(gravity: Vec3) -> Self {
+        ensure_thread_data();
+        // SAFETY: ODE is initialised; the returned ids are owned by this World.
+        unsafe {
+            let world = ffi::dWorldCreate();
+            ffi::dWorldSetGravity(world, gravity[0], gravity[1], gravity[2]);
+            let space = ffi::dSimpleSpaceCreate(ptr::null_mut());
+            let contacts = ffi::dJointGroupCreate(0);
+            // Without its own implementation a world steps through ODE's one global
+            // self-threaded implementation, whose wakeup flag races when several threads
+            // step their own worlds at once (as the rollouts do).
+            let threading = ffi::dThreadingAllocateSelfThreadedImplementation();
+            ffi::dWorldSetStepThreadingImplementation(
+                world,
+                ffi::dThreadingImplementationGetFunctions(threading),
+                threading,
+            );
+            Self {
+                world,
+                space,
+                contacts,
+                threading,
+                bodies: Vec::new(),
+                geoms: Vec::new(),
+                surface: SurfaceParams::default(),
+            }
+        }
+    }
+
+    /// Sets gravity (m/s²).
+    pub fn set_gravity(&mut self, gravity: Vec3) {
+        // SAFETY: the world is alive.
+        unsafe { ffi::dWorldSetGravity(self.world, gravity[0], gravity[1], gravity[2]) };
+    }
+
+    /// Sets the contact surface used for every contact from now on.
+    pub fn set_surface(&mut self, surface: SurfaceParams) {
+        self.surface = surface;
+    }
+
+    /// Adds a dynamic body with the given mass at a position.
+    pub fn add_body(&mut self, mass: Mass, position: Vec3) -> BodyId {
+        ensure_thread_data();
+        // SAFETY: the world is alive; the body is owned by it and recorded here.
+        unsafe {
+            let body = ffi::dBodyCreate(self.world);
+            ffi::dBodySetMass(body, &mass.raw);
+            ffi::dBodySetPosition(body, position[0], position[1], position[2]);
+            self.bodies.push(body);
+        }
+        BodyId(self.bodies.len() - 1)
+    }
+
+    /// Adds a sphere geom, attached to `body` or static when `body` is `None`.
+    pub fn add_sphere(&mut self, radius: f64, body: Option<BodyId>) -> GeomId {
+        // SAFETY: the space is alive; the geom is destroyed with it.
+        let geom = unsafe { ffi::dCreateSphere(self.space, radius) };
+        self.attach(geom, body)
+    }
+
+    /// Adds a box geom with full side lengths, attached to `body` or static.
+    pub fn add_box(&mut self, size: Vec3, body: Option<BodyId>) -> GeomId {
+        // SAFETY: as for add_sphere.
+        let geom = unsafe { ffi::dCreateBox(self.space, size[0], size[1], size[2]) };
+        self.attach(geom, body)
+    }
+
+    /// Adds a static infinite plane `normal · p = offset` (normal need not be unit length).
+    pub fn add_plane(&mut self, normal: Vec3, offset: f64) -> GeomId {
+        // SAFETY: as for add_sphere.
+        let geom =
+            unsafe { ffi::dCreatePlane(self.space, normal[0], normal[1], normal[2], offset) };
+        self.attach(geom, None)
+    }
+
+    fn attach(&mut self, geom: ffi::dGeomID, body: Option<BodyId>) -> GeomId {
+        if let Some(body) = body {
+            let body = self.bodies[body.0];
+            // SAFETY: both the geom and the body belong to this world.
+            unsafe { ffi::dGeomSetBody(geom, body) };
+        }
+        self.geoms.push(geom);
+        GeomId(self.geoms.len() - 1)
+    }
+
+    /// Sets the world-frame position of a static geom (planes are placed by their equation).
+    pub fn set_geom_position(&mut self, geom: GeomId, position: Vec3) {
+        // SAFETY: the geom belongs to this world.
+        unsafe { ffi::dGeomSetPosition(self.geoms[geom.0], position[0], position[1], position[2]) };
+    }
+
+    /// Number of bodies.
+    pub fn body_count(&self) -> usize {
+        self.bodies.len()
+    }
+
+    /// World-frame position of a body's centre of mass.
+    pub fn body_position(&self, body: BodyId) -> Vec3 {
+        // SAFETY: the body belongs to this world; ODE returns a pointer to 3 (padded to 4) reals.
+        unsafe { read_vec3(ffi::dBodyGetPosition(self.bodies[body.0])) }
+    }
+
+    /// Orientation of a body as a quaternion (w, x, y, z).
+    pub fn body_quaternion(&self, body: BodyId) -> Quat {
+        // SAFETY: the body belongs to this world; ODE returns a pointer to 4 reals.
+        unsafe {
+            let q = ffi::dBodyGetQuaternion(self.bodies[body.0]);
+            [*q, *q.add(1), *q.add(2), *q.add(3)]
+        }
+    }
+
+    /// World-frame linear velocity of a body.
+    pub fn body_linear_velocity(&self, body: BodyId) -> Vec3 {
+        // SAFETY: as for body_position.
+        unsafe { read_vec3(ffi::dBodyGetLinearVel(self.bodies[body.0])) }
+    }
+
+    /// Sets the world-frame linear velocity of a body.
+    pub fn set_body_linear_velocity(&mut self, body: BodyId, velocity: Vec3) {
+        // SAFETY: the body belongs to this world.
+        unsafe {
+            ffi::dBodySetLinearVel(self.bodies[body.0], velocity[0], velocity[1], velocity[2])
+        };
+    }
+
+    /// Advances the world by `dt` seconds: collision, contact joints, QuickStep.
+    pub fn step(&mut self, dt: f64) {
+        ensure_thread_data();
+        let mut context = CollideContext {
+            world: self.world,
+            contacts: self.contacts,
+            surface: self.surface,
+        };
+        // SAFETY: the callback only runs during this call and gets a pointer to `context`,
+        // which outlives it; all ids belong to this world.
+        unsafe {
+            ffi::dSpaceCollide(
+                self.space,
+                (&mut context as *mut CollideContext).cast::<c_void>(),
+                Some(near_callback),
+            );
+            ffi::dWorldQuickStep(self.world, dt);
+            ffi::dJointGroupEmpty(self.contacts);
+        }
+    }
+}
+
+impl Drop for World {
+    fn drop(&mut self) {
+        ensure_thread_data();
+        // SAFETY: the ids are owned by this World and destroyed exactly once; destroying the
+        // space destroys its geoms (cleanup is on by default), the world its bodies and joints.
+        unsafe {
+            ffi::dJointGroupDestroy(self.contacts);
+            ffi::dSpaceDestroy(self.space);
+            ffi::dWorldDestroy(self.world);
+            ffi::dThreadingFreeImplementation(self.threading);
+        }
+    }
+}
+
+struct CollideContext {
+    world: ffi::dWorldID,
+    contacts: ffi::dJointGroupID,
+    surface: SurfaceParams,
+}
+
+/// Reads a vector ODE handed out as a pointer to at least three reals.
+///
+/// # Safety
+/// `p` must point to three readable `f64`s.
+unsafe fn read_vec3(p: *const f64) -> Vec3 {
+    // SAFETY: guaranteed by the caller.
+    unsafe { [*p, *p.add(1), *p.add(2)] }
+}
+
+unsafe extern "C" fn near_callback(data: *mut c_void, o1: ffi::dGeomID, o2: ffi::dGeomID) {
+    // SAFETY: `data` is the CollideContext passed by World::step, alive for this call; the
+    // geoms come from that world's space.
+    unsafe {
+        let context = &*(data as *const CollideContext);
+        let b1 = ffi::dGeomGetBody(o1);
+        let b2 = ffi::dGeomGetBody(o2);
+        if b1.is_null() && b2.is_null() {
+            return;
+        }
+        if !b1.is_null()
+            && !b2.is_null()
+            && ffi::dAreConnectedExcluding(b1, b2, ffi::dJointTypeContact as i32) != 0
+        {
+            return;
+        }
+        let mut contacts: [ffi::dContact; MAX_CONTACTS_PER_PAIR] = Default::default();
+        let count = ffi::dCollide(
+            o1,
+            o2,
+            MAX_CONTACTS_PER_PAIR as i32,
+            &mut contacts[0].geom,
+            std::mem::size_of::<ffi::dContact>() as i32,
+        );
+        for contact in contacts.iter_mut().take(count.max(0) as usize) {
+            contact.surface.mode =
+                (ffi::dContactSoftERP | ffi::dContactSoftCFM | ffi::dContactApprox1) as i32;
+            contact.surface.mu = context.surface.mu;
+            contact.surface.soft_erp = context.surface.soft_erp;
+            contact.surface.soft_cfm = context.surface.soft_cfm;
+            let joint = ffi::dJointCreateContact(context.world, context.contacts, contact);
+            ffi::dJointAttach(joint, b1, b2);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const G: f64 = 9.81;
+
+    #[test]
+    fn a_dropped_body_falls_half_g_t_squared() {
+        let mut world = World::new([0.0, -G, 0.0]);
+        let ball = world.add_body(Mass::sphere(1.0, 0.1), [0.0, 10.0, 0.0]);
+        let dt = 1.0 / 240.0;
+        let steps = 240;
+        for _ in 0..steps {
+            world.step(dt);
+        }
+        let t = dt * steps as f64;
+        let fallen = 10.0 - world.body_position(ball)[1];
+        // Semi-implicit Euler overshoots ½gt² by ½g·t·dt; allow that and no more.
+        let exact = 0.5 * G * t * t;
+        assert!(
+            (fallen - exact).abs() <= 0.5 * G * t * dt + 1e-9,
+            "fell {fallen}, ½gt² = {exact}"
+        );
+        assert!((world.body_linear_velocity(ball)[1] + G * t).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_sphere_comes_to_rest_on_a_plane() {
+        let mut world = World::new([0.0, -G, 0.0]);
+        world.add_plane([0.0, 1.0, 0.0], 0.0);
+        let ball = world.add_body(Mass::sphere(2.0, 0.25), [0.0, 1.0, 0.0]);
+        world.add_sphere(0.25, Some(ball));
+        for _ in 0..600 {
+            world.step(1.0 / 120.0);
+        }
+        let y = world.body_position(ball)[1];
+        assert!((y - 0.25).abs() < 0.01, "sphere rests at {y}, radius 0.25");
+        assert!(world.body_linear_velocity(ball)[1].abs() < 1e-3);
+    }
+
+    #[test]
+    fn many_threads_step_their_own_worlds_with_contacts_at_once() {
+        // The rollouts step one world per thread; this must be race-free (no shared
+        // threading dispatcher, thread-local collision caches) and give identical results.
+        let simulate = || {
+            let mut world = World::new([0.0, -G, 0.0]);
+            world.add_plane([0.0, 1.0, 0.0], 0.0);
+            let ball = world.add_body(Mass::sphere(1.0, 0.2), [0.0, 0.5, 0.0]);
+            world.add_sphere(0.2, Some(ball));
+            world.add_box([0.5, 0.5, 0.5], None);
+            for _ in 0..2000 {
+                world.step(1.0 / 240.0);
+            }
+            world.body_position(ball)
+        };
+        let reference = simulate();
+        let handles: Vec<_> = (0..8).map(|_| std::thread::spawn(simulate)).collect();
+        for handle in handles {
+            assert_eq!(handle.join().unwrap(), reference);
+        }
+    }
+
+    #[test]
+    fn worlds_can_move_between_threads() {
+        let mut world = World::new([0.0, -G, 0.0]);
+        let ball = world.add_body(Mass::sphere(1.0, 0.1), [0.0, 0.0, 0.0]);
+        let world = std::thread::spawn(move || {
+            world.step(0.1);
+            world
+        })
+        .join()
+        .unwrap();
+        assert!(world.body_position(ball)[1] < 0.0);
+    }
+}

@@ -1,0 +1,43 @@
+@tool
+class_name NativeModule
+extends RefCounted
+## Describes the native module (the Rust GDExtension) without failing when it is missing,
+## so menus can show a clear message instead of a script error.
+
+const INFO_CLASS := &"NativeInfo"
+
+
+## True when the extension is loaded and its classes are registered.
+static func is_loaded() -> bool:
+	return ClassDB.class_exists(INFO_CLASS)
+
+
+## Version of the native module, or an empty string when it is not loaded.
+static func version() -> String:
+	if not is_loaded():
+		return ""
+	return str(ClassDB.class_call_static(INFO_CLASS, &"version"))
+
+
+## `dGetConfiguration()` of the linked ODE, or an empty string when not loaded.
+static func ode_configuration() -> String:
+	if not is_loaded():
+		return ""
+	return str(ClassDB.class_call_static(INFO_CLASS, &"ode_configuration"))
+
+
+## True when ODE is double precision with thread-local collision data.
+static func ode_is_suitable() -> bool:
+	return is_loaded() and bool(ClassDB.class_call_static(INFO_CLASS, &"ode_is_suitable"))
+
+
+## One line for title screens and bug reports.
+static func describe() -> String:
+	if not is_loaded():
+		return "Native module not loaded: run 'make build'"
+	var precision := "double" if ode_configuration().contains("ODE_double_precision") else "single"
+	var threads := "thread-safe collision" if ode_is_suitable() else "NOT thread-safe collision"
+	return (
+		"native %s · ODE 0.16 (%s, %s) · Godot %s"
+		% [version(), precision, threads, Engine.get_version_info().string]
+	)

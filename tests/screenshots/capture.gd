@@ -1,0 +1,74 @@
+extends Node
+## Opens a scene in a real window, waits for it to render, saves a screenshot and fails
+## when the picture is blank (one flat colour, or nearly so): a scene that loads but shows
+## a grey screen is a bug. Run under Xvfb by tools/screenshot.sh.
+##
+## Arguments after `--`: `--scene=res://…`, `--out=PATH.png`, `--frames=N` (default 30).
+
+const MIN_DISTINCT_COLOURS := 12
+const MIN_LUMINANCE_SPREAD := 0.04
+
+
+func _ready() -> void:
+	var options := {scene = "", out = "", frames = "30"}
+	for argument: String in OS.get_cmdline_user_args():
+		var parts := argument.trim_prefix("--").split("=", true, 1)
+		if parts.size() == 2 and options.has(parts[0]):
+			options[parts[0]] = parts[1]
+	if options.scene.is_empty() or options.out.is_empty():
+		_quit_with("usage: -- --scene=res://… --out=PATH.png [--frames=N]", 2)
+		return
+	var packed := load(options.scene) as PackedScene
+	if packed == null:
+		_quit_with("cannot load scene %s" % options.scene, 1)
+		return
+	add_child(packed.instantiate())
+	for _i: int in int(options.frames):
+		await get_tree().process_frame
+	await RenderingServer.frame_post_draw
+	var image := get_viewport().get_texture().get_image()
+	DirAccess.make_dir_recursive_absolute(String(options.out).get_base_dir())
+	var saved := image.save_png(options.out)
+	if saved != OK:
+		_quit_with("cannot write %s: %s" % [options.out, error_string(saved)], 1)
+		return
+	var stats := _picture_stats(image)
+	var blank: bool = stats.colours < MIN_DISTINCT_COLOURS or stats.spread < MIN_LUMINANCE_SPREAD
+	print(
+		(
+			"screenshot %s: %dx%d, %d distinct colours, luminance spread %.3f%s"
+			% [
+				options.out,
+				image.get_width(),
+				image.get_height(),
+				stats.colours,
+				stats.spread,
+				" — BLANK" if blank else ""
+			]
+		)
+	)
+	_quit_with("", 1 if blank else 0)
+
+
+## Distinct colours (4 bits a channel) and luminance standard deviation over a 64×36 grid.
+func _picture_stats(image: Image) -> Dictionary:
+	var seen := {}
+	var sum := 0.0
+	var sum_squares := 0.0
+	var samples := 0
+	for gx: int in 64:
+		for gy: int in 36:
+			var colour := image.get_pixel(gx * image.get_width() / 64, gy * image.get_height() / 36)
+			seen[Vector3i(colour.r8 >> 4, colour.g8 >> 4, colour.b8 >> 4)] = true
+			var luminance := colour.get_luminance()
+			sum += luminance
+			sum_squares += luminance * luminance
+			samples += 1
+	var mean := sum / samples
+	return {colours = seen.size(), spread = sqrt(maxf(sum_squares / samples - mean * mean, 0.0))}
+
+
+func _quit_with(message: String, code: int) -> void:
+	if not message.is_empty():
+		printerr("capture: %s" % message)
+	get_tree().quit(code)

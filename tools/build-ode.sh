@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Builds ODE 0.16 from Debian's source package: static, position-independent,
+# double precision, with thread-local collision data (OU).
+# Debian's binary libode lacks OU (unsafe trimesh collision from several threads)
+# and its libode.a is not PIC, so it cannot be linked into the extension.
+source "$(dirname "$0")/common.sh"
+
+if [ -f "$ODE_PREFIX/.complete" ]; then
+  exit 0
+fi
+
+work="$CACHE_ROOT/ode-build"
+rm -rf "$work"; mkdir -p "$work/apt/lists/partial" "$work/src"
+
+# A private apt configuration with a deb-src line for the host's suite: the host's
+# own sources are neither read nor changed.
+suite=$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")
+echo "deb-src $(debian_mirror) $suite main" > "$work/apt/sources.list"
+apt_opts=(-o "Dir::Etc::SourceList=$work/apt/sources.list" -o "Dir::Etc::SourceParts=-"
+          -o "Dir::State::Lists=$work/apt/lists" -o "APT::Sandbox::User=root" -qq)
+log "fetching ODE's Debian source package"
+apt-get "${apt_opts[@]}" update >/dev/null
+(cd "$work/src" && apt-get "${apt_opts[@]}" source --download-only ode >/dev/null)
+dsc=$(ls "$work"/src/ode_*.dsc | head -n1)
+[ -n "$dsc" ] || die "no ODE source package found"
+(cd "$work/src" && dpkg-source --no-check -x "$(basename "$dsc")" ode >/dev/null)
+version=$(sed -n 's/^Version: \([0-9]*:\)\{0,1\}\([0-9.]*\).*/\2/p' "$dsc")
+case "$version" in "$ODE_VERSION_WANTED"*) ;; *) die "expected ODE $ODE_VERSION_WANTED, the source package is $version";; esac
+
+log "building ODE $version (static, PIC, double, OU)"
+cmake -S "$work/src/ode" -B "$work/build" -G "Unix Makefiles" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$ODE_PREFIX.partial" \
+  -DBUILD_SHARED_LIBS=OFF -DCMAKE_POSITION_INDEPENDENT_CODE=ON \
+  -DODE_DOUBLE_PRECISION=ON -DODE_WITH_OU=ON -DODE_WITH_DEMOS=OFF -DODE_WITH_TESTS=OFF \
+  -DODE_WITH_LIBCCD=ON -DODE_WITH_LIBCCD_SYSTEM=OFF >"$work/cmake.log" 2>&1 \
+  || { tail -n 30 "$work/cmake.log" >&2; die "cmake configure of ODE failed"; }
+cmake --build "$work/build" -j"$(nproc)" >"$work/build.log" 2>&1 \
+  || { tail -n 30 "$work/build.log" >&2; die "ODE build failed"; }
+rm -rf "$ODE_PREFIX.partial"
+cmake --install "$work/build" >/dev/null
+touch "$ODE_PREFIX.partial/.complete"
+rm -rf "$ODE_PREFIX"; mv "$ODE_PREFIX.partial" "$ODE_PREFIX"
+rm -rf "$work"
+log "ODE ready in $ODE_PREFIX"

@@ -1,0 +1,36 @@
+# Shared settings for the provisioning scripts; sourced, never run.
+# Everything downloaded or built lives in one per-user cache so a second
+# setup is instant and the host system is never modified beyond apt packages.
+
+set -euo pipefail
+
+PROJECT_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+CACHE_ROOT="${COUNTER_STEER_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/counter-steer}"
+mkdir -p "$CACHE_ROOT"
+
+# Packages of the private Debian-unstable root that carries Godot 4.6.
+# Changing this list changes the root's key, so a new root is built beside the old one.
+GODOT_ROOT_PACKAGES="godot,godot-template-release,godot-template-debug,libgl1-mesa-dri,libglx-mesa0,libegl-mesa0,libgl1,libegl1,libx11-6,libxcursor1,libxinerama1,libxrandr2,libxi6,libxext6,libxrender1,libxkbcommon0,libasound2t64,ca-certificates"
+GODOT_ROOT_KEY="$(printf '%s' "sid:$GODOT_ROOT_PACKAGES" | sha256sum | cut -c1-12)"
+GODOT_ROOT="$CACHE_ROOT/godot-root-$GODOT_ROOT_KEY"
+
+ODE_VERSION_WANTED="0.16"
+# Keyed by the build recipe, so changing tools/build-ode.sh rebuilds ODE.
+ODE_RECIPE_KEY="$(sha256sum "$PROJECT_ROOT/tools/build-ode.sh" | cut -c1-12)"
+ODE_PREFIX="$CACHE_ROOT/ode-$ODE_VERSION_WANTED-$ODE_RECIPE_KEY"
+
+log() { printf '\033[1;34m[setup]\033[0m %s\n' "$*" >&2; }
+die() { printf '\033[1;31m[setup] error:\033[0m %s\n' "$*" >&2; exit 1; }
+
+# Run a command as root: directly when we are root, through sudo otherwise.
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+# The Debian mirror the host already uses, so nothing outside the configured registry is contacted.
+debian_mirror() {
+  local uri
+  uri=$(grep -rhoE '^(URIs:|deb) +https?://[^ ]*debian[^ ]*' /etc/apt/sources.list /etc/apt/sources.list.d/ 2>/dev/null \
+        | grep -v security | head -n1 | awk '{print $2}')
+  printf '%s\n' "${uri:-http://deb.debian.org/debian}"
+}

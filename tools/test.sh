@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Every check of the project, in order of speed; stops at the first failing step and ends
+# with one line per step.
+source "$(dirname "$0")/common.sh"
+cd "$PROJECT_ROOT"
+mkdir -p build/logs
+summary=()
+step() {
+  local name=$1; shift
+  local started=$SECONDS
+  printf '\n\033[1m== %s\033[0m\n' "$name"
+  if "$@"; then
+    summary+=("ok    $name ($((SECONDS - started)) s)")
+  else
+    summary+=("FAIL  $name")
+    printf '\n%s\n' "${summary[@]}"
+    die "step failed: $name"
+  fi
+}
+
+gdscript_files() { git ls-files -co --exclude-standard -- '*.gd'; }
+godot_suites() {
+  tools/godot --headless --path . --audio-driver Dummy res://tests/test_runner.tscn 2>&1 | tee build/logs/gdscript-tests.log
+  local status=${PIPESTATUS[0]}
+  tools/check-godot-log build/logs/gdscript-tests.log --test-run && return "$status"
+}
+
+step "rustfmt"              tools/cargo fmt --all --check
+step "clippy"               tools/cargo clippy --workspace --all-targets --quiet -- -D warnings
+step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot
+step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdlint"
+step "gdformat"             bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdformat --check"
+step "test runner self-test" tools/test-runner-selftest.sh
+step "GDScript suites"      godot_suites
+step "screenshots (Xvfb)"   tools/screenshot.sh res://scenes/ui/title_screen.tscn build/screenshots/title.png
+step "export + smoke run"   tools/export.sh
+
+printf '\n%s\n' "${summary[@]}"
