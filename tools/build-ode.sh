@@ -27,6 +27,32 @@ dsc=$(ls "$work"/src/ode_*.dsc | head -n1)
 version=$(sed -n 's/^Version: \([0-9]*:\)\{0,1\}\([0-9.]*\).*/\2/p' "$dsc")
 case "$version" in "$ODE_VERSION_WANTED"*) ;; *) die "expected ODE $ODE_VERSION_WANTED, the source package is $version";; esac
 
+# Two small patches make rollouts reproducible:
+# 1. QuickStep reorders constraint rows with dRandInt, whose seed is one process-wide
+#    atomic; worlds stepped on different threads would perturb each other's order. A
+#    thread-local seed lets each rollout save and restore its own (World snapshots do).
+# 2. dBodySetQuaternion renormalises, so a restored body would differ from the original in
+#    the last bits; dBodySetQuaternionExact restores the stored quaternion as it is.
+misc="$work/src/ode/ode/src/misc.cpp"
+sed -i 's/^static volatile duint32 seed = 0;$/static thread_local volatile duint32 seed = 0;/' "$misc"
+grep -q '^static thread_local volatile duint32 seed = 0;$' "$misc" || die "could not patch ODE's random seed"
+cat >>"$work/src/ode/ode/src/ode.cpp" <<'CPP'
+
+// Counter-Steer: set a body's quaternion exactly as given (no renormalisation), for
+// bit-exact snapshot restore.
+extern "C" void dBodySetQuaternionExact (dBodyID b, const dQuaternion q)
+{
+    dAASSERT (b && q);
+    b->q[0] = q[0];
+    b->q[1] = q[1];
+    b->q[2] = q[2];
+    b->q[3] = q[3];
+    dQtoR (b->q, b->posr.R);
+    for (dxGeom *geom = b->geom; geom; geom = dGeomGetBodyNext (geom))
+        dGeomMoved (geom);
+}
+CPP
+
 log "building ODE $version (static, PIC, double, OU)"
 cmake -S "$work/src/ode" -B "$work/build" -G "Unix Makefiles" \
   -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$ODE_PREFIX.partial" \

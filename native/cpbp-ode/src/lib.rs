@@ -6,9 +6,11 @@
 
 mod ffi;
 mod runtime;
+mod state;
 mod world;
 
 pub use runtime::{configuration, ensure_thread_data, Configuration};
+pub use state::{BodyState, StateMismatch, WorldState};
 pub use world::{BodyId, GeomId, Mass, SurfaceParams, World};
 
 /// Three-component vector as ODE uses it (double precision).

@@ -5,7 +5,7 @@ use std::ptr;
 
 use crate::ffi;
 use crate::runtime::ensure_thread_data;
-use crate::{Quat, Vec3};
+use crate::{BodyState, Quat, StateMismatch, Vec3, WorldState};
 
 /// Most contact points generated for one pair of geoms in one step.
 const MAX_CONTACTS_PER_PAIR: usize = 8;
@@ -213,9 +213,60 @@ impl World {
         };
     }
 
+    /// Copies the dynamic state of every body and the stepping random seed.
+    pub fn snapshot(&self) -> WorldState {
+        ensure_thread_data();
+        let bodies = (0..self.bodies.len())
+            .map(|i| {
+                let id = BodyId(i);
+                // SAFETY: the body belongs to this world; ODE returns a pointer to 3 reals.
+                let angular_velocity =
+                    unsafe { read_vec3(ffi::dBodyGetAngularVel(self.bodies[i])) };
+                BodyState {
+                    position: self.body_position(id),
+                    quaternion: self.body_quaternion(id),
+                    linear_velocity: self.body_linear_velocity(id),
+                    angular_velocity,
+                }
+            })
+            .collect();
+        // SAFETY: reads the calling thread's seed (thread-local in our ODE build).
+        let random_seed = unsafe { ffi::dRandGetSeed() } as u64;
+        WorldState {
+            bodies,
+            random_seed,
+        }
+    }
+
+    /// Puts every body back into a snapshot's state, exactly (no renormalisation).
+    pub fn restore(&mut self, state: &WorldState) -> Result<(), StateMismatch> {
+        ensure_thread_data();
+        if state.bodies.len() != self.bodies.len() {
+            return Err(StateMismatch {
+                expected_bodies: self.bodies.len(),
+                found_bodies: state.bodies.len(),
+            });
+        }
+        for (&body, s) in self.bodies.iter().zip(&state.bodies) {
+            // SAFETY: the body belongs to this world; the quaternion is 4 reals.
+            unsafe {
+                ffi::dBodySetPosition(body, s.position[0], s.position[1], s.position[2]);
+                ffi::dBodySetQuaternionExact(body, s.quaternion.as_ptr());
+                let v = s.linear_velocity;
+                ffi::dBodySetLinearVel(body, v[0], v[1], v[2]);
+                let w = s.angular_velocity;
+                ffi::dBodySetAngularVel(body, w[0], w[1], w[2]);
+            }
+        }
+        // SAFETY: sets the calling thread's seed, which the next step on this thread uses.
+        unsafe { ffi::dRandSetSeed(state.random_seed as _) };
+        Ok(())
+    }
+
     /// Advances the world by `dt` seconds: collision, contact joints, QuickStep.
     pub fn step(&mut self, dt: f64) {
         ensure_thread_data();
+        self.canonicalise_geom_order();
         let mut context = CollideContext {
             world: self.world,
             contacts: self.contacts,
@@ -231,6 +282,23 @@ impl World {
             );
             ffi::dWorldQuickStep(self.world, dt);
             ffi::dJointGroupEmpty(self.contacts);
+        }
+    }
+}
+
+impl World {
+    /// ODE moves a geom to the front of its space's list whenever its body moves, so the
+    /// order of collision pairs (and of contacts, which QuickStep is sensitive to) would
+    /// depend on history. Marking body geoms moved in reverse creation order each step
+    /// makes the list order the same for every world built the same way.
+    fn canonicalise_geom_order(&mut self) {
+        for &geom in self.geoms.iter().rev() {
+            // SAFETY: the geom belongs to this world's space.
+            unsafe {
+                if !ffi::dGeomGetBody(geom).is_null() {
+                    ffi::dGeomMoved(geom);
+                }
+            }
         }
     }
 }

@@ -1,0 +1,59 @@
+//! Snapshots of a world's dynamic state as plain data, for branching rollouts.
+//!
+//! `restore(snapshot)` followed by K steps reproduces the original's K steps bit for bit:
+//! quaternions are restored without renormalising (a patched-in ODE function), the
+//! constraint-reordering random seed is part of the state (tests fail without either).
+//! `World::step` also puts the space's geoms in a canonical order first: ODE moves a geom
+//! to the front of its space whenever it moves, so pair order could depend on history
+//! (the current tests pass without this safeguard too).
+
+use crate::{Quat, Vec3};
+
+/// Position, orientation and velocities of one body.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BodyState {
+    pub position: Vec3,
+    pub quaternion: Quat,
+    pub linear_velocity: Vec3,
+    pub angular_velocity: Vec3,
+}
+
+impl BodyState {
+    /// True when every component is a finite number.
+    pub fn is_finite(&self) -> bool {
+        self.position
+            .iter()
+            .chain(&self.quaternion)
+            .chain(&self.linear_velocity)
+            .chain(&self.angular_velocity)
+            .all(|v| v.is_finite())
+    }
+}
+
+/// The dynamic state of a whole world. Contacts are not part of it: they are regenerated
+/// by collision every step.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct WorldState {
+    pub bodies: Vec<BodyState>,
+    /// ODE's random seed (QuickStep's constraint reordering), thread-local in our build.
+    pub random_seed: u64,
+}
+
+/// Restoring a snapshot into a world of a different shape.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StateMismatch {
+    pub expected_bodies: usize,
+    pub found_bodies: usize,
+}
+
+impl std::fmt::Display for StateMismatch {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "snapshot has {} bodies, the world has {}",
+            self.found_bodies, self.expected_bodies
+        )
+    }
+}
+
+impl std::error::Error for StateMismatch {}
