@@ -4,6 +4,7 @@
 # Debian's binary libode lacks OU (unsafe trimesh collision from several threads)
 # and its libode.a is not PIC, so it cannot be linked into the extension.
 source "$(dirname "$0")/common.sh"
+lock_cache
 
 if [ -f "$ODE_PREFIX/.complete" ]; then
   exit 0

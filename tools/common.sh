@@ -19,6 +19,14 @@ ODE_VERSION_WANTED="0.16"
 ODE_RECIPE_KEY="$(sha256sum "$PROJECT_ROOT/tools/build-ode.sh" | cut -c1-12)"
 ODE_PREFIX="$CACHE_ROOT/ode-$ODE_VERSION_WANTED-$ODE_RECIPE_KEY"
 
+# Serialises provisioning: two setups at once (say `make test` and `make play` in two
+# terminals) would otherwise build into the same cache directories and break each other.
+# The lock is held until the calling script exits.
+lock_cache() {
+  exec 9>"$CACHE_ROOT/.provision.lock"
+  flock 9
+}
+
 log() { printf '\033[1;34m[setup]\033[0m %s\n' "$*" >&2; }
 die() { printf '\033[1;31m[setup] error:\033[0m %s\n' "$*" >&2; exit 1; }
 

@@ -3,6 +3,7 @@
 # Debian 12 only ships Godot 3, and installing unstable's godot into the host would
 # replace libc; a debootstrap root run through its own dynamic loader avoids both.
 source "$(dirname "$0")/common.sh"
+lock_cache
 
 if [ -n "${GODOT:-}" ]; then
   log "using GODOT=$GODOT; no private root needed"
