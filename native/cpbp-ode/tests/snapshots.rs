@@ -36,12 +36,17 @@ fn run(world: &mut World, steps: usize) -> Vec<WorldState> {
         .collect()
 }
 
+/// Lets the pile settle a little, takes a snapshot there, then records what follows.
+fn branch_point_and_original(world: &mut World) -> (WorldState, Vec<WorldState>) {
+    run(world, 40);
+    let branch_point = world.snapshot();
+    (branch_point, run(world, 240))
+}
+
 #[test]
 fn restore_then_steps_repeat_the_original_bit_for_bit() {
     let mut world = tumbling_pile();
-    run(&mut world, 40);
-    let branch_point = world.snapshot();
-    let original = run(&mut world, 240);
+    let (branch_point, original) = branch_point_and_original(&mut world);
 
     world.restore(&branch_point).unwrap();
     let replay = run(&mut world, 240);
@@ -56,10 +61,7 @@ fn restore_then_steps_repeat_the_original_bit_for_bit() {
 
 #[test]
 fn restoring_into_another_identically_built_world_matches() {
-    let mut master = tumbling_pile();
-    run(&mut master, 40);
-    let branch_point = master.snapshot();
-    let original = run(&mut master, 240);
+    let (branch_point, original) = branch_point_and_original(&mut tumbling_pile());
 
     let mut rollout = tumbling_pile();
     run(&mut rollout, 7); // a different history must not matter
@@ -69,10 +71,7 @@ fn restoring_into_another_identically_built_world_matches() {
 
 #[test]
 fn rollouts_on_several_threads_match_the_single_threaded_result() {
-    let mut master = tumbling_pile();
-    run(&mut master, 40);
-    let branch_point = master.snapshot();
-    let original = run(&mut master, 240);
+    let (branch_point, original) = branch_point_and_original(&mut tumbling_pile());
 
     let handles: Vec<_> = (0..4)
         .map(|_| {
