@@ -34,6 +34,9 @@ case "$version" in "$ODE_VERSION_WANTED"*) ;; *) die "expected ODE $ODE_VERSION_
 #    thread-local seed lets each rollout save and restore its own (World snapshots do).
 # 2. dBodySetQuaternion renormalises, so a restored body would differ from the original in
 #    the last bits; dBodySetQuaternionExact restores the stored quaternion as it is.
+# 3. An Euler-mode angular motor caches its angles during a step and dJointSetAMotorAngle
+#    ignores them outside user mode; a restored world would report stale angles until its
+#    next step. The setter now also restores the cache in Euler mode.
 misc="$work/src/ode/ode/src/misc.cpp"
 sed -i 's/^static volatile duint32 seed = 0;$/static thread_local volatile duint32 seed = 0;/' "$misc"
 grep -q '^static thread_local volatile duint32 seed = 0;$' "$misc" || die "could not patch ODE's random seed"
@@ -53,6 +56,11 @@ extern "C" void dBodySetQuaternionExact (dBodyID b, const dQuaternion q)
         dGeomMoved (geom);
 }
 CPP
+
+amotor="$work/src/ode/ode/src/joints/amotor.cpp"
+sed -i -e 's|^    dAASSERT(m_mode == dAMotorUser); // This only works for the dAMotorUser$||' \
+       -e 's|^    if (m_mode == dAMotorUser)$|    if (m_mode == dAMotorUser \|\| m_mode == dAMotorEuler)|' "$amotor"
+grep -q '^    if (m_mode == dAMotorUser || m_mode == dAMotorEuler)$' "$amotor" || die "could not patch ODE's angular motor"
 
 log "building ODE $version (static, PIC, double, OU)"
 cmake -S "$work/src/ode" -B "$work/build" -G "Unix Makefiles" \

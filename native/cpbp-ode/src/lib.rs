@@ -5,10 +5,12 @@
 //! joint group, bodies and geoms, and hands out plain index handles ([`BodyId`], [`GeomId`]).
 
 mod ffi;
+mod joints;
 mod runtime;
 mod state;
 mod world;
 
+pub use joints::{JointId, MotorState};
 pub use runtime::{configuration, ensure_thread_data, Configuration};
 pub use state::{BodyState, StateMismatch, WorldState};
 pub use world::{BodyId, GeomId, Mass, SurfaceParams, World};

@@ -7,7 +7,7 @@
 //! to the front of its space whenever it moves, so pair order could depend on history
 //! (the current tests pass without this safeguard too).
 
-use crate::{Quat, Vec3};
+use crate::{MotorState, Quat, Vec3};
 
 /// Position, orientation and velocities of one body.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -35,6 +35,8 @@ impl BodyState {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct WorldState {
     pub bodies: Vec<BodyState>,
+    /// Motor settings of every joint, in joint order (zeros for unmotorised joints).
+    pub motors: Vec<MotorState>,
     /// ODE's random seed (QuickStep's constraint reordering), thread-local in our build.
     pub random_seed: u64,
 }
@@ -44,14 +46,16 @@ pub struct WorldState {
 pub struct StateMismatch {
     pub expected_bodies: usize,
     pub found_bodies: usize,
+    pub expected_joints: usize,
+    pub found_joints: usize,
 }
 
 impl std::fmt::Display for StateMismatch {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(
             f,
-            "snapshot has {} bodies, the world has {}",
-            self.found_bodies, self.expected_bodies
+            "snapshot has {} bodies and {} joints, the world has {} and {}",
+            self.found_bodies, self.found_joints, self.expected_bodies, self.expected_joints
         )
     }
 }

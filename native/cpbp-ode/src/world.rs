@@ -4,6 +4,7 @@ use std::os::raw::c_void;
 use std::ptr;
 
 use crate::ffi;
+use crate::joints::JointKind;
 use crate::runtime::ensure_thread_data;
 use crate::{BodyState, Quat, StateMismatch, Vec3, WorldState};
 
@@ -41,6 +42,22 @@ impl Mass {
         Self { raw }
     }
 
+    /// A solid cylinder along the body's local `axis` (0 = x, 1 = y, 2 = z).
+    pub fn cylinder(total: f64, axis: usize, radius: f64, length: f64) -> Self {
+        let mut raw = ffi::dMass::default();
+        // SAFETY: `raw` is a valid, exclusively borrowed dMass; ODE numbers axes from 1.
+        unsafe { ffi::dMassSetCylinderTotal(&mut raw, total, axis as i32 + 1, radius, length) };
+        Self { raw }
+    }
+
+    /// A solid capsule along the body's local z axis (ODE's capsule direction).
+    pub fn capsule(total: f64, radius: f64, length: f64) -> Self {
+        let mut raw = ffi::dMass::default();
+        // SAFETY: as above; direction 3 is z.
+        unsafe { ffi::dMassSetCapsuleTotal(&mut raw, total, 3, radius, length) };
+        Self { raw }
+    }
+
     /// Total mass in kg.
     pub fn total(&self) -> f64 {
         self.raw.mass
@@ -72,14 +89,22 @@ impl Default for SurfaceParams {
 ///
 /// Everything is destroyed together when the `World` is dropped, so handles cannot dangle.
 pub struct World {
-    world: ffi::dWorldID,
+    pub(crate) world: ffi::dWorldID,
     space: ffi::dSpaceID,
     contacts: ffi::dJointGroupID,
     threading: ffi::dThreadingImplementationID,
-    bodies: Vec<ffi::dBodyID>,
+    pub(crate) bodies: Vec<ffi::dBodyID>,
+    pub(crate) joints: Vec<(ffi::dJointID, JointKind)>,
     geoms: Vec<ffi::dGeomID>,
     surface: SurfaceParams,
+    /// Per body: whether it touched a static geom (terrain) in the last step.
+    touching_static: Vec<bool>,
 }
+
+/// Collision categories: bodies collide with static terrain only, never with each other
+/// (a bike's parts are held by joints; the rider must not snag on the bike).
+const CATEGORY_BODY: u64 = 1;
+const CATEGORY_STATIC: u64 = 2;
 
 // SAFETY: a World owns all ODE objects it names and ODE keeps no hidden links between
 // worlds; moving it to another thread is safe as long as that thread has ODE data,
@@ -111,8 +136,10 @@ impl World {
                 contacts,
                 threading,
                 bodies: Vec::new(),
+                joints: Vec::new(),
                 geoms: Vec::new(),
                 surface: SurfaceParams::default(),
+                touching_static: Vec::new(),
             }
         }
     }
@@ -136,7 +163,10 @@ impl World {
             let body = ffi::dBodyCreate(self.world);
             ffi::dBodySetMass(body, &mass.raw);
             ffi::dBodySetPosition(body, position[0], position[1], position[2]);
+            // The body's index, read back by the contact callback.
+            ffi::dBodySetData(body, self.bodies.len() as *mut c_void);
             self.bodies.push(body);
+            self.touching_static.push(false);
         }
         BodyId(self.bodies.len() - 1)
     }
@@ -155,6 +185,20 @@ impl World {
         self.attach(geom, body)
     }
 
+    /// Adds a capsule geom along its local z axis (cylinder length without the caps).
+    pub fn add_capsule(&mut self, radius: f64, length: f64, body: Option<BodyId>) -> GeomId {
+        // SAFETY: as for add_sphere.
+        let geom = unsafe { ffi::dCreateCapsule(self.space, radius, length) };
+        self.attach(geom, body)
+    }
+
+    /// Adds a cylinder geom along its local z axis.
+    pub fn add_cylinder(&mut self, radius: f64, length: f64, body: Option<BodyId>) -> GeomId {
+        // SAFETY: as for add_sphere.
+        let geom = unsafe { ffi::dCreateCylinder(self.space, radius, length) };
+        self.attach(geom, body)
+    }
+
     /// Adds a static infinite plane `normal · p = offset` (normal need not be unit length).
     pub fn add_plane(&mut self, normal: Vec3, offset: f64) -> GeomId {
         // SAFETY: as for add_sphere.
@@ -164,10 +208,16 @@ impl World {
     }
 
     fn attach(&mut self, geom: ffi::dGeomID, body: Option<BodyId>) -> GeomId {
-        if let Some(body) = body {
-            let body = self.bodies[body.0];
-            // SAFETY: both the geom and the body belong to this world.
-            unsafe { ffi::dGeomSetBody(geom, body) };
+        // SAFETY: the geom belongs to this world's space; the body to this world.
+        unsafe {
+            if let Some(body) = body {
+                ffi::dGeomSetBody(geom, self.bodies[body.0]);
+                ffi::dGeomSetCategoryBits(geom, CATEGORY_BODY as _);
+                ffi::dGeomSetCollideBits(geom, CATEGORY_STATIC as _);
+            } else {
+                ffi::dGeomSetCategoryBits(geom, CATEGORY_STATIC as _);
+                ffi::dGeomSetCollideBits(geom, CATEGORY_BODY as _);
+            }
         }
         self.geoms.push(geom);
         GeomId(self.geoms.len() - 1)
@@ -177,6 +227,59 @@ impl World {
     pub fn set_geom_position(&mut self, geom: GeomId, position: Vec3) {
         // SAFETY: the geom belongs to this world.
         unsafe { ffi::dGeomSetPosition(self.geoms[geom.0], position[0], position[1], position[2]) };
+    }
+
+    /// Sets the world-frame orientation of a static geom.
+    pub fn set_geom_quaternion(&mut self, geom: GeomId, q: Quat) {
+        // SAFETY: the geom belongs to this world; q is 4 reals.
+        unsafe { ffi::dGeomSetQuaternion(self.geoms[geom.0], q.as_ptr()) };
+    }
+
+    /// Places a body geom relative to its body (position and orientation in body frame).
+    pub fn set_geom_offset(&mut self, geom: GeomId, position: Vec3, q: Quat) {
+        // SAFETY: the geom belongs to this world and is attached to a body.
+        unsafe {
+            let g = self.geoms[geom.0];
+            ffi::dGeomSetOffsetPosition(g, position[0], position[1], position[2]);
+            ffi::dGeomSetOffsetQuaternion(g, q.as_ptr());
+        }
+    }
+
+    /// Sets a body's orientation (normalised, as when building a model).
+    pub fn set_body_quaternion(&mut self, body: BodyId, q: Quat) {
+        // SAFETY: the body belongs to this world; q is 4 reals.
+        unsafe { ffi::dBodySetQuaternion(self.bodies[body.0], q.as_ptr()) };
+    }
+
+    /// Sets a body's world-frame position.
+    pub fn set_body_position(&mut self, body: BodyId, p: Vec3) {
+        // SAFETY: the body belongs to this world.
+        unsafe { ffi::dBodySetPosition(self.bodies[body.0], p[0], p[1], p[2]) };
+    }
+
+    /// World-frame angular velocity of a body.
+    pub fn body_angular_velocity(&self, body: BodyId) -> Vec3 {
+        // SAFETY: as for body_position.
+        unsafe { read_vec3(ffi::dBodyGetAngularVel(self.bodies[body.0])) }
+    }
+
+    /// Sets the world-frame angular velocity of a body.
+    pub fn set_body_angular_velocity(&mut self, body: BodyId, w: Vec3) {
+        // SAFETY: the body belongs to this world.
+        unsafe { ffi::dBodySetAngularVel(self.bodies[body.0], w[0], w[1], w[2]) };
+    }
+
+    /// Mass of a body in kg.
+    pub fn body_mass(&self, body: BodyId) -> f64 {
+        let mut mass = ffi::dMass::default();
+        // SAFETY: the body belongs to this world; `mass` is exclusively borrowed.
+        unsafe { ffi::dBodyGetMass(self.bodies[body.0], &mut mass) };
+        mass.mass
+    }
+
+    /// Whether a body touched a static geom (terrain) during the last step.
+    pub fn body_touches_static(&self, body: BodyId) -> bool {
+        self.touching_static[body.0]
     }
 
     /// Number of bodies.
@@ -230,10 +333,14 @@ impl World {
                 }
             })
             .collect();
+        let motors = (0..self.joints.len())
+            .map(|j| self.motor_state(crate::JointId(j)))
+            .collect();
         // SAFETY: reads the calling thread's seed (thread-local in our ODE build).
         let random_seed = unsafe { ffi::dRandGetSeed() } as u64;
         WorldState {
             bodies,
+            motors,
             random_seed,
         }
     }
@@ -241,11 +348,16 @@ impl World {
     /// Puts every body back into a snapshot's state, exactly (no renormalisation).
     pub fn restore(&mut self, state: &WorldState) -> Result<(), StateMismatch> {
         ensure_thread_data();
-        if state.bodies.len() != self.bodies.len() {
+        if state.bodies.len() != self.bodies.len() || state.motors.len() != self.joints.len() {
             return Err(StateMismatch {
                 expected_bodies: self.bodies.len(),
                 found_bodies: state.bodies.len(),
+                expected_joints: self.joints.len(),
+                found_joints: state.motors.len(),
             });
+        }
+        for (j, motor) in state.motors.iter().enumerate() {
+            self.set_motor_state(crate::JointId(j), motor);
         }
         for (&body, s) in self.bodies.iter().zip(&state.bodies) {
             // SAFETY: the body belongs to this world; the quaternion is 4 reals.
@@ -267,10 +379,12 @@ impl World {
     pub fn step(&mut self, dt: f64) {
         ensure_thread_data();
         self.canonicalise_geom_order();
+        self.touching_static.iter_mut().for_each(|t| *t = false);
         let mut context = CollideContext {
             world: self.world,
             contacts: self.contacts,
             surface: self.surface,
+            touching_static: &mut self.touching_static,
         };
         // SAFETY: the callback only runs during this call and gets a pointer to `context`,
         // which outlives it; all ids belong to this world.
@@ -317,10 +431,11 @@ impl Drop for World {
     }
 }
 
-struct CollideContext {
+struct CollideContext<'a> {
     world: ffi::dWorldID,
     contacts: ffi::dJointGroupID,
     surface: SurfaceParams,
+    touching_static: &'a mut Vec<bool>,
 }
 
 /// Reads a vector ODE handed out as a pointer to at least three reals.
@@ -336,7 +451,7 @@ unsafe extern "C" fn near_callback(data: *mut c_void, o1: ffi::dGeomID, o2: ffi:
     // SAFETY: `data` is the CollideContext passed by World::step, alive for this call; the
     // geoms come from that world's space.
     unsafe {
-        let context = &*(data as *const CollideContext);
+        let context = &mut *(data as *mut CollideContext);
         let b1 = ffi::dGeomGetBody(o1);
         let b2 = ffi::dGeomGetBody(o2);
         if b1.is_null() && b2.is_null() {
@@ -356,6 +471,10 @@ unsafe extern "C" fn near_callback(data: *mut c_void, o1: ffi::dGeomID, o2: ffi:
             &mut contacts[0].geom,
             std::mem::size_of::<ffi::dContact>() as i32,
         );
+        if count > 0 && (b1.is_null() || b2.is_null()) {
+            let body = if b1.is_null() { b2 } else { b1 };
+            context.touching_static[ffi::dBodyGetData(body) as usize] = true;
+        }
         for contact in contacts.iter_mut().take(count.max(0) as usize) {
             contact.surface.mode =
                 (ffi::dContactSoftERP | ffi::dContactSoftCFM | ffi::dContactApprox1) as i32;

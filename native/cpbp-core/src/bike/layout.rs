@@ -1,0 +1,134 @@
+//! Where the bike's and rider's bodies and joints sit, in the bike frame (x forward, y up,
+//! z right, origin on the ground midway between the contact points), derived from
+//! [`BikeParams`] and a riding posture.
+
+use glam::DVec3;
+
+use super::params::BikeParams;
+
+/// Joint centres and key points of the built model.
+#[derive(Clone, Debug)]
+pub struct Layout {
+    pub rear_axle: DVec3,
+    pub front_axle: DVec3,
+    /// Unit vector up along the steering axis (tilted back by the rake).
+    pub steer_axis: DVec3,
+    /// Point on the steering axis used as the hinge anchor.
+    pub steer_anchor: DVec3,
+    /// Top of the fork body, at the handlebar clamp.
+    pub fork_top: DVec3,
+    /// Rider joints: footpeg (ankle), knee, hip (waist), shoulder, elbow, grip (wrist).
+    pub ankle: DVec3,
+    pub knee: DVec3,
+    pub hip: DVec3,
+    pub shoulder: DVec3,
+    pub elbow: DVec3,
+    pub grip: DVec3,
+    /// Top of the head.
+    pub head_top: DVec3,
+}
+
+/// Rider posture on a naked road bike: seat and footpeg heights of that class, torso
+/// leaning 20° forward.
+const FOOTPEG: DVec3 = DVec3::new(-0.10, 0.38, 0.0);
+const HIP: DVec3 = DVec3::new(-0.25, 0.85, 0.0);
+const TORSO_LEAN: f64 = 0.349; // 20°
+/// Segment lengths for a 1.75 m rider (Winter 2009): thigh, shank, hip–shoulder,
+/// hip–head top, upper arm, forearm to grip centre.
+const THIGH: f64 = 0.43;
+const SHANK: f64 = 0.43;
+const HIP_TO_SHOULDER: f64 = 0.52;
+const HIP_TO_HEAD_TOP: f64 = 0.78;
+const UPPER_ARM: f64 = 0.33;
+const FOREARM: f64 = 0.36;
+/// Height of the handlebar grips above the ground, and how far behind the steering
+/// axis they sit.
+const GRIP_HEIGHT: f64 = 1.05;
+const GRIP_BEHIND_AXIS: f64 = 0.06;
+
+impl Layout {
+    pub fn new(params: &BikeParams) -> Self {
+        let half = params.wheelbase / 2.0;
+        let r = params.wheel_radius;
+        let rear_axle = DVec3::new(-half, r, 0.0);
+        let front_axle = DVec3::new(half, r, 0.0);
+        let steer_axis = DVec3::new(-params.rake.sin(), params.rake.cos(), 0.0);
+        // The steering axis meets the ground `trail` ahead of the front contact point.
+        let axis_on_ground = DVec3::new(half + params.trail, 0.0, 0.0);
+        let at_height = |h: f64| axis_on_ground + steer_axis * (h / steer_axis.y);
+        let grip = at_height(GRIP_HEIGHT) - DVec3::X * GRIP_BEHIND_AXIS;
+        let shoulder = HIP + DVec3::new(TORSO_LEAN.sin(), TORSO_LEAN.cos(), 0.0) * HIP_TO_SHOULDER;
+        Self {
+            rear_axle,
+            front_axle,
+            steer_axis,
+            steer_anchor: at_height(0.85),
+            fork_top: at_height(GRIP_HEIGHT - 0.03),
+            ankle: FOOTPEG,
+            knee: bend_point(HIP, FOOTPEG, THIGH, SHANK, true),
+            hip: HIP,
+            shoulder,
+            elbow: bend_point(shoulder, grip, UPPER_ARM, FOREARM, false),
+            grip,
+            head_top: HIP + DVec3::new(TORSO_LEAN.sin(), TORSO_LEAN.cos(), 0.0) * HIP_TO_HEAD_TOP,
+        }
+    }
+}
+
+/// The joint between two segments of lengths `la` (from `a`) and `lb` (to `b`) in the
+/// mid-plane: the knee bends forward-up, the elbow down-back.
+fn bend_point(a: DVec3, b: DVec3, la: f64, lb: f64, forward_up: bool) -> DVec3 {
+    let d = (b - a).length();
+    assert!(
+        d < la + lb && d > (la - lb).abs(),
+        "segments cannot reach: posture is inconsistent"
+    );
+    let along = (la * la - lb * lb + d * d) / (2.0 * d);
+    let height = (la * la - along * along).sqrt();
+    let u = (b - a) / d;
+    let normal = DVec3::new(-u.y, u.x, 0.0); // u rotated +90° in the mid-plane
+    let side = if (normal.x + normal.y > 0.0) == forward_up {
+        1.0
+    } else {
+        -1.0
+    };
+    a + u * along + normal * height * side
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn segments_have_their_lengths() {
+        let l = Layout::new(&BikeParams::default());
+        assert!(((l.knee - l.hip).length() - THIGH).abs() < 1e-9);
+        assert!(((l.ankle - l.knee).length() - SHANK).abs() < 1e-9);
+        assert!(((l.elbow - l.shoulder).length() - UPPER_ARM).abs() < 1e-9);
+        assert!(((l.grip - l.elbow).length() - FOREARM).abs() < 1e-9);
+    }
+
+    #[test]
+    fn the_knee_points_forward_and_the_elbow_down() {
+        let l = Layout::new(&BikeParams::default());
+        assert!(l.knee.x > l.hip.x && l.knee.x > l.ankle.x);
+        let line = l.shoulder.lerp(l.grip, 0.5);
+        assert!(l.elbow.y < line.y);
+    }
+
+    #[test]
+    fn the_steering_axis_has_the_rake_and_positive_trail() {
+        let p = BikeParams::default();
+        let l = Layout::new(&p);
+        assert!((l.steer_axis.angle_between(DVec3::Y) - p.rake).abs() < 1e-12);
+        // Where the axis through the anchor meets the ground, relative to the front contact.
+        let ground = l.steer_anchor - l.steer_axis * (l.steer_anchor.y / l.steer_axis.y);
+        let trail = ground.x - l.front_axle.x;
+        assert!((trail - p.trail).abs() < 1e-12 && trail > 0.0);
+        assert!(
+            (p.fork_offset() - 0.0407).abs() < 1e-3,
+            "offset {}",
+            p.fork_offset()
+        );
+    }
+}

@@ -1,0 +1,18 @@
+//! The motorcycle and its simplified rider (thesis §4.2): nine rigid bodies, hinges at the
+//! axles, steering axis, knee and elbow, motorised ball joints at waist, shoulder and wrist,
+//! and a passive ankle on the footpeg.
+
+mod controls;
+mod crash;
+mod layout;
+mod model;
+mod params;
+
+pub use controls::{
+    index, Controls, ForceClass, CONTROL_DIM, FORCE_TUNINGS, JOINT_TARGETS, LOWER, MAX_TORQUE,
+    UPPER,
+};
+pub use crash::{CrashCause, CrashMonitor};
+pub use layout::Layout;
+pub use model::{Bike, Part, PartShape, Placement, Shape};
+pub use params::BikeParams;

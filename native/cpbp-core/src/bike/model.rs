@@ -1,0 +1,525 @@
+//! Builds the bike and rider into an ODE world and reads back what the game and the
+//! controllers need: transforms, speed, lean, steering, contacts, crash.
+
+use glam::{DQuat, DVec3};
+
+use super::controls::{index, Controls, ForceClass};
+use super::layout::Layout;
+use super::params::BikeParams;
+use crate::ode::{BodyId, JointId, Mass, SurfaceParams, World};
+
+/// Rigid placement of the bike frame in the world: rotation then translation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placement {
+    pub position: DVec3,
+    pub rotation: DQuat,
+}
+
+impl Placement {
+    /// Bike frame at the world origin, facing world +x.
+    pub const IDENTITY: Self = Self {
+        position: DVec3::ZERO,
+        rotation: DQuat::IDENTITY,
+    };
+
+    pub fn transform_point(&self, p: DVec3) -> DVec3 {
+        self.position + self.rotation * p
+    }
+}
+
+/// The nine rigid bodies, in body order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Part {
+    RearWheel,
+    FrontWheel,
+    Fork,
+    Frame,
+    LowerLeg,
+    UpperLeg,
+    Torso,
+    UpperArm,
+    LowerArm,
+}
+
+impl Part {
+    pub const ALL: [Part; 9] = [
+        Part::RearWheel,
+        Part::FrontWheel,
+        Part::Fork,
+        Part::Frame,
+        Part::LowerLeg,
+        Part::UpperLeg,
+        Part::Torso,
+        Part::UpperArm,
+        Part::LowerArm,
+    ];
+
+    /// Wheels may touch the ground; any other part touching it is a crash.
+    pub fn is_wheel(self) -> bool {
+        matches!(self, Part::RearWheel | Part::FrontWheel)
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Part::RearWheel => "rear_wheel",
+            Part::FrontWheel => "front_wheel",
+            Part::Fork => "fork",
+            Part::Frame => "frame",
+            Part::LowerLeg => "lower_leg",
+            Part::UpperLeg => "upper_leg",
+            Part::Torso => "torso",
+            Part::UpperArm => "upper_arm",
+            Part::LowerArm => "lower_arm",
+        }
+    }
+}
+
+/// A collision shape of a part, in that part's body frame (for drawing the physical model).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shape {
+    Sphere {
+        radius: f64,
+    },
+    Cuboid {
+        size: DVec3,
+    },
+    /// Along the local z axis; `length` excludes the caps.
+    Capsule {
+        radius: f64,
+        length: f64,
+    },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PartShape {
+    pub part: Part,
+    pub shape: Shape,
+    pub offset: DVec3,
+    pub rotation: DQuat,
+}
+
+/// A built bike: the handles of its bodies and joints in one world. Every world built
+/// with the same parameters gets the same handles, so one `Bike` describes them all.
+#[derive(Clone, Debug)]
+pub struct Bike {
+    params: BikeParams,
+    bodies: [BodyId; 9],
+    /// Body poses as built, in the bike frame (for reset).
+    rest: [(DVec3, DQuat); 9],
+    shapes: Vec<PartShape>,
+    steer: JointId,
+    rear_axle: JointId,
+    waist: JointId,
+    knee: JointId,
+    shoulder: JointId,
+    elbow: JointId,
+    wrist: JointId,
+}
+
+impl Bike {
+    /// Builds bike and rider into `world` at `placement`, at rest.
+    pub fn build(world: &mut World, params: &BikeParams, placement: &Placement) -> Self {
+        let l = Layout::new(params);
+        world.set_surface(SurfaceParams {
+            mu: params.tyre_friction,
+            ..SurfaceParams::default()
+        });
+        let mut builder = Builder {
+            world,
+            placement: *placement,
+            rest: Vec::new(),
+            shapes: Vec::new(),
+        };
+        let r = params.wheel_radius;
+        let rear = builder.wheel(
+            Part::RearWheel,
+            params.rear_wheel_mass,
+            r,
+            0.13,
+            l.rear_axle,
+        );
+        let front = builder.wheel(
+            Part::FrontWheel,
+            params.front_wheel_mass,
+            r,
+            0.11,
+            l.front_axle,
+        );
+        let fork = builder.fork(params.fork_mass, l.front_axle, l.fork_top, l.grip);
+        let frame = builder.frame(params.frame_mass);
+        let [m_shank, m_thigh, m_torso, m_upper_arm, m_forearm] = params.rider_masses;
+        let lower_leg = builder.segment(Part::LowerLeg, m_shank, 0.055, l.ankle, l.knee);
+        let upper_leg = builder.segment(Part::UpperLeg, m_thigh, 0.075, l.knee, l.hip);
+        let torso = builder.segment(Part::Torso, m_torso, 0.14, l.hip, l.head_top);
+        let upper_arm = builder.segment(Part::UpperArm, m_upper_arm, 0.045, l.shoulder, l.elbow);
+        let lower_arm = builder.segment(Part::LowerArm, m_forearm, 0.04, l.elbow, l.grip);
+
+        let b = &mut builder;
+        // ODE's hinge angle and rate are body 1's rotation relative to body 2 about the
+        // axis. A wheel rolling forward spins about −z, so with the frame (or fork) as
+        // body 1 and axis +z, forward rolling is positive; with the fork as body 1 and
+        // the axis pointing up, steering left is positive.
+        let z = DVec3::Z;
+        let rear_axle = b.hinge(frame, rear, l.rear_axle, z);
+        b.hinge(fork, front, l.front_axle, z);
+        let steer = b.hinge(fork, frame, l.steer_anchor, l.steer_axis);
+        b.world
+            .set_joint_limits(steer, 0, -params.steer_limit, params.steer_limit);
+
+        b.ball(lower_leg, frame, l.ankle);
+        let knee = b.hinge(upper_leg, lower_leg, l.knee, z);
+        b.world.set_joint_limits(knee, 0, -1.0, 1.0);
+        let waist = b.ball_with_motor(upper_leg, torso, l.hip, [0.7, 0.5, 0.4]);
+        let shoulder = b.ball_with_motor(torso, upper_arm, l.shoulder, [1.0, 0.8, 0.6]);
+        let elbow = b.hinge(upper_arm, lower_arm, l.elbow, z);
+        b.world.set_joint_limits(elbow, 0, -1.0, 1.0);
+        let wrist = b.ball_with_motor(lower_arm, fork, l.grip, [0.8, 0.6, 0.6]);
+
+        let rest = builder.rest.try_into().expect("nine bodies");
+        let bike = Self {
+            params: params.clone(),
+            bodies: [
+                rear, front, fork, frame, lower_leg, upper_leg, torso, upper_arm, lower_arm,
+            ],
+            rest,
+            shapes: builder.shapes,
+            steer,
+            rear_axle,
+            waist,
+            knee,
+            shoulder,
+            elbow,
+            wrist,
+        };
+        bike.apply(world, &Controls::default());
+        bike
+    }
+
+    pub fn params(&self) -> &BikeParams {
+        &self.params
+    }
+
+    pub fn body(&self, part: Part) -> BodyId {
+        self.bodies[part as usize]
+    }
+
+    /// Collision shapes of every part, in body frames.
+    pub fn shapes(&self) -> &[PartShape] {
+        &self.shapes
+    }
+
+    /// Sets every joint motor from a control vector.
+    pub fn apply(&self, world: &mut World, controls: &Controls) {
+        let c = controls.values();
+        world.set_motor(
+            self.steer,
+            0,
+            c[index::STEER],
+            controls.max_torque(ForceClass::Steering),
+        );
+        world.set_motor(
+            self.rear_axle,
+            0,
+            c[index::REAR_WHEEL],
+            controls.max_torque(ForceClass::RearWheel),
+        );
+        let waist = controls.max_torque(ForceClass::Waist);
+        let arms = controls.max_torque(ForceClass::Arms);
+        for axis in 0..3 {
+            world.set_motor(self.waist, axis, c[index::WAIST + axis], waist);
+            world.set_motor(self.shoulder, axis, c[index::SHOULDER + axis], arms);
+            world.set_motor(self.wrist, axis, c[index::WRIST + axis], arms);
+        }
+        world.set_motor(
+            self.knee,
+            0,
+            c[index::KNEE],
+            controls.max_torque(ForceClass::Knee),
+        );
+        world.set_motor(self.elbow, 0, c[index::ELBOW], arms);
+    }
+
+    /// Puts every body back in its built pose at `placement`, at rest.
+    pub fn reset(&self, world: &mut World, placement: &Placement) {
+        for (body, (position, rotation)) in self.bodies.iter().zip(&self.rest) {
+            world.set_body_position(*body, to_array(placement.transform_point(*position)));
+            world.set_body_quaternion(*body, to_quat(placement.rotation * *rotation));
+            world.set_body_linear_velocity(*body, [0.0; 3]);
+            world.set_body_angular_velocity(*body, [0.0; 3]);
+        }
+    }
+
+    /// Angles of the rider's joint axes that have motors, in control order after the
+    /// rear wheel (waist ×3, knee, shoulder ×3, elbow, wrist ×3); 0 in the riding pose.
+    pub fn rider_joint_angles(&self, world: &World) -> [f64; 11] {
+        let mut angles = [0.0; 11];
+        for axis in 0..3 {
+            angles[axis] = world.joint_angle(self.waist, axis);
+            angles[4 + axis] = world.joint_angle(self.shoulder, axis);
+            angles[8 + axis] = world.joint_angle(self.wrist, axis);
+        }
+        angles[3] = world.joint_angle(self.knee, 0);
+        angles[7] = world.joint_angle(self.elbow, 0);
+        angles
+    }
+
+    /// Velocity targets that bring every rider joint back to the riding pose: a velocity
+    /// servo (`gain` 1/s) on each joint angle, within the control bounds. The pose prior
+    /// of the optimizer and the arcade controller's pose hold both start from this.
+    pub fn pose_hold(&self, world: &World, gain: f64, controls: &mut Controls) {
+        for (i, angle) in self.rider_joint_angles(world).into_iter().enumerate() {
+            controls.set(index::WAIST + i, -gain * angle);
+        }
+    }
+
+    /// Steering angle (rad, positive left) and its rate.
+    pub fn steering(&self, world: &World) -> (f64, f64) {
+        (
+            world.joint_angle(self.steer, 0),
+            world.hinge_rate(self.steer),
+        )
+    }
+
+    /// Orientation of the frame (bike frame → world).
+    pub fn frame_rotation(&self, world: &World) -> DQuat {
+        from_quat(world.body_quaternion(self.body(Part::Frame)))
+    }
+
+    /// Mass-weighted centre of all bodies.
+    pub fn center_of_mass(&self, world: &World) -> DVec3 {
+        let (sum, mass) = self
+            .bodies
+            .iter()
+            .fold((DVec3::ZERO, 0.0), |(sum, mass), &b| {
+                let m = world.body_mass(b);
+                (sum + from_array(world.body_position(b)) * m, mass + m)
+            });
+        sum / mass
+    }
+
+    /// Mass-weighted velocity of all bodies: only external forces change it.
+    pub fn center_of_mass_velocity(&self, world: &World) -> DVec3 {
+        let (sum, mass) = self
+            .bodies
+            .iter()
+            .fold((DVec3::ZERO, 0.0), |(sum, mass), &b| {
+                let m = world.body_mass(b);
+                (
+                    sum + from_array(world.body_linear_velocity(b)) * m,
+                    mass + m,
+                )
+            });
+        sum / mass
+    }
+
+    /// Forward speed (m/s) along the frame's heading projected on the ground plane
+    /// (`up` is the world's up, against gravity).
+    pub fn forward_speed(&self, world: &World, up: DVec3) -> f64 {
+        let velocity = from_array(world.body_linear_velocity(self.body(Part::Frame)));
+        velocity.dot(self.heading(world, up))
+    }
+
+    /// Lean angle (rad) of the frame about its heading; positive leans to the right.
+    pub fn lean(&self, world: &World, up: DVec3) -> f64 {
+        let rotation = self.frame_rotation(world);
+        let heading = self.heading(world, up);
+        let right = heading.cross(up);
+        let bike_up = rotation * DVec3::Y;
+        bike_up.dot(right).atan2(bike_up.dot(up))
+    }
+
+    /// Whether the rear and front wheels touched the ground in the last step.
+    pub fn wheel_contacts(&self, world: &World) -> (bool, bool) {
+        (
+            world.body_touches_static(self.body(Part::RearWheel)),
+            world.body_touches_static(self.body(Part::FrontWheel)),
+        )
+    }
+
+    /// The first part other than a wheel that touched the ground in the last step.
+    pub fn part_touching_ground(&self, world: &World) -> Option<Part> {
+        Part::ALL
+            .into_iter()
+            .find(|p| !p.is_wheel() && world.body_touches_static(self.body(*p)))
+    }
+
+    /// Why the simulation can no longer be trusted, if it cannot: a non-finite number or a
+    /// body moving faster than anything on a bike plausibly does.
+    pub fn explosion(&self, world: &World) -> Option<String> {
+        const MAX_SPEED: f64 = 150.0; // m/s
+        const MAX_SPIN: f64 = 400.0; // rad/s; a wheel at 90 km/h spins at 83 rad/s
+        for part in Part::ALL {
+            let b = self.body(part);
+            let state = [
+                world.body_position(b),
+                world.body_linear_velocity(b),
+                world.body_angular_velocity(b),
+            ];
+            if state.iter().flatten().any(|v| !v.is_finite()) {
+                return Some(format!("{} has a non-finite state", part.name()));
+            }
+            let speed = from_array(state[1]).length();
+            let spin = from_array(state[2]).length();
+            if speed > MAX_SPEED || spin > MAX_SPIN {
+                return Some(format!(
+                    "{} moves implausibly fast ({speed:.0} m/s, {spin:.0} rad/s)",
+                    part.name()
+                ));
+            }
+        }
+        None
+    }
+
+    /// Unit heading: the frame's forward axis flattened onto the ground plane.
+    fn heading(&self, world: &World, up: DVec3) -> DVec3 {
+        let forward = self.frame_rotation(world) * DVec3::X;
+        (forward - up * forward.dot(up)).normalize_or(forward)
+    }
+}
+
+struct Builder<'w> {
+    world: &'w mut World,
+    placement: Placement,
+    rest: Vec<(DVec3, DQuat)>,
+    shapes: Vec<PartShape>,
+}
+
+impl Builder<'_> {
+    /// A body at a bike-frame pose.
+    fn body(&mut self, mass: Mass, position: DVec3, rotation: DQuat) -> BodyId {
+        let world_position = self.placement.transform_point(position);
+        let body = self.world.add_body(mass, to_array(world_position));
+        self.world
+            .set_body_quaternion(body, to_quat(self.placement.rotation * rotation));
+        self.rest.push((position, rotation));
+        body
+    }
+
+    fn wheel(&mut self, part: Part, mass: f64, radius: f64, width: f64, axle: DVec3) -> BodyId {
+        // Inertia of a disc about the axle (z); a sphere for contact, so the tyre's round
+        // profile keeps the contact under the wheel when it leans.
+        let body = self.body(
+            Mass::cylinder(mass, 2, radius, width),
+            axle,
+            DQuat::IDENTITY,
+        );
+        self.world.add_sphere(radius, Some(body));
+        self.shape(part, Shape::Sphere { radius }, DVec3::ZERO, DQuat::IDENTITY);
+        body
+    }
+
+    fn frame(&mut self, mass: f64) -> BodyId {
+        // Mass as a box over engine, tank and seat; the collision box is the part that
+        // scrapes the ground in a fall.
+        let centre = DVec3::new(-0.05, 0.55, 0.0);
+        let body = self.body(
+            Mass::cuboid(mass, [1.05, 0.45, 0.30]),
+            centre,
+            DQuat::IDENTITY,
+        );
+        let size = DVec3::new(0.95, 0.28, 0.28);
+        let offset = DVec3::new(0.0, 0.06, 0.0);
+        let geom = self.world.add_box(to_array(size), Some(body));
+        self.world
+            .set_geom_offset(geom, to_array(offset), to_quat(DQuat::IDENTITY));
+        self.shape(Part::Frame, Shape::Cuboid { size }, offset, DQuat::IDENTITY);
+        body
+    }
+
+    fn fork(&mut self, mass: f64, axle: DVec3, top: DVec3, grip: DVec3) -> BodyId {
+        let radius = 0.035;
+        let body = self.segment(Part::Fork, mass, radius, axle, top);
+        // The handlebar: a bar across the bike at the grips.
+        let (centre, rotation) = segment_pose(axle, top);
+        let size = DVec3::new(0.05, 0.05, 0.76);
+        let offset = rotation.inverse() * (grip - centre);
+        let bar_rotation = rotation.inverse();
+        let geom = self.world.add_box(to_array(size), Some(body));
+        self.world
+            .set_geom_offset(geom, to_array(offset), to_quat(bar_rotation));
+        self.shape(Part::Fork, Shape::Cuboid { size }, offset, bar_rotation);
+        body
+    }
+
+    /// A capsule body from `a` to `b` (joint centres), its caps reaching the joints.
+    fn segment(&mut self, part: Part, mass: f64, radius: f64, a: DVec3, b: DVec3) -> BodyId {
+        let (centre, rotation) = segment_pose(a, b);
+        let length = ((b - a).length() - radius).max(0.01);
+        let body = self.body(Mass::capsule(mass, radius, length), centre, rotation);
+        self.world.add_capsule(radius, length, Some(body));
+        self.shape(
+            part,
+            Shape::Capsule { radius, length },
+            DVec3::ZERO,
+            DQuat::IDENTITY,
+        );
+        body
+    }
+
+    fn hinge(&mut self, a: BodyId, b: BodyId, anchor: DVec3, axis: DVec3) -> JointId {
+        let anchor = self.placement.transform_point(anchor);
+        let axis = self.placement.rotation * axis;
+        self.world
+            .add_hinge(a, Some(b), to_array(anchor), to_array(axis))
+    }
+
+    fn ball(&mut self, a: BodyId, b: BodyId, anchor: DVec3) {
+        self.world
+            .add_ball(a, Some(b), to_array(self.placement.transform_point(anchor)));
+    }
+
+    /// A ball joint driven by an Euler motor: pitch about z (fixed to `a`), twist about
+    /// the derived middle axis, roll about x (fixed to `b`), each limited to ±`limits`.
+    fn ball_with_motor(
+        &mut self,
+        a: BodyId,
+        b: BodyId,
+        anchor: DVec3,
+        limits: [f64; 3],
+    ) -> JointId {
+        self.ball(a, b, anchor);
+        let axis0 = self.placement.rotation * DVec3::Z;
+        let axis2 = self.placement.rotation * DVec3::X;
+        let motor = self
+            .world
+            .add_euler_motor(a, b, to_array(axis0), to_array(axis2));
+        for (axis, limit) in limits.into_iter().enumerate() {
+            self.world.set_joint_limits(motor, axis, -limit, limit);
+        }
+        motor
+    }
+
+    fn shape(&mut self, part: Part, shape: Shape, offset: DVec3, rotation: DQuat) {
+        self.shapes.push(PartShape {
+            part,
+            shape,
+            offset,
+            rotation,
+        });
+    }
+}
+
+/// Centre and orientation (local z along a→b) of a segment between two points.
+fn segment_pose(a: DVec3, b: DVec3) -> (DVec3, DQuat) {
+    (
+        (a + b) / 2.0,
+        DQuat::from_rotation_arc(DVec3::Z, (b - a).normalize()),
+    )
+}
+
+pub(crate) fn to_array(v: DVec3) -> [f64; 3] {
+    v.to_array()
+}
+
+pub(crate) fn from_array(v: [f64; 3]) -> DVec3 {
+    DVec3::from_array(v)
+}
+
+/// glam stores quaternions as x, y, z, w; ODE as w, x, y, z.
+pub(crate) fn to_quat(q: DQuat) -> [f64; 4] {
+    [q.w, q.x, q.y, q.z]
+}
+
+pub(crate) fn from_quat(q: [f64; 4]) -> DQuat {
+    DQuat::from_xyzw(q[1], q[2], q[3], q[0])
+}

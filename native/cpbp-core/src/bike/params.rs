@@ -1,0 +1,77 @@
+//! Dimensions and masses of the bike and rider, with where the numbers come from.
+//!
+//! Frame of the model ("bike frame"): x forward, y up, z to the rider's right; the origin
+//! is on the ground midway between the two wheels' contact points, bike upright.
+//!
+//! **Motorcycle**: a light road bike of the 300–400 cc class (e.g. KTM 390 Duke, Honda
+//! CB300R; manufacturers' published specifications): wheelbase 1.36–1.40 m, rake (caster)
+//! 24.5–25°, trail 95–100 mm, 17-inch wheels (0.60 m tyre diameter), about 150 kg ready
+//! to ride. Wheel, fork and frame shares of that mass follow typical component weights
+//! (cast wheel with tyre and disc: front ≈ 10 kg, rear ≈ 14 kg; fork with bars ≈ 12 kg).
+//!
+//! **Rider**: an adult of 75 kg and 1.75 m. Segment masses and lengths are the fractions of
+//! Winter, *Biomechanics and Motor Control of Human Movement* (4th ed., 2009, table 4.1):
+//! thigh 0.100 M and 0.245 H, shank 0.0465 M and 0.246 H, foot 0.0145 M, upper arm
+//! 0.028 M and 0.186 H, forearm 0.016 M, hand 0.006 M, trunk with head and neck 0.578 M.
+//! The model has one leg and one arm in the mid-plane (as in the thesis, §4.2), so they
+//! carry the mass of both sides: legs 15.0 kg (thighs) and 9.15 kg (shanks and feet),
+//! arms 4.2 kg (upper) and 3.3 kg (forearms and hands); torso with head 43.35 kg.
+
+/// Every number that shapes the bike and rider. `Default` is the reference bike.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BikeParams {
+    /// Distance between the wheels' ground contact points (m).
+    pub wheelbase: f64,
+    /// Wheel radius, tyre included (m).
+    pub wheel_radius: f64,
+    /// Angle of the steering axis from vertical (rad).
+    pub rake: f64,
+    /// Ground distance from the front contact point back to where the steering axis meets
+    /// the ground (m); positive trail is what makes a bike self-aligning.
+    pub trail: f64,
+    pub rear_wheel_mass: f64,
+    pub front_wheel_mass: f64,
+    pub fork_mass: f64,
+    pub frame_mass: f64,
+    /// Rider segments: lower leg, upper leg, torso with head, upper arm, lower arm (kg).
+    pub rider_masses: [f64; 5],
+    /// Largest steering angle either way (rad).
+    pub steer_limit: f64,
+    /// Coulomb friction coefficient of tyres on the ground.
+    pub tyre_friction: f64,
+}
+
+impl Default for BikeParams {
+    fn default() -> Self {
+        Self {
+            wheelbase: 1.39,
+            wheel_radius: 0.30,
+            rake: 25f64.to_radians(),
+            trail: 0.095,
+            rear_wheel_mass: 14.0,
+            front_wheel_mass: 10.0,
+            fork_mass: 12.0,
+            frame_mass: 114.0,
+            rider_masses: [9.15, 15.0, 43.35, 4.2, 3.3],
+            steer_limit: 35f64.to_radians(),
+            tyre_friction: 1.0,
+        }
+    }
+}
+
+impl BikeParams {
+    /// Bike without rider (kg).
+    pub fn bike_mass(&self) -> f64 {
+        self.rear_wheel_mass + self.front_wheel_mass + self.fork_mass + self.frame_mass
+    }
+
+    /// Rider (kg).
+    pub fn rider_mass(&self) -> f64 {
+        self.rider_masses.iter().sum()
+    }
+
+    /// Distance from the front axle to the steering axis (m), from rake, trail and radius.
+    pub fn fork_offset(&self) -> f64 {
+        self.wheel_radius * self.rake.sin() - self.trail * self.rake.cos()
+    }
+}

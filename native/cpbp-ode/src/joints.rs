@@ -1,0 +1,209 @@
+//! Joints between bodies: ball, hinge (with limits and a velocity motor) and the Euler
+//! angular motor that drives a ball joint about three axes.
+
+use crate::ffi;
+use crate::world::{BodyId, World};
+use crate::Vec3;
+
+/// Index of a joint inside its [`World`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct JointId(pub usize);
+
+/// ODE numbers the parameters of a joint's second and third axis in groups 0x100 apart.
+const PARAM_GROUP: i32 = 0x100;
+
+/// Velocity-motor settings of a joint, per axis (1 for hinges, 3 for Euler motors), and
+/// the angles an Euler motor cached during the last step. The settings are controls and
+/// the angles are derived, but both are state: a restored world must read and step
+/// exactly as the original.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct MotorState {
+    pub velocity: [f64; 3],
+    pub max_force: [f64; 3],
+    pub cached_angles: [f64; 3],
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum JointKind {
+    Ball,
+    Hinge,
+    EulerMotor,
+}
+
+impl JointKind {
+    /// Number of motorised axes.
+    pub(crate) fn motor_axes(self) -> usize {
+        match self {
+            JointKind::Ball => 0,
+            JointKind::Hinge => 1,
+            JointKind::EulerMotor => 3,
+        }
+    }
+}
+
+impl World {
+    /// A ball-and-socket joint at a world-frame anchor; `b = None` attaches to the world.
+    pub fn add_ball(&mut self, a: BodyId, b: Option<BodyId>, anchor: Vec3) -> JointId {
+        // SAFETY: the world and bodies are alive; the joint is owned by the world.
+        let joint = unsafe {
+            let joint = ffi::dJointCreateBall(self.world, std::ptr::null_mut());
+            ffi::dJointAttach(joint, self.bodies[a.0], self.body_or_world(b));
+            ffi::dJointSetBallAnchor(joint, anchor[0], anchor[1], anchor[2]);
+            joint
+        };
+        self.push_joint(joint, JointKind::Ball)
+    }
+
+    /// A hinge at a world-frame anchor about a world-frame axis; its angle is 0 as built.
+    pub fn add_hinge(&mut self, a: BodyId, b: Option<BodyId>, anchor: Vec3, axis: Vec3) -> JointId {
+        // SAFETY: as for add_ball.
+        let joint = unsafe {
+            let joint = ffi::dJointCreateHinge(self.world, std::ptr::null_mut());
+            ffi::dJointAttach(joint, self.bodies[a.0], self.body_or_world(b));
+            ffi::dJointSetHingeAnchor(joint, anchor[0], anchor[1], anchor[2]);
+            ffi::dJointSetHingeAxis(joint, axis[0], axis[1], axis[2]);
+            joint
+        };
+        self.push_joint(joint, JointKind::Hinge)
+    }
+
+    /// An Euler-mode angular motor between two bodies (for a ball joint): axis 0 is fixed
+    /// to `a`, axis 2 to `b`, both given in world frame and perpendicular; ODE derives
+    /// axis 1 and the three angles every step (so they need no saving in snapshots).
+    pub fn add_euler_motor(&mut self, a: BodyId, b: BodyId, axis0: Vec3, axis2: Vec3) -> JointId {
+        // SAFETY: as for add_ball.
+        let joint = unsafe {
+            let joint = ffi::dJointCreateAMotor(self.world, std::ptr::null_mut());
+            ffi::dJointAttach(joint, self.bodies[a.0], self.bodies[b.0]);
+            ffi::dJointSetAMotorMode(joint, ffi::dAMotorEuler as i32);
+            ffi::dJointSetAMotorAxis(joint, 0, 1, axis0[0], axis0[1], axis0[2]);
+            ffi::dJointSetAMotorAxis(joint, 2, 2, axis2[0], axis2[1], axis2[2]);
+            joint
+        };
+        self.push_joint(joint, JointKind::EulerMotor)
+    }
+
+    /// Angle limits (radians) of a hinge (axis 0) or an Euler motor (axes 0–2).
+    pub fn set_joint_limits(&mut self, joint: JointId, axis: usize, lo: f64, hi: f64) {
+        let (id, kind) = self.joints[joint.0];
+        assert!(
+            axis < kind.motor_axes(),
+            "joint {joint:?} has no axis {axis}"
+        );
+        let group = PARAM_GROUP * axis as i32;
+        // SAFETY: the joint belongs to this world and has this axis.
+        unsafe {
+            self.set_param(id, kind, group + ffi::dParamLoStop as i32, lo);
+            self.set_param(id, kind, group + ffi::dParamHiStop as i32, hi);
+            // Setting lo again makes it stick when the new lo exceeds the old hi.
+            self.set_param(id, kind, group + ffi::dParamLoStop as i32, lo);
+        }
+    }
+
+    /// Target angular velocity (rad/s) and force limit (N·m) of one motor axis.
+    pub fn set_motor(&mut self, joint: JointId, axis: usize, velocity: f64, max_force: f64) {
+        let (id, kind) = self.joints[joint.0];
+        assert!(
+            axis < kind.motor_axes(),
+            "joint {joint:?} has no motor axis {axis}"
+        );
+        let group = PARAM_GROUP * axis as i32;
+        // SAFETY: the joint belongs to this world and has this axis.
+        unsafe {
+            self.set_param(id, kind, group + ffi::dParamVel as i32, velocity);
+            self.set_param(id, kind, group + ffi::dParamFMax as i32, max_force);
+        }
+    }
+
+    /// Motor settings of a motorised joint.
+    pub fn motor_state(&self, joint: JointId) -> MotorState {
+        let (id, kind) = self.joints[joint.0];
+        let mut state = MotorState::default();
+        for axis in 0..kind.motor_axes() {
+            let group = PARAM_GROUP * axis as i32;
+            // SAFETY: the joint belongs to this world and has this axis.
+            unsafe {
+                state.velocity[axis] = self.param(id, kind, group + ffi::dParamVel as i32);
+                state.max_force[axis] = self.param(id, kind, group + ffi::dParamFMax as i32);
+                if kind == JointKind::EulerMotor {
+                    state.cached_angles[axis] = ffi::dJointGetAMotorAngle(id, axis as i32);
+                }
+            }
+        }
+        state
+    }
+
+    /// Restores motor settings saved by [`World::motor_state`].
+    pub fn set_motor_state(&mut self, joint: JointId, state: &MotorState) {
+        let (id, kind) = self.joints[joint.0];
+        for axis in 0..kind.motor_axes() {
+            self.set_motor(joint, axis, state.velocity[axis], state.max_force[axis]);
+            if kind == JointKind::EulerMotor {
+                // SAFETY: an Euler motor of this world; our ODE build lets this set the
+                // cached angle in Euler mode (tools/build-ode.sh, patch 3).
+                unsafe { ffi::dJointSetAMotorAngle(id, axis as i32, state.cached_angles[axis]) };
+            }
+        }
+    }
+
+    /// Angle (radians) of a hinge, or of one Euler-motor axis as of the last step.
+    pub fn joint_angle(&self, joint: JointId, axis: usize) -> f64 {
+        let (id, kind) = self.joints[joint.0];
+        // SAFETY: the joint belongs to this world.
+        unsafe {
+            match kind {
+                JointKind::Hinge => ffi::dJointGetHingeAngle(id),
+                JointKind::EulerMotor => ffi::dJointGetAMotorAngle(id, axis as i32),
+                JointKind::Ball => 0.0,
+            }
+        }
+    }
+
+    /// Angular rate (rad/s) of a hinge.
+    pub fn hinge_rate(&self, joint: JointId) -> f64 {
+        let (id, kind) = self.joints[joint.0];
+        assert_eq!(kind, JointKind::Hinge, "joint {joint:?} is not a hinge");
+        // SAFETY: the joint is a hinge of this world.
+        unsafe { ffi::dJointGetHingeAngleRate(id) }
+    }
+
+    /// Number of joints (contacts excluded).
+    pub fn joint_count(&self) -> usize {
+        self.joints.len()
+    }
+
+    fn push_joint(&mut self, joint: ffi::dJointID, kind: JointKind) -> JointId {
+        self.joints.push((joint, kind));
+        JointId(self.joints.len() - 1)
+    }
+
+    fn body_or_world(&self, body: Option<BodyId>) -> ffi::dBodyID {
+        body.map_or(std::ptr::null_mut(), |b| self.bodies[b.0])
+    }
+
+    /// # Safety
+    /// `id` must be a live joint of kind `kind` with the parameter's axis.
+    unsafe fn set_param(&self, id: ffi::dJointID, kind: JointKind, param: i32, value: f64) {
+        // SAFETY: guaranteed by the caller.
+        unsafe {
+            match kind {
+                JointKind::Hinge => ffi::dJointSetHingeParam(id, param, value),
+                JointKind::EulerMotor => ffi::dJointSetAMotorParam(id, param, value),
+                JointKind::Ball => {}
+            }
+        }
+    }
+
+    /// # Safety
+    /// As for `set_param`.
+    unsafe fn param(&self, id: ffi::dJointID, kind: JointKind, param: i32) -> f64 {
+        // SAFETY: guaranteed by the caller.
+        unsafe {
+            match kind {
+                JointKind::Hinge => ffi::dJointGetHingeParam(id, param),
+                JointKind::EulerMotor => ffi::dJointGetAMotorParam(id, param),
+                JointKind::Ball => 0.0,
+            }
+        }
+    }
+}
