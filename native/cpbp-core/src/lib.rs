@@ -3,6 +3,8 @@
 
 pub mod bike;
 mod build_info;
+pub mod simulation;
+pub mod terrain;
 
 pub use build_info::{build_info, BuildInfo};
 pub use cpbp_ode as ode;

@@ -7,11 +7,13 @@
 mod ffi;
 mod joints;
 mod runtime;
+mod shared_data;
 mod state;
 mod world;
 
 pub use joints::{JointId, MotorState};
 pub use runtime::{configuration, ensure_thread_data, Configuration};
+pub use shared_data::{HeightFieldData, TriMeshData};
 pub use state::{BodyState, StateMismatch, WorldState};
 pub use world::{BodyId, GeomId, Mass, SurfaceParams, World};
 

@@ -2,10 +2,12 @@
 
 use std::os::raw::c_void;
 use std::ptr;
+use std::sync::Arc;
 
 use crate::ffi;
 use crate::joints::JointKind;
 use crate::runtime::ensure_thread_data;
+use crate::shared_data::{HeightFieldData, TriMeshData};
 use crate::{BodyState, Quat, StateMismatch, Vec3, WorldState};
 
 /// Most contact points generated for one pair of geoms in one step.
@@ -99,6 +101,9 @@ pub struct World {
     surface: SurfaceParams,
     /// Per body: whether it touched a static geom (terrain) in the last step.
     touching_static: Vec<bool>,
+    /// Shared collision data the geoms read; released only after `Drop` destroyed the space.
+    shared_meshes: Vec<Arc<TriMeshData>>,
+    shared_heights: Vec<Arc<HeightFieldData>>,
 }
 
 /// Collision categories: bodies collide with static terrain only, never with each other
@@ -140,6 +145,8 @@ impl World {
                 geoms: Vec::new(),
                 surface: SurfaceParams::default(),
                 touching_static: Vec::new(),
+                shared_meshes: Vec::new(),
+                shared_heights: Vec::new(),
             }
         }
     }
@@ -197,6 +204,23 @@ impl World {
         // SAFETY: as for add_sphere.
         let geom = unsafe { ffi::dCreateCylinder(self.space, radius, length) };
         self.attach(geom, body)
+    }
+
+    /// Adds a static triangle mesh; the data is shared, not copied.
+    pub fn add_trimesh(&mut self, data: &Arc<TriMeshData>) -> GeomId {
+        // SAFETY: the data outlives the geom: this world keeps an Arc to it and destroys
+        // its space (and so the geom) before dropping the Arc.
+        let geom = unsafe { ffi::dCreateTriMesh(self.space, data.id, None, None, None) };
+        self.shared_meshes.push(Arc::clone(data));
+        self.attach(geom, None)
+    }
+
+    /// Adds a static height field (Y up, centred on the geom's position).
+    pub fn add_heightfield(&mut self, data: &Arc<HeightFieldData>) -> GeomId {
+        // SAFETY: as for add_trimesh; 1 = placeable.
+        let geom = unsafe { ffi::dCreateHeightfield(self.space, data.id, 1) };
+        self.shared_heights.push(Arc::clone(data));
+        self.attach(geom, None)
     }
 
     /// Adds a static infinite plane `normal · p = offset` (normal need not be unit length).

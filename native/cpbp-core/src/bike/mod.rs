@@ -4,6 +4,7 @@
 
 mod controls;
 mod crash;
+mod drive;
 mod layout;
 mod model;
 mod params;
@@ -13,6 +14,7 @@ pub use controls::{
     UPPER,
 };
 pub use crash::{CrashCause, CrashMonitor};
+pub use drive::DriveInput;
 pub use layout::Layout;
 pub use model::{Bike, Part, PartShape, Placement, Shape};
 pub use params::BikeParams;

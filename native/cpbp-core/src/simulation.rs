@@ -1,0 +1,222 @@
+//! The master simulation of a ride: terrain, bike and rider stepped one control period at
+//! a time in substeps, with crash, landing and explosion handling. Rollout worlds for
+//! the planner are built by the same code, so they match the master body for body.
+
+use std::sync::Arc;
+
+use glam::DVec3;
+
+use crate::bike::{Bike, BikeParams, Controls, CrashCause, CrashMonitor, Part, Placement};
+use crate::ode::World;
+use crate::terrain::Terrain;
+
+/// How the world is stepped.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SimulationConfig {
+    /// Gravity (m/s²); "up" is against it.
+    pub gravity: DVec3,
+    /// Length of one control step (s); the thesis used 32 ms, we use 1/30 s.
+    pub control_dt: f64,
+    /// ODE steps per control step: 4 (1/120 s) keeps the rider's joints stiff and the
+    /// steering steady; 1 lets the rider sag and the bar drift by degrees.
+    pub substeps: usize,
+    pub bike: BikeParams,
+}
+
+impl Default for SimulationConfig {
+    fn default() -> Self {
+        Self {
+            gravity: DVec3::new(0.0, -9.81, 0.0),
+            control_dt: 1.0 / 30.0,
+            substeps: 4,
+            bike: BikeParams::default(),
+        }
+    }
+}
+
+/// What happened during one control step.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StepEvents {
+    /// The ride crashed in this step (reported once).
+    pub crashed: Option<CrashCause>,
+    /// A wheel touched the ground again after the bike was airborne.
+    pub landed: bool,
+    /// The physics blew up and was recovered from (with the reason).
+    pub recovered_from: Option<String>,
+}
+
+/// Time (s) both wheels must be off the ground to count as airborne.
+const AIRBORNE_AFTER: f64 = 0.15;
+
+pub struct Simulation {
+    config: SimulationConfig,
+    terrain: Arc<Terrain>,
+    world: World,
+    bike: Bike,
+    controls: Controls,
+    crash: CrashMonitor,
+    crashed: Option<CrashCause>,
+    airborne_for: f64,
+    spawn: Placement,
+}
+
+impl Simulation {
+    /// A ride on `terrain`, the bike at rest at `spawn`.
+    pub fn new(config: SimulationConfig, terrain: Arc<Terrain>, spawn: Placement) -> Self {
+        let (world, bike) = build_world(&config, &terrain, &spawn);
+        Self {
+            config,
+            terrain,
+            world,
+            bike,
+            controls: Controls::default(),
+            crash: CrashMonitor::default(),
+            crashed: None,
+            airborne_for: 0.0,
+            spawn,
+        }
+    }
+
+    /// A fresh world with the same terrain and bike, for rollouts: restore a snapshot of
+    /// the master into it and it steps exactly as the master would.
+    pub fn new_world(&self) -> World {
+        build_world(&self.config, &self.terrain, &self.spawn).0
+    }
+
+    pub fn config(&self) -> &SimulationConfig {
+        &self.config
+    }
+
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    /// The master world, for tools and tests that push it around directly.
+    pub fn world_mut(&mut self) -> &mut World {
+        &mut self.world
+    }
+
+    pub fn bike(&self) -> &Bike {
+        &self.bike
+    }
+
+    pub fn controls(&self) -> &Controls {
+        &self.controls
+    }
+
+    /// Unit vector against gravity.
+    pub fn up(&self) -> DVec3 {
+        (-self.config.gravity).normalize_or(DVec3::Y)
+    }
+
+    /// The crash of this ride, if it crashed (cleared by reset and lift).
+    pub fn crashed(&self) -> Option<CrashCause> {
+        self.crashed
+    }
+
+    /// Controls for the next steps.
+    pub fn set_controls(&mut self, controls: Controls) {
+        self.controls = controls;
+    }
+
+    /// Advances one control step.
+    pub fn step(&mut self) -> StepEvents {
+        let mut events = StepEvents::default();
+        let dt = self.config.control_dt / self.config.substeps as f64;
+        self.bike.apply(&mut self.world, &self.controls);
+        let mut airborne_at_start = self.airborne_for > AIRBORNE_AFTER;
+        for _ in 0..self.config.substeps {
+            self.world.step(dt);
+            if let Some(reason) = self.bike.explosion(&self.world) {
+                events.recovered_from = Some(self.recover(reason));
+                return events;
+            }
+            let (rear, front) = self.bike.wheel_contacts(&self.world);
+            if rear || front {
+                events.landed |= airborne_at_start;
+                airborne_at_start = false;
+                self.airborne_for = 0.0;
+            } else {
+                self.airborne_for += dt;
+            }
+            let lean = self.bike.lean(&self.world, self.up());
+            let touching = self.bike.part_touching_ground(&self.world);
+            if let Some(cause) = self.crash.update(dt, lean, touching) {
+                if self.crashed.is_none() {
+                    self.crashed = Some(cause);
+                    events.crashed = Some(cause);
+                }
+            }
+        }
+        events
+    }
+
+    /// Puts the bike at rest at `placement` (and makes that the spawn point).
+    pub fn reset_to(&mut self, placement: Placement) {
+        self.spawn = placement;
+        self.bike.reset(&mut self.world, &placement);
+        self.controls = Controls::default();
+        self.crash.reset();
+        self.crashed = None;
+        self.airborne_for = 0.0;
+    }
+
+    /// Stands the bike up where it is, facing where it was heading, a little above the
+    /// ground it was on, at rest. The spawn point stays as it was.
+    pub fn lift_upright(&mut self) {
+        let up = self.up();
+        let frame = self.bike.body(Part::Frame);
+        let here = DVec3::from_array(self.world.body_position(frame));
+        let forward = self.bike.frame_rotation(&self.world) * DVec3::X;
+        let heading = (forward - up * forward.dot(up)).normalize_or(DVec3::X);
+        let ground = here - up * here.dot(up) + up * self.lowest_wheel_height(up);
+        let placement = Placement {
+            position: ground + up * 0.05,
+            rotation: glam::DQuat::from_mat3(&glam::DMat3::from_cols(
+                heading,
+                up,
+                heading.cross(up),
+            )),
+        };
+        let spawn = self.spawn;
+        self.reset_to(placement);
+        self.spawn = spawn;
+    }
+
+    /// Height (along up) of the lower wheel's contact point.
+    fn lowest_wheel_height(&self, up: DVec3) -> f64 {
+        let r = self.config.bike.wheel_radius;
+        [Part::RearWheel, Part::FrontWheel]
+            .map(|p| DVec3::from_array(self.world.body_position(self.bike.body(p))).dot(up) - r)
+            .into_iter()
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// Swaps the terrain (a level changed or was regenerated), keeping the ride's state.
+    pub fn set_terrain(&mut self, terrain: Arc<Terrain>) {
+        let state = self.world.snapshot();
+        let (world, _) = build_world(&self.config, &terrain, &self.spawn);
+        self.world = world;
+        self.terrain = terrain;
+        self.world
+            .restore(&state)
+            .expect("the same bike is built in every world");
+    }
+
+    /// A world that blew up from some state would blow up again from it (the simulation is
+    /// deterministic), so recovery puts the bike back at its spawn point.
+    fn recover(&mut self, reason: String) -> String {
+        let spawn = self.spawn;
+        self.reset_to(spawn);
+        format!("{reason}; the bike was put back at its spawn point")
+    }
+}
+
+fn build_world(config: &SimulationConfig, terrain: &Terrain, spawn: &Placement) -> (World, Bike) {
+    let mut world = World::new(config.gravity.to_array());
+    // The bike first: its bodies and joints then have the same indices in every world,
+    // whatever the terrain, so snapshots move between worlds and levels.
+    let bike = Bike::build(&mut world, &config.bike, spawn);
+    terrain.add_to(&mut world);
+    (world, bike)
+}
