@@ -1,11 +1,17 @@
 //! `make bench`: prints the performance figures recorded in docs/benchmarks.md.
 //! Timings are medians of several runs so one noisy run does not move them.
 
+use std::sync::Arc;
 use std::time::Instant;
 
+use cpbp_core::bike::{Controls, Placement};
 use cpbp_core::ode::{Mass, World};
+use cpbp_core::simulation::{Simulation, SimulationConfig};
+use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use glam::{DQuat, DVec3};
 
 const RUNS: usize = 7;
+const ODE_DT: f64 = 1.0 / 120.0;
 
 fn main() {
     let info = cpbp_core::build_info();
@@ -16,53 +22,166 @@ fn main() {
     );
     println!("ODE: {}", info.ode.raw);
     println!();
-    println!("{:<52} {:>12}", "figure", "value");
+    println!("{:<58} {:>14}", "figure", "value");
+    let row = |name: &str, value: String| println!("{name:<58} {value:>14}");
+
     for bodies in [1, 15] {
-        let micros = median(|| step_cost(bodies, 2_000));
-        println!(
-            "{:<52} {:>9.2} µs",
-            format!("ODE QuickStep, {bodies} sphere(s) resting on a plane"),
-            micros
+        let micros = median(|| sphere_step_cost(bodies, 2_000));
+        row(
+            &format!("ODE step, {bodies} sphere(s) resting on a plane"),
+            format!("{micros:.2} µs"),
         );
     }
-    let micros = median(world_creation_cost);
-    println!(
-        "{:<52} {:>9.2} µs",
-        "create + destroy a world with 15 bodies", micros
+
+    let flat = rolling_bike(flat_terrain());
+    let bumps = rolling_bike(bump_field());
+    row(
+        "bike + rider: one ODE step (1/120 s), flat ground",
+        format!("{:.2} µs", median(|| bike_step_cost(&flat))),
     );
+    row(
+        "bike + rider: one ODE step, trimesh bump field (2 048 tris)",
+        format!("{:.2} µs", median(|| bike_step_cost(&bumps))),
+    );
+    let (snapshot, restore) = snapshot_costs(&flat);
+    row("snapshot of the bike world", format!("{snapshot:.2} µs"));
+    row("restore of the bike world", format!("{restore:.2} µs"));
+    for thread_count in [1, 2] {
+        let rate = median(|| parallel_steps_per_second(&flat, 16, thread_count));
+        row(
+            &format!("16 bike worlds stepped on {thread_count} thread(s)"),
+            format!("{:.0} steps/s", rate),
+        );
+    }
 }
 
-/// Mean µs per step of a world with `bodies` spheres in contact with a plane.
-fn step_cost(bodies: usize, steps: usize) -> f64 {
-    let mut world = sphere_world(bodies);
-    for _ in 0..100 {
-        world.step(1.0 / 120.0);
-    }
-    let start = Instant::now();
-    for _ in 0..steps {
-        world.step(1.0 / 120.0);
-    }
-    start.elapsed().as_secs_f64() * 1e6 / steps as f64
-}
-
-/// Mean µs to build and drop a 15-body world.
-fn world_creation_cost() -> f64 {
-    let count = 200;
-    let start = Instant::now();
-    for _ in 0..count {
-        drop(sphere_world(15));
-    }
-    start.elapsed().as_secs_f64() * 1e6 / count as f64
-}
-
-fn sphere_world(bodies: usize) -> World {
+fn sphere_step_cost(bodies: usize, steps: usize) -> f64 {
     let mut world = World::new([0.0, -9.81, 0.0]);
     world.add_plane([0.0, 1.0, 0.0], 0.0);
     for i in 0..bodies {
         let body = world.add_body(Mass::sphere(10.0, 0.3), [i as f64, 0.3, 0.0]);
         world.add_sphere(0.3, Some(body));
     }
-    world
+    time_per_call(steps, || world.step(ODE_DT))
+}
+
+fn flat_terrain() -> Arc<Terrain> {
+    let plane = TerrainShape::Plane {
+        normal: DVec3::Y,
+        distance: 0.0,
+    };
+    Arc::new(Terrain::new(vec![piece(plane)]).expect("valid plane"))
+}
+
+/// A 64 m × 64 m grid of 1 m cells with gentle bumps, as one triangle mesh.
+fn bump_field() -> Arc<Terrain> {
+    let n = 32;
+    let cell = 2.0;
+    let height = |i: usize, j: usize| 0.06 * ((i as f64 * 1.3).sin() * (j as f64 * 0.7).cos());
+    let corner = |i: usize, j: usize| {
+        DVec3::new(i as f64 * cell - 32.0, height(i, j), j as f64 * cell - 32.0)
+    };
+    let mut vertices = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            let (a, b, c, d) = (
+                corner(i, j),
+                corner(i + 1, j),
+                corner(i + 1, j + 1),
+                corner(i, j + 1),
+            );
+            vertices.extend([a, d, c, a, c, b]);
+        }
+    }
+    Arc::new(Terrain::new(vec![piece(TerrainShape::TriMesh { vertices })]).expect("valid mesh"))
+}
+
+fn piece(shape: TerrainShape) -> TerrainPiece {
+    TerrainPiece {
+        source: "bench".into(),
+        shape,
+        placement: Placement {
+            position: DVec3::ZERO,
+            rotation: DQuat::IDENTITY,
+        },
+    }
+}
+
+/// A simulation whose bike is riding at 15 km/h with the rider holding the pose.
+fn rolling_bike(terrain: Arc<Terrain>) -> Simulation {
+    let spawn = Placement {
+        position: DVec3::new(-25.0, 0.1, 0.0),
+        rotation: DQuat::IDENTITY,
+    };
+    let mut sim = Simulation::new(SimulationConfig::default(), terrain, spawn);
+    let mut controls = Controls::default();
+    cpbp_core::bike::DriveInput {
+        throttle: 0.6,
+        brake: 0.0,
+        max_speed: 15.0 / 3.6,
+    }
+    .apply(0.3, &mut controls);
+    for _ in 0..30 {
+        sim.bike().pose_hold(sim.world(), 5.0, &mut controls);
+        sim.set_controls(controls);
+        sim.step();
+    }
+    sim
+}
+
+fn bike_step_cost(sim: &Simulation) -> f64 {
+    let mut world = sim.new_world();
+    world.restore(&sim.world().snapshot()).expect("same model");
+    time_per_call(600, || world.step(ODE_DT))
+}
+
+fn snapshot_costs(sim: &Simulation) -> (f64, f64) {
+    let mut world = sim.new_world();
+    let state = sim.world().snapshot();
+    let snapshot = median(|| {
+        time_per_call(20_000, || {
+            drop(std::hint::black_box(sim.world().snapshot()))
+        })
+    });
+    let restore = median(|| {
+        time_per_call(20_000, || {
+            world
+                .restore(std::hint::black_box(&state))
+                .expect("same model")
+        })
+    });
+    (snapshot, restore)
+}
+
+/// ODE steps per second when `worlds` bike worlds are split over `thread_count` threads,
+/// each restoring from the master and stepping a 1.2 s horizon (the planner's workload).
+fn parallel_steps_per_second(sim: &Simulation, worlds: usize, thread_count: usize) -> f64 {
+    let state = sim.world().snapshot();
+    let mut all: Vec<World> = (0..worlds).map(|_| sim.new_world()).collect();
+    let horizon = 144; // 1.2 s at 1/120 s
+    let start = Instant::now();
+    std::thread::scope(|scope| {
+        for chunk in all.chunks_mut(worlds.div_ceil(thread_count)) {
+            let state = &state;
+            scope.spawn(move || {
+                for world in chunk {
+                    world.restore(state).expect("same model");
+                    for _ in 0..horizon {
+                        world.step(ODE_DT);
+                    }
+                }
+            });
+        }
+    });
+    (worlds * horizon) as f64 / start.elapsed().as_secs_f64()
+}
+
+fn time_per_call(calls: usize, mut f: impl FnMut()) -> f64 {
+    let start = Instant::now();
+    for _ in 0..calls {
+        f();
+    }
+    start.elapsed().as_secs_f64() * 1e6 / calls as f64
 }
 
 fn median(mut measure: impl FnMut() -> f64) -> f64 {
