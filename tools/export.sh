@@ -38,7 +38,7 @@ if [ -z "${GODOT:-}" ]; then
   libs="$GODOT_ROOT/usr/lib/x86_64-linux-gnu"
   run_env=(LD_LIBRARY_PATH="$libs:$libs/pulseaudio")
 fi
-env "${run_env[@]}" "$smoke_binary" --headless --audio-driver Dummy -- --native-info >build/logs/export-run.log 2>&1 \
+timeout 120 env "${run_env[@]}" "$smoke_binary" --headless --audio-driver Dummy -- --native-info >build/logs/export-run.log 2>&1 \
   || { cat build/logs/export-run.log >&2; die "the exported game did not start with its native module"; }
 tools/check-godot-log build/logs/export-run.log --release-template
 grep "^native " build/logs/export-run.log

@@ -4,7 +4,7 @@
 source "$(dirname "$0")/common.sh"
 cd "$PROJECT_ROOT"
 
-out=$(tools/godot --headless --path . res://tests/test_runner.tscn -- --dir=res://tests/fixtures/runner 2>&1) && status=0 || status=$?
+out=$(timeout 300 tools/godot --headless --path . --fixed-fps 60 res://tests/test_runner.tscn -- --dir=res://tests/fixtures/runner 2>&1) && status=0 || status=$?
 fail() { printf '%s\n' "$out" >&2; die "runner self-test: $1"; }
 
 [ "$status" -ne 0 ] || fail "the runner exited 0 on a failing suite"

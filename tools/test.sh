@@ -20,7 +20,8 @@ step() {
 
 gdscript_files() { git ls-files -co --exclude-standard -- '*.gd'; }
 godot_suites() {
-  tools/godot --headless --path . --audio-driver Dummy res://tests/test_runner.tscn 2>&1 | tee build/logs/gdscript-tests.log
+  # A test that hangs (say, one that frees the runner) must fail the run, not stall CI.
+  timeout 900 tools/godot --headless --path . --audio-driver Dummy --fixed-fps 60 res://tests/test_runner.tscn 2>&1 | tee build/logs/gdscript-tests.log
   local status=${PIPESTATUS[0]}
   tools/check-godot-log build/logs/gdscript-tests.log --test-run && return "$status"
 }
@@ -32,7 +33,12 @@ step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_file
 step "gdformat"             bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdformat --check"
 step "test runner self-test" tools/test-runner-selftest.sh
 step "GDScript suites"      godot_suites
-step "screenshots (Xvfb)"   tools/screenshot.sh res://scenes/ui/title_screen.tscn build/screenshots/title.png
+screenshots() {
+  tools/screenshot.sh res://scenes/ui/title_screen.tscn build/screenshots/title.png \
+    && tools/screenshot.sh res://scenes/sandbox.tscn build/screenshots/sandbox.png 45
+}
+
+step "screenshots (Xvfb)"   screenshots
 step "export + smoke run"   tools/export.sh
 
 printf '\n%s\n' "${summary[@]}"

@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 use glam::{DQuat, DVec3};
 
-use crate::bike::Placement;
+use crate::bike::{to_quat, Placement};
 use crate::ode::{HeightFieldData, TriMeshData, World};
 
 /// One collision shape of a level, in its own frame.
@@ -135,9 +135,8 @@ impl Terrain {
             } else {
                 DQuat::IDENTITY
             };
-            let q = piece.placement.rotation * local;
             world.set_geom_position(geom, piece.placement.position.to_array());
-            world.set_geom_quaternion(geom, [q.w, q.x, q.y, q.z]);
+            world.set_geom_quaternion(geom, to_quat(piece.placement.rotation * local));
         }
     }
 }

@@ -1,7 +1,10 @@
 //! Counter-Steer's GDExtension entry point: the Godot classes that wrap `cpbp-core`.
 
+mod bike_simulation;
+mod convert;
 mod native_info;
 mod ode_world;
+mod terrain_import;
 
 use godot::prelude::*;
 

@@ -6,6 +6,7 @@ mod controls;
 mod crash;
 mod drive;
 mod layout;
+mod manual;
 mod model;
 mod params;
 
@@ -16,5 +17,6 @@ pub use controls::{
 pub use crash::{CrashCause, CrashMonitor};
 pub use drive::DriveInput;
 pub use layout::Layout;
-pub use model::{Bike, Part, PartShape, Placement, Shape};
+pub use manual::{manual_controls, POSE_GAIN};
+pub use model::{from_quat, to_quat, Bike, Part, PartShape, Placement, Shape};
 pub use params::BikeParams;

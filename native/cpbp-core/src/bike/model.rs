@@ -507,19 +507,20 @@ fn segment_pose(a: DVec3, b: DVec3) -> (DVec3, DQuat) {
     )
 }
 
-pub(crate) fn to_array(v: DVec3) -> [f64; 3] {
+fn to_array(v: DVec3) -> [f64; 3] {
     v.to_array()
 }
 
-pub(crate) fn from_array(v: [f64; 3]) -> DVec3 {
+fn from_array(v: [f64; 3]) -> DVec3 {
     DVec3::from_array(v)
 }
 
 /// glam stores quaternions as x, y, z, w; ODE as w, x, y, z.
-pub(crate) fn to_quat(q: DQuat) -> [f64; 4] {
+pub fn to_quat(q: DQuat) -> [f64; 4] {
     [q.w, q.x, q.y, q.z]
 }
 
-pub(crate) fn from_quat(q: [f64; 4]) -> DQuat {
+/// An ODE quaternion (w, x, y, z) as glam's.
+pub fn from_quat(q: [f64; 4]) -> DQuat {
     DQuat::from_xyzw(q[1], q[2], q[3], q[0])
 }

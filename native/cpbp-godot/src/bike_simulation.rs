@@ -1,0 +1,394 @@
+//! `BikeSimulation`: the ODE bike and rider in a Godot scene.
+
+use std::sync::Arc;
+
+use cpbp_core::bike::{
+    from_quat, manual_controls, Controls, CrashCause, DriveInput, Part, Shape, CONTROL_DIM,
+};
+use cpbp_core::simulation::{Simulation, SimulationConfig, StepEvents};
+use cpbp_core::terrain::Terrain;
+use glam::{DQuat, DVec3};
+use godot::classes::{INode3D, Node3D};
+use godot::prelude::*;
+
+use crate::convert::{basis, placement, transform, vector3};
+use crate::terrain_import;
+
+/// Simulates the bike and its rider with ODE on the level's static collision shapes.
+///
+/// It builds at its own global transform (facing −z) when it enters the tree, steps one
+/// control period (1/30 s) at a time from `_physics_process`, so pausing the tree pauses
+/// it, and interpolates body transforms between steps for smooth visuals.
+#[derive(GodotClass)]
+#[class(base=Node3D)]
+pub struct BikeSimulation {
+    /// Node whose descendants' static collision shapes form the terrain.
+    #[export]
+    terrain_root: NodePath,
+    /// Speed (km/h) full throttle drives towards.
+    #[export(range = (1.0, 90.0))]
+    max_speed_kmh: f64,
+    /// ODE steps per control step (more: stiffer joints, slower).
+    #[export(range = (1.0, 16.0))]
+    substeps: i32,
+    sim: Option<Simulation>,
+    accumulator: f64,
+    previous_poses: Vec<(DVec3, DQuat)>,
+    drive: DriveInput,
+    steer_rate: f64,
+    raw_controls: Option<Controls>,
+    base: Base<Node3D>,
+}
+
+#[godot_api]
+impl INode3D for BikeSimulation {
+    fn init(base: Base<Node3D>) -> Self {
+        Self {
+            terrain_root: NodePath::from(".."),
+            max_speed_kmh: 25.0,
+            substeps: 4,
+            sim: None,
+            accumulator: 0.0,
+            previous_poses: Vec::new(),
+            drive: DriveInput::default(),
+            steer_rate: 0.0,
+            raw_controls: None,
+            base,
+        }
+    }
+
+    fn ready(&mut self) {
+        let Some(spawn) = placement(&self.base().get_global_transform()) else {
+            godot_error!(
+                "BikeSimulation: its transform mirrors or flattens the bike; use a positive scale"
+            );
+            return;
+        };
+        let Some(terrain) = self.import_terrain() else {
+            return;
+        };
+        let config = SimulationConfig {
+            substeps: self.substeps.clamp(1, 16) as usize,
+            ..SimulationConfig::default()
+        };
+        self.sim = Some(Simulation::new(config, terrain, spawn));
+        self.remember_poses();
+    }
+
+    fn physics_process(&mut self, delta: f64) {
+        let Some(dt) = self.sim.as_ref().map(|s| s.config().control_dt) else {
+            return;
+        };
+        // Fixed control steps whatever the tick rate; at most 4 per tick, so a stall does
+        // not snowball into a burst of steps.
+        self.accumulator = (self.accumulator + delta).min(4.0 * dt);
+        while self.accumulator >= dt {
+            self.accumulator -= dt;
+            self.remember_poses();
+            let events = self.step_once();
+            self.emit(events);
+        }
+    }
+}
+
+#[godot_api]
+impl BikeSimulation {
+    /// The ride crashed: a part other than a wheel touched the ground, or it leaned over.
+    #[signal]
+    fn crashed(cause: GString);
+    /// A wheel touched the ground again after the bike was in the air.
+    #[signal]
+    fn landed();
+    /// The physics blew up and the bike was put back at its spawn point.
+    #[signal]
+    fn recovered(reason: GString);
+
+    /// Throttle and brake, each 0–1 (the rear wheel motor). Bad numbers count as released.
+    #[func]
+    fn set_drive(&mut self, throttle: f64, brake: f64) {
+        if !(throttle.is_finite() && brake.is_finite()) {
+            godot_warn!("BikeSimulation.set_drive: non-finite input ({throttle}, {brake}) treated as released");
+        }
+        self.drive = DriveInput {
+            throttle,
+            brake,
+            max_speed: self.max_speed_kmh / 3.6,
+        }
+        .sanitized();
+        self.raw_controls = None;
+    }
+
+    /// Steering rate (rad/s, positive left) while driving without a controller; 0 lets the
+    /// bar spring back to centre.
+    #[func]
+    fn set_steer_rate(&mut self, rate: f64) {
+        if !rate.is_finite() {
+            godot_warn!("BikeSimulation.set_steer_rate: non-finite rate treated as 0");
+        }
+        self.steer_rate = if rate.is_finite() {
+            rate.clamp(-4.0, 4.0)
+        } else {
+            0.0
+        };
+        self.raw_controls = None;
+    }
+
+    /// Sets all 18 controls directly (13 joint velocities, 5 force tunings); values are
+    /// clamped to their bounds. Returns false, changing nothing, for a wrong length.
+    #[func]
+    fn set_controls(&mut self, values: PackedFloat64Array) -> bool {
+        let Ok(raw) = <[f64; CONTROL_DIM]>::try_from(values.as_slice()) else {
+            godot_error!(
+                "BikeSimulation.set_controls: expected {CONTROL_DIM} values, got {}",
+                values.len()
+            );
+            return false;
+        };
+        let (controls, changed) = Controls::sanitized(&raw);
+        if changed > 0 {
+            godot_warn!("BikeSimulation.set_controls: {changed} value(s) were out of range or not numbers and were clamped");
+        }
+        self.raw_controls = Some(controls);
+        true
+    }
+
+    /// Puts the bike at rest at `spawn` (a transform facing −z); it becomes the spawn point.
+    #[func]
+    fn reset_to(&mut self, spawn: Transform3D) {
+        let Some(placement) = placement(&spawn) else {
+            godot_error!("BikeSimulation.reset_to: the transform mirrors or flattens the bike");
+            return;
+        };
+        if let Some(sim) = &mut self.sim {
+            sim.reset_to(placement);
+        }
+        self.accumulator = 0.0;
+        self.remember_poses();
+    }
+
+    /// Stands a fallen bike up where it lies.
+    #[func]
+    fn lift_upright(&mut self) {
+        if let Some(sim) = &mut self.sim {
+            sim.lift_upright();
+        }
+        self.remember_poses();
+    }
+
+    /// Reads the terrain again (after a level changed); returns false when it could not.
+    #[func]
+    fn rebuild_terrain(&mut self) -> bool {
+        let Some(terrain) = self.import_terrain() else {
+            return false;
+        };
+        match &mut self.sim {
+            Some(sim) => sim.set_terrain(terrain),
+            None => return false,
+        }
+        true
+    }
+
+    /// True once the simulation runs (the terrain was read and the bike built).
+    #[func]
+    fn is_running(&self) -> bool {
+        self.sim.is_some()
+    }
+
+    /// Forward speed in m/s.
+    #[func]
+    fn get_speed(&self) -> f64 {
+        self.sim
+            .as_ref()
+            .map_or(0.0, |s| s.bike().forward_speed(s.world(), s.up()))
+    }
+
+    /// Lean angle in radians, positive to the right.
+    #[func]
+    fn get_lean(&self) -> f64 {
+        self.sim
+            .as_ref()
+            .map_or(0.0, |s| s.bike().lean(s.world(), s.up()))
+    }
+
+    /// Steering angle in radians, positive to the left.
+    #[func]
+    fn get_steering_angle(&self) -> f64 {
+        self.sim
+            .as_ref()
+            .map_or(0.0, |s| s.bike().steering(s.world()).0)
+    }
+
+    #[func]
+    fn is_rear_wheel_grounded(&self) -> bool {
+        self.sim
+            .as_ref()
+            .is_some_and(|s| s.bike().wheel_contacts(s.world()).0)
+    }
+
+    #[func]
+    fn is_front_wheel_grounded(&self) -> bool {
+        self.sim
+            .as_ref()
+            .is_some_and(|s| s.bike().wheel_contacts(s.world()).1)
+    }
+
+    /// True after a crash, until the next reset or lift.
+    #[func]
+    fn is_crashed(&self) -> bool {
+        self.sim.as_ref().is_some_and(|s| s.crashed().is_some())
+    }
+
+    /// Centre of mass of bike and rider.
+    #[func]
+    fn get_center_of_mass(&self) -> Vector3 {
+        self.sim.as_ref().map_or(Vector3::ZERO, |s| {
+            vector3(s.bike().center_of_mass(s.world()))
+        })
+    }
+
+    /// Number of rigid bodies (9).
+    #[func]
+    fn get_body_count(&self) -> i64 {
+        Part::ALL.len() as i64
+    }
+
+    /// Name of body `index` (`rear_wheel`, `frame`, `torso`, …).
+    #[func]
+    fn get_body_name(&self, index: i64) -> GString {
+        part(index).map_or(GString::new(), |p| GString::from(p.name()))
+    }
+
+    /// Global transform of body `index`, interpolated between the last two steps.
+    #[func]
+    fn get_body_transform(&self, index: i64) -> Transform3D {
+        let (Some(sim), Some(part)) = (&self.sim, part(index)) else {
+            return Transform3D::IDENTITY;
+        };
+        let body = sim.bike().body(part);
+        let now = (
+            dvec3_of(sim.world().body_position(body)),
+            from_quat(sim.world().body_quaternion(body)),
+        );
+        let (before_position, before_rotation) = self
+            .previous_poses
+            .get(part as usize)
+            .copied()
+            .unwrap_or(now);
+        let alpha = (self.accumulator / sim.config().control_dt).clamp(0.0, 1.0);
+        transform(
+            before_position.lerp(now.0, alpha),
+            before_rotation.slerp(now.1, alpha),
+        )
+    }
+
+    /// The collision shapes, for drawing the physical model: one Dictionary per shape with
+    /// `body` (index), `kind` ("sphere", "box", "capsule"), `radius`, `length` (capsule,
+    /// without caps, along local z), `size` (box) and `offset` (Transform3D in the body).
+    #[func]
+    fn get_shapes(&self) -> Array<Dictionary<Variant, Variant>> {
+        let mut shapes = Array::new();
+        let Some(sim) = &self.sim else { return shapes };
+        for s in sim.bike().shapes() {
+            let mut d: Dictionary<Variant, Variant> = Dictionary::new();
+            d.set(&"body".to_variant(), &(s.part as i64).to_variant());
+            d.set(
+                &"offset".to_variant(),
+                &Transform3D::new(basis(s.rotation), vector3(s.offset)).to_variant(),
+            );
+            match s.shape {
+                Shape::Sphere { radius } => {
+                    d.set(&"kind".to_variant(), &"sphere".to_variant());
+                    d.set(&"radius".to_variant(), &radius.to_variant());
+                }
+                Shape::Cuboid { size } => {
+                    d.set(&"kind".to_variant(), &"box".to_variant());
+                    d.set(&"size".to_variant(), &vector3(size).to_variant());
+                }
+                Shape::Capsule { radius, length } => {
+                    d.set(&"kind".to_variant(), &"capsule".to_variant());
+                    d.set(&"radius".to_variant(), &radius.to_variant());
+                    d.set(&"length".to_variant(), &length.to_variant());
+                }
+            }
+            shapes.push(&d);
+        }
+        shapes
+    }
+}
+
+impl BikeSimulation {
+    fn import_terrain(&mut self) -> Option<Arc<Terrain>> {
+        let root_path = self.terrain_root.clone();
+        let Some(root) = self.base().get_node_or_null(&root_path) else {
+            godot_error!("BikeSimulation: terrain root '{root_path}' not found");
+            return None;
+        };
+        let (pieces, errors) = terrain_import::collect(&root);
+        for error in &errors {
+            godot_error!("BikeSimulation: terrain shape skipped: {error}");
+        }
+        match Terrain::new(pieces) {
+            Ok(terrain) => Some(Arc::new(terrain)),
+            Err(error) => {
+                godot_error!("BikeSimulation: broken level geometry: {error}");
+                None
+            }
+        }
+    }
+
+    fn step_once(&mut self) -> StepEvents {
+        let Some(sim) = &mut self.sim else {
+            return StepEvents::default();
+        };
+        let controls = match self.raw_controls {
+            Some(controls) => controls,
+            None => manual_controls(sim.bike(), sim.world(), &self.drive, self.steer_rate),
+        };
+        sim.set_controls(controls);
+        sim.step()
+    }
+
+    fn emit(&mut self, events: StepEvents) {
+        if let Some(cause) = events.crashed {
+            let text = match cause {
+                CrashCause::Touched(part) => format!("{} touched the ground", part.name()),
+                CrashCause::Leaned { lean } => format!("leaned over ({:.0}°)", lean.to_degrees()),
+            };
+            self.signals().crashed().emit(&GString::from(text.as_str()));
+        }
+        if events.landed {
+            self.signals().landed().emit();
+        }
+        if let Some(reason) = events.recovered_from {
+            godot_warn!("BikeSimulation: the physics blew up ({reason})");
+            self.signals()
+                .recovered()
+                .emit(&GString::from(reason.as_str()));
+            self.remember_poses();
+        }
+    }
+
+    fn remember_poses(&mut self) {
+        let Some(sim) = &self.sim else { return };
+        self.previous_poses = Part::ALL
+            .iter()
+            .map(|p| {
+                let body = sim.bike().body(*p);
+                (
+                    dvec3_of(sim.world().body_position(body)),
+                    from_quat(sim.world().body_quaternion(body)),
+                )
+            })
+            .collect();
+    }
+}
+
+fn part(index: i64) -> Option<Part> {
+    usize::try_from(index)
+        .ok()
+        .and_then(|i| Part::ALL.get(i).copied())
+}
+
+fn dvec3_of(v: [f64; 3]) -> DVec3 {
+    DVec3::from_array(v)
+}

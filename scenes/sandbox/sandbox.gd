@@ -1,0 +1,35 @@
+extends Node3D
+## The sandbox: flat ground, a ramp and bumps to try the bike on. Shows the controls and
+## what the bike is doing; Esc goes back to the title screen.
+
+const TITLE := "res://scenes/ui/title_screen.tscn"
+
+@onready var _bike: Node = $Bike
+@onready var _status: Label = %Status
+
+
+func _ready() -> void:
+	_bike.connect(&"crashed", _on_crashed)
+
+
+func _process(_delta: float) -> void:
+	if not _bike.call(&"is_running"):
+		_status.text = "The simulation is not running (see the errors above)."
+		return
+	var speed: float = _bike.call(&"get_speed")
+	var lean: float = _bike.call(&"get_lean")
+	var steer: float = _bike.call(&"get_steering_angle")
+	var state := "CRASHED: R to restart, T to lift" if _bike.call(&"is_crashed") else ""
+	_status.text = (
+		"speed %5.1f km/h   lean %+5.1f°   steering %+5.1f°   %s"
+		% [speed * 3.6, rad_to_deg(lean), rad_to_deg(steer), state]
+	)
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if event.is_action_pressed(&"ui_cancel"):
+		get_tree().change_scene_to_file(TITLE)
+
+
+func _on_crashed(cause: String) -> void:
+	print("sandbox: crashed: %s" % cause)

@@ -1,0 +1,36 @@
+class_name SandboxDriver
+extends Node
+## Drives a BikeSimulation from the input actions, without a balance controller: the
+## triggers (W/S) drive and brake, A/D turn the bar (it springs back when released),
+## R puts the bike back at the start, T stands it up where it lies.
+
+## The BikeSimulation to drive.
+@export var bike_path: NodePath
+## Steering rate (rad/s) at full stick.
+@export var steer_speed := 0.6
+
+var _bike: Node
+var _spawn: Transform3D
+
+
+func _ready() -> void:
+	_bike = get_node_or_null(bike_path)
+	if _bike == null:
+		push_error("SandboxDriver: no bike at %s" % bike_path)
+		set_physics_process(false)
+		return
+	_spawn = (_bike as Node3D).global_transform
+
+
+func _physics_process(_delta: float) -> void:
+	_bike.call(
+		&"set_drive", Input.get_action_strength(&"throttle"), Input.get_action_strength(&"brake")
+	)
+	_bike.call(&"set_steer_rate", Input.get_axis(&"steer_right", &"steer_left") * steer_speed)
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if event.is_action_pressed(&"reset_bike"):
+		_bike.call(&"reset_to", _spawn)
+	elif event.is_action_pressed(&"lift_bike"):
+		_bike.call(&"lift_upright")

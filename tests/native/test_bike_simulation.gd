@@ -1,0 +1,87 @@
+extends TestCase
+## The BikeSimulation node: signals, reset, pause, and bad input handled without a crash.
+
+var _level: Node3D
+var _bike: BikeSimulation
+
+
+func before_each() -> void:
+	_level = Node3D.new()
+	var ground := StaticBody3D.new()
+	var shape := CollisionShape3D.new()
+	shape.shape = WorldBoundaryShape3D.new()
+	ground.add_child(shape)
+	_level.add_child(ground)
+	add_child(_level)
+
+
+func after_each() -> void:
+	get_tree().paused = false
+	_level.queue_free()
+
+
+func test_a_drop_lands_once() -> void:
+	await _spawn(Transform3D(Basis(), Vector3(0, 1.2, 0)))
+	var landings: Array[int] = [0]
+	_bike.landed.connect(func() -> void: landings[0] += 1)
+	await wait_physics_frames(90)
+	assert_eq(landings[0], 1)
+	assert_true(_bike.is_rear_wheel_grounded() and _bike.is_front_wheel_grounded())
+
+
+func test_a_bike_laid_on_its_side_crashes() -> void:
+	# Rolled 80° about its forward axis (−z): it falls and something but a wheel hits.
+	await _spawn(Transform3D(Basis(Vector3.FORWARD, deg_to_rad(80)), Vector3(0, 0.9, 0)))
+	var causes: Array[String] = []
+	_bike.crashed.connect(func(cause: String) -> void: causes.append(cause))
+	await wait_physics_frames(90)
+	assert_eq(causes.size(), 1, "crashed once: %s" % [causes])
+	assert_true(_bike.is_crashed())
+	_bike.lift_upright()
+	assert_false(_bike.is_crashed(), "lifting clears the crash")
+
+
+func test_throttle_drives_forward_and_reset_returns_to_the_spawn() -> void:
+	var spawn := Transform3D(Basis(), Vector3(0, 0.02, 0))
+	await _spawn(spawn)
+	_bike.set_drive(1.0, 0.0)
+	await wait_physics_frames(60)
+	assert_gt(_bike.get_speed(), 2.0, "speed after 1 s of throttle")
+	assert_lt(_bike.get_center_of_mass().z, -1.0, "moved along −z, the way it faces")
+	_bike.reset_to(spawn)
+	assert_almost_eq(_bike.get_speed(), 0.0, 1e-6)
+	assert_almost_eq(_bike.get_body_transform(3).origin, Vector3(0, 0.57, 0.05), 0.01)
+
+
+func test_pausing_the_tree_pauses_the_simulation() -> void:
+	await _spawn(Transform3D(Basis(), Vector3(0, 0.5, 0)))
+	get_tree().paused = true
+	var before := _bike.get_body_transform(0)
+	await wait_physics_frames(20)
+	assert_eq(_bike.get_body_transform(0), before)
+	get_tree().paused = false
+	await wait_physics_frames(20)
+	assert_ne(_bike.get_body_transform(0), before)
+
+
+func test_bad_input_is_rejected_or_clamped_without_a_crash() -> void:
+	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
+	_bike.set_drive(NAN, INF)
+	_bike.set_steer_rate(-INF)
+	expect_error("expected 18 values, got 3")
+	assert_false(_bike.set_controls(PackedFloat64Array([1, 2, 3])))
+	var wild := PackedFloat64Array()
+	for i: int in 18:
+		wild.append([NAN, INF, -1e30, 5.0][i % 4])
+	assert_true(_bike.set_controls(wild), "out-of-range values are clamped, not refused")
+	assert_eq(_bike.get_body_transform(99), Transform3D.IDENTITY)
+	assert_eq(_bike.get_body_name(-1), "")
+	await wait_physics_frames(30)
+	assert_true(_bike.get_body_transform(0).origin.is_finite())
+
+
+func _spawn(where: Transform3D) -> void:
+	_bike = BikeSimulation.new()
+	_bike.transform = where
+	_level.add_child(_bike)
+	await wait_physics_frames(1)
