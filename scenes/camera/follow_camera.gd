@@ -31,7 +31,11 @@ func _process(delta: float) -> void:
 	var forward := frame.basis.x
 	forward.y = 0.0
 	if forward.length() > 0.1:
-		_heading = _heading.slerp(forward.normalized(), clampf(stiffness * delta, 0.0, 1.0))
+		# A normalised lerp, not slerp: Godot's slerp normalises a near-zero cross product
+		# in single precision when the headings are almost equal, and then errors.
+		var blended := _heading.lerp(forward.normalized(), clampf(stiffness * delta, 0.0, 1.0))
+		if blended.length() > 1e-3:
+			_heading = blended.normalized()
 	var right := _heading.cross(Vector3.UP).normalized()
 	var wanted := centre - _heading * offset.z + right * offset.x + Vector3.UP * offset.y
 	var catch_up := clampf(stiffness * delta, 0.0, 1.0) if _placed else 1.0

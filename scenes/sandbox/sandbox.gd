@@ -18,11 +18,16 @@ func _process(_delta: float) -> void:
 		return
 	var speed: float = _bike.call(&"get_speed")
 	var lean: float = _bike.call(&"get_lean")
+	var wanted: float = _bike.call(&"get_desired_lean")
 	var steer: float = _bike.call(&"get_steering_angle")
-	var state := "CRASHED: R to restart, T to lift" if _bike.call(&"is_crashed") else ""
+	var state := ""
+	if _bike.call(&"is_crashed"):
+		state = "CRASHED: R to restart, T to lift"
+	elif _bike.call(&"is_waiting_for_throttle"):
+		state = "press W / RT to ride"
+	var numbers := [speed * 3.6, rad_to_deg(lean), rad_to_deg(wanted), rad_to_deg(steer), state]
 	_status.text = (
-		"speed %5.1f km/h   lean %+5.1f°   steering %+5.1f°   %s"
-		% [speed * 3.6, rad_to_deg(lean), rad_to_deg(steer), state]
+		"speed %5.1f km/h   lean %+5.1f° (wanted %+5.1f°)   steering %+5.1f°   %s" % numbers
 	)
 
 

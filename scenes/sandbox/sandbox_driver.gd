@@ -1,12 +1,13 @@
 class_name SandboxDriver
 extends Node
-## Drives a BikeSimulation from the input actions, without a balance controller: the
-## triggers (W/S) drive and brake, A/D turn the bar (it springs back when released),
-## R puts the bike back at the start, T stands it up where it lies.
+## Drives a BikeSimulation from the input actions: the triggers (W/S) drive and brake,
+## the stick (A/D) asks for a turn, which the bike's controller turns into a lean (with
+## the bike's own counter-steering); R puts the bike back at the start, T stands it up
+## where it lies.
 
 ## The BikeSimulation to drive.
 @export var bike_path: NodePath
-## Steering rate (rad/s) at full stick.
+## Steering rate (rad/s) at full stick when the bike has no controller (manual mode).
 @export var steer_speed := 0.6
 
 var _bike: Node
@@ -26,7 +27,9 @@ func _physics_process(_delta: float) -> void:
 	_bike.call(
 		&"set_drive", Input.get_action_strength(&"throttle"), Input.get_action_strength(&"brake")
 	)
-	_bike.call(&"set_steer_rate", Input.get_axis(&"steer_right", &"steer_left") * steer_speed)
+	var stick := Input.get_axis(&"steer_left", &"steer_right")
+	_bike.call(&"set_turn", stick)
+	_bike.call(&"set_steer_rate", -stick * steer_speed)
 
 
 func _unhandled_input(event: InputEvent) -> void:

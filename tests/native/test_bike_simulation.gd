@@ -6,12 +6,7 @@ var _bike: BikeSimulation
 
 
 func before_each() -> void:
-	_level = Node3D.new()
-	var ground := StaticBody3D.new()
-	var shape := CollisionShape3D.new()
-	shape.shape = WorldBoundaryShape3D.new()
-	ground.add_child(shape)
-	_level.add_child(ground)
+	_level = FlatLevel.create()
 	add_child(_level)
 
 

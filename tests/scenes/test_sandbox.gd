@@ -26,6 +26,27 @@ func test_the_bike_and_its_bodies_are_shown() -> void:
 	assert_eq(view.get_child_count(), _bike.get_shapes().size())
 
 
+func test_the_bike_waits_upright_for_the_first_throttle() -> void:
+	await wait_physics_frames(180)
+	assert_true(_bike.is_waiting_for_throttle())
+	assert_almost_eq(_bike.get_lean(), 0.0, 1e-6, "standing as placed")
+
+
+func test_the_stick_turns_the_bike_through_its_lean() -> void:
+	Input.action_press(&"throttle")
+	# Past the bumps (z = −12, −17), onto the open ground before the ramp (z = −45).
+	await wait_physics_frames(200)
+	var heading_before := _frame_heading()
+	Input.action_press(&"steer_left", 0.6)
+	await wait_physics_frames(120)
+	assert_lt(_bike.get_lean(), deg_to_rad(-5.0), "leans into a left turn")
+	Input.action_release(&"steer_left")
+	await wait_physics_frames(90)
+	assert_false(_bike.is_crashed())
+	var turned := heading_before.signed_angle_to(_frame_heading(), Vector3.UP)
+	assert_gt(turned, deg_to_rad(20.0), "turned left (anticlockwise seen from above)")
+
+
 func test_the_throttle_action_drives_and_the_brake_stops() -> void:
 	Input.action_press(&"throttle")
 	await wait_physics_frames(60)
@@ -36,6 +57,11 @@ func test_the_throttle_action_drives_and_the_brake_stops() -> void:
 	await wait_physics_frames(60)
 	# Only the rear wheel brakes (as in the thesis): about 0.3 g, so 1 s takes off ~45 %.
 	assert_lt(_bike.get_speed(), speed * 0.7, "braking slows the bike")
+
+
+func _frame_heading() -> Vector3:
+	var forward := _bike.get_body_transform(3).basis.x
+	return Vector3(forward.x, 0.0, forward.z).normalized()
 
 
 func test_the_reset_action_returns_to_the_start() -> void:

@@ -3,6 +3,7 @@
 
 pub mod bike;
 mod build_info;
+pub mod control;
 pub mod simulation;
 pub mod terrain;
 

@@ -183,11 +183,19 @@ impl Simulation {
         self.spawn = spawn;
     }
 
-    /// Height (along up) of the lower wheel's contact point.
+    /// Height (along up) of the lowest point of either tyre: for a torus of outer radius r
+    /// and crown ρ about axle a, centre c: c·up − ((r − ρ)·√(1 − (a·up)²) + ρ). Exact whether
+    /// the wheel stands or lies on its side.
     fn lowest_wheel_height(&self, up: DVec3) -> f64 {
-        let r = self.config.bike.wheel_radius;
+        let (r, crown) = (self.config.bike.wheel_radius, self.config.bike.tyre_crown);
         [Part::RearWheel, Part::FrontWheel]
-            .map(|p| DVec3::from_array(self.world.body_position(self.bike.body(p))).dot(up) - r)
+            .map(|p| {
+                let body = self.bike.body(p);
+                let centre = DVec3::from_array(self.world.body_position(body));
+                let axle = crate::bike::from_quat(self.world.body_quaternion(body)) * DVec3::Z;
+                let tilt = (1.0 - axle.dot(up).powi(2)).max(0.0).sqrt();
+                centre.dot(up) - ((r - crown) * tilt + crown)
+            })
             .into_iter()
             .fold(f64::INFINITY, f64::min)
     }

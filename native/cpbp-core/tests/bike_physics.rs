@@ -127,18 +127,24 @@ fn at_20_kmh_steering_left_makes_the_bike_lean_right() {
     let mut controls = Controls::default();
     controls.set(index::REAR_WHEEL, speed / bike.params().wheel_radius);
     controls.set(index::FORCE + 1, 0.3);
+    let mut steer_during_impulse = 0.0;
     for i in 0..steps(0.8) {
         let t = i as f64 * DT;
-        // A short steering impulse to the left, then the bar is held.
-        controls.set(
-            index::STEER,
-            if (0.2..0.35).contains(&t) { 1.0 } else { 0.0 },
-        );
+        // A short steering impulse to the left; afterwards the bar is left to itself
+        // (trail then turns it into the lean, as on a real bike).
+        let impulse = (0.2..0.35).contains(&t);
+        controls.set(index::STEER, if impulse { 1.0 } else { 0.0 });
+        controls.set(index::FORCE, if t < 0.35 { 1.0 } else { 0.05 });
         step(&mut world, &bike, &mut controls);
+        if impulse {
+            steer_during_impulse = bike.steering(&world).0;
+        }
     }
-    let (steer, _) = bike.steering(&world);
     let lean = bike.lean(&world, UP);
-    assert!(steer > 0.0, "steering should point left, is {steer}");
+    assert!(
+        steer_during_impulse > 2f64.to_radians(),
+        "the bar turned left by {steer_during_impulse}"
+    );
     assert!(
         lean > 2f64.to_radians(),
         "lean should be to the right, is {}°",
@@ -182,5 +188,30 @@ fn a_placement_turns_and_moves_the_whole_bike() {
     assert!(
         (rear - DVec3::new(-0.695, 0.30, 0.0)).length() < 1e-9,
         "rear wheel at {rear}"
+    );
+}
+
+#[test]
+fn the_measured_lean_rate_is_the_derivative_of_the_lean() {
+    // Placed 5° off upright and left alone, the bike tips over: compare the measured lean
+    // rate with the lean's change over one step.
+    let yaw = DQuat::from_rotation_y(0.4);
+    let leaning = DQuat::from_axis_angle(yaw * DVec3::X, 5f64.to_radians()) * yaw;
+    let (mut world, bike) = flat_world(Placement {
+        position: DVec3::new(0.0, 0.03, 0.0),
+        rotation: leaning,
+    });
+    let mut controls = Controls::default();
+    for _ in 0..steps(0.6) {
+        step(&mut world, &bike, &mut controls);
+    }
+    let before = bike.lean(&world, UP);
+    let rate = bike.lean_rate(&world, UP);
+    step(&mut world, &bike, &mut controls);
+    let finite_difference = (bike.lean(&world, UP) - before) / DT;
+    assert!(rate.abs() > 0.05, "the bike should be tipping, rate {rate}");
+    assert!(
+        (rate - finite_difference).abs() < 0.1 * rate.abs(),
+        "measured {rate}, difference {finite_difference}"
     );
 }

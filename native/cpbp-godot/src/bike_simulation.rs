@@ -5,6 +5,7 @@ use std::sync::Arc;
 use cpbp_core::bike::{
     from_quat, manual_controls, Controls, CrashCause, DriveInput, Part, Shape, CONTROL_DIM,
 };
+use cpbp_core::control::{ArcadeController, TurnIntent};
 use cpbp_core::simulation::{Simulation, SimulationConfig, StepEvents};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
@@ -31,11 +32,23 @@ pub struct BikeSimulation {
     /// ODE steps per control step (more: stiffer joints, slower).
     #[export(range = (1.0, 16.0))]
     substeps: i32,
+    /// Who balances and steers: `arcade` (the PD controller of the thesis, §4.3.2) or
+    /// `manual` (nobody: the bar follows `set_steer_rate`, for inspecting the physics).
+    #[export(enum = (Arcade = 0, Manual = 1))]
+    controller: i32,
+    /// Hold the bike still where it was placed until the first throttle (and again after
+    /// each reset): standing still, no steering can balance a bike, so the ride starts
+    /// when the player does.
+    #[export]
+    wait_for_throttle: bool,
+    started: bool,
     sim: Option<Simulation>,
     accumulator: f64,
     previous_poses: Vec<(DVec3, DQuat)>,
     drive: DriveInput,
     steer_rate: f64,
+    turn: f64,
+    arcade: ArcadeController,
     raw_controls: Option<Controls>,
     base: Base<Node3D>,
 }
@@ -47,11 +60,16 @@ impl INode3D for BikeSimulation {
             terrain_root: NodePath::from(".."),
             max_speed_kmh: 25.0,
             substeps: 4,
+            controller: 0,
+            wait_for_throttle: false,
+            started: false,
             sim: None,
             accumulator: 0.0,
             previous_poses: Vec::new(),
             drive: DriveInput::default(),
             steer_rate: 0.0,
+            turn: 0.0,
+            arcade: ArcadeController::default(),
             raw_controls: None,
             base,
         }
@@ -82,6 +100,12 @@ impl INode3D for BikeSimulation {
         // Fixed control steps whatever the tick rate; at most 4 per tick, so a stall does
         // not snowball into a burst of steps.
         self.accumulator = (self.accumulator + delta).min(4.0 * dt);
+        self.started |=
+            !self.wait_for_throttle || self.drive.throttle > 0.0 || self.raw_controls.is_some();
+        if !self.started {
+            self.accumulator = 0.0;
+            return;
+        }
         while self.accumulator >= dt {
             self.accumulator -= dt;
             self.remember_poses();
@@ -116,6 +140,30 @@ impl BikeSimulation {
         }
         .sanitized();
         self.raw_controls = None;
+    }
+
+    /// The player's turn command in [−1, 1], positive right: it sets the curvature of the
+    /// path, and the lean the controller aims for follows from it and the speed (eq. 4.4).
+    #[func]
+    fn set_turn(&mut self, command: f64) {
+        if !command.is_finite() {
+            godot_warn!("BikeSimulation.set_turn: non-finite command treated as 0");
+        }
+        self.turn = if command.is_finite() {
+            command.clamp(-1.0, 1.0)
+        } else {
+            0.0
+        };
+        self.raw_controls = None;
+    }
+
+    /// The lean (rad, positive right) the controller aims for now.
+    #[func]
+    fn get_desired_lean(&self) -> f64 {
+        self.sim.as_ref().map_or(0.0, |s| {
+            let speed = s.bike().forward_speed(s.world(), s.up());
+            TurnIntent::default().lean_for(self.turn, speed, s.config().gravity.length())
+        })
     }
 
     /// Steering rate (rad/s, positive left) while driving without a controller; 0 lets the
@@ -162,6 +210,8 @@ impl BikeSimulation {
         if let Some(sim) = &mut self.sim {
             sim.reset_to(placement);
         }
+        self.arcade.reset();
+        self.started = false;
         self.accumulator = 0.0;
         self.remember_poses();
     }
@@ -172,6 +222,7 @@ impl BikeSimulation {
         if let Some(sim) = &mut self.sim {
             sim.lift_upright();
         }
+        self.arcade.reset();
         self.remember_poses();
     }
 
@@ -186,6 +237,12 @@ impl BikeSimulation {
             None => return false,
         }
         true
+    }
+
+    /// True while the bike stands waiting for the first throttle (`wait_for_throttle`).
+    #[func]
+    fn is_waiting_for_throttle(&self) -> bool {
+        self.sim.is_some() && !self.started && self.wait_for_throttle
     }
 
     /// True once the simulation runs (the terrain was read and the bike built).
@@ -337,12 +394,24 @@ impl BikeSimulation {
     }
 
     fn step_once(&mut self) -> StepEvents {
+        let desired_lean = self.get_desired_lean();
         let Some(sim) = &mut self.sim else {
             return StepEvents::default();
         };
-        let controls = match self.raw_controls {
-            Some(controls) => controls,
-            None => manual_controls(sim.bike(), sim.world(), &self.drive, self.steer_rate),
+        let controls = match (self.raw_controls, self.controller) {
+            (Some(controls), _) => controls,
+            (None, 1) => manual_controls(sim.bike(), sim.world(), &self.drive, self.steer_rate),
+            (None, _) => {
+                let dt = sim.config().control_dt;
+                self.arcade.controls(
+                    sim.bike(),
+                    sim.world(),
+                    desired_lean,
+                    &self.drive,
+                    sim.up(),
+                    dt,
+                )
+            }
         };
         sim.set_controls(controls);
         sim.step()
@@ -360,6 +429,7 @@ impl BikeSimulation {
             self.signals().landed().emit();
         }
         if let Some(reason) = events.recovered_from {
+            self.arcade.reset();
             godot_warn!("BikeSimulation: the physics blew up ({reason})");
             self.signals()
                 .recovered()

@@ -130,11 +130,12 @@ impl Bike {
             rest: Vec::new(),
             shapes: Vec::new(),
         };
-        let r = params.wheel_radius;
+        let (r, crown) = (params.wheel_radius, params.tyre_crown);
         let rear = builder.wheel(
             Part::RearWheel,
             params.rear_wheel_mass,
             r,
+            crown,
             0.13,
             l.rear_axle,
         );
@@ -142,6 +143,7 @@ impl Bike {
             Part::FrontWheel,
             params.front_wheel_mass,
             r,
+            crown,
             0.11,
             l.front_axle,
         );
@@ -328,6 +330,14 @@ impl Bike {
         bike_up.dot(right).atan2(bike_up.dot(up))
     }
 
+    /// Lean rate (rad/s, positive when leaning further right): the frame's angular velocity
+    /// about its heading. Exact, unlike a difference of two leans a step apart.
+    pub fn lean_rate(&self, world: &World, up: DVec3) -> f64 {
+        let spin = from_array(world.body_angular_velocity(self.body(Part::Frame)));
+        // Tipping up towards right (= heading × up) is a turn about up × right = heading.
+        spin.dot(self.heading(world, up))
+    }
+
     /// Whether the rear and front wheels touched the ground in the last step.
     pub fn wheel_contacts(&self, world: &World) -> (bool, bool) {
         (
@@ -395,15 +405,23 @@ impl Builder<'_> {
         body
     }
 
-    fn wheel(&mut self, part: Part, mass: f64, radius: f64, width: f64, axle: DVec3) -> BodyId {
-        // Inertia of a disc about the axle (z); a sphere for contact, so the tyre's round
-        // profile keeps the contact under the wheel when it leans.
+    fn wheel(
+        &mut self,
+        part: Part,
+        mass: f64,
+        radius: f64,
+        crown: f64,
+        width: f64,
+        axle: DVec3,
+    ) -> BodyId {
+        // Inertia of a disc about the axle (z); contact through a torus tyre, so a leaning
+        // wheel touches the road in its own plane, offset by the crown's roundness only.
         let body = self.body(
             Mass::cylinder(mass, 2, radius, width),
             axle,
             DQuat::IDENTITY,
         );
-        self.world.add_sphere(radius, Some(body));
+        self.world.add_tyre(radius, crown, body);
         self.shape(part, Shape::Sphere { radius }, DVec3::ZERO, DQuat::IDENTITY);
         body
     }

@@ -24,6 +24,9 @@ pub struct BikeParams {
     pub wheelbase: f64,
     /// Wheel radius, tyre included (m).
     pub wheel_radius: f64,
+    /// Radius of the tyre's round cross-section (m): 110–150 mm wide road tyres have a
+    /// crown radius of about 50–75 mm. It decides where a leaning wheel touches the road.
+    pub tyre_crown: f64,
     /// Angle of the steering axis from vertical (rad).
     pub rake: f64,
     /// Ground distance from the front contact point back to where the steering axis meets
@@ -46,6 +49,7 @@ impl Default for BikeParams {
         Self {
             wheelbase: 1.39,
             wheel_radius: 0.30,
+            tyre_crown: 0.06,
             rake: 25f64.to_radians(),
             trail: 0.095,
             rear_wheel_mass: 14.0,

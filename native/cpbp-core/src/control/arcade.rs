@@ -1,0 +1,164 @@
+//! The arcade controller (thesis §4.3.2): a PD controller on the steering rate that makes
+//! the lean follow the desired lean, and in the air a steer towards the neutral angle the
+//! bike will need on landing. The rider holds the riding pose.
+//!
+//! Its state is two numbers, so it runs as well inside a rollout world as on the master
+//! (the combined controller warm-starts the planner with its trajectory).
+
+use glam::DVec3;
+
+use super::lean::TurnIntent;
+use crate::bike::{index, Bike, Controls, DriveInput, POSE_GAIN};
+use crate::ode::World;
+
+/// Gains of eq. 4.8 and of the steer towards neutral in the air.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ArcadeGains {
+    /// K_p (1/s): the thesis's tuned value, 10.
+    pub kp: f64,
+    /// K_d: the thesis's tuned value, 0.2.
+    pub kd: f64,
+    /// Prediction horizon p (s): how far ahead the lean is extrapolated. The thesis does
+    /// not give its value. Here 0.8 s keeps the bike up at 10–25 km/h; shorter horizons let
+    /// a slow weave grow at 10 km/h (0.3 s falls after 5 s, 0.6 s after 18 s).
+    pub prediction: f64,
+    /// How fast (1/s) the bar turns towards the neutral angle while airborne.
+    pub air_gain: f64,
+}
+
+impl Default for ArcadeGains {
+    fn default() -> Self {
+        Self {
+            kp: 10.0,
+            kd: 0.2,
+            prediction: 0.8,
+            air_gain: 6.0,
+        }
+    }
+}
+
+/// Steering rate ω of eq. 4.8 in the thesis's terms (positive steers into a positive
+/// lean): ω = (α + (α − α_o)/δt · p − α_d) K_p + (e − e_o)/δt K_d, with e the bracket.
+/// Returns ω and the new error e.
+pub fn eq_4_8(
+    lean: f64,
+    previous_lean: f64,
+    desired: f64,
+    previous_error: f64,
+    dt: f64,
+    g: &ArcadeGains,
+) -> (f64, f64) {
+    let error = lean + (lean - previous_lean) / dt * g.prediction - desired;
+    (error * g.kp + (error - previous_error) / dt * g.kd, error)
+}
+
+/// Neutral steering angle σ of eq. 4.12 for wheelbase `w`, lean θ, speed v and caster φ:
+/// σ = w cos θ tan θ g / (cos φ v²), the angle at which a bike at that lean and speed turns
+/// in balance (positive into the lean). Zero when standing still.
+pub fn eq_4_12(wheelbase: f64, lean: f64, speed: f64, caster: f64, gravity: f64) -> f64 {
+    if speed.abs() < 0.5 {
+        return 0.0;
+    }
+    wheelbase * lean.cos() * lean.tan() * gravity / (caster.cos() * speed * speed)
+}
+
+/// The arcade controller with its memory of the last step.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ArcadeController {
+    pub gains: ArcadeGains,
+    previous: Option<(f64, f64)>,
+}
+
+impl ArcadeController {
+    pub fn new(gains: ArcadeGains) -> Self {
+        Self {
+            gains,
+            previous: None,
+        }
+    }
+
+    /// Forgets the last step (after a reset).
+    pub fn reset(&mut self) {
+        self.previous = None;
+    }
+
+    /// Controls for one step of length `dt` towards `desired_lean` (rad, positive right),
+    /// with the rear wheel as `drive` asks.
+    pub fn controls(
+        &mut self,
+        bike: &Bike,
+        world: &World,
+        desired_lean: f64,
+        drive: &DriveInput,
+        up: DVec3,
+        dt: f64,
+    ) -> Controls {
+        let mut controls = Controls::default();
+        bike.pose_hold(world, POSE_GAIN, &mut controls);
+        drive.apply(bike.params().wheel_radius, &mut controls);
+        let lean = bike.lean(world, up);
+        // Eq. 4.8 takes the lean rate as (α − α_o)/δt. A difference of two measured leans
+        // a step apart amplifies the rider's jitter by p/δt (24× at p = 0.8 s); the frame's
+        // measured lean rate gives the same derivative without it, so α_o is taken as
+        // α − rate·δt.
+        let previous_lean = lean - bike.lean_rate(world, up) * dt;
+        let previous_error = self.previous.map_or(lean - desired_lean, |(_, e)| e);
+        let (omega, error) = eq_4_8(
+            lean,
+            previous_lean,
+            desired_lean,
+            previous_error,
+            dt,
+            &self.gains,
+        );
+        self.previous = Some((lean, error));
+        let (_, front_grounded) = bike.wheel_contacts(world);
+        // Our steering angle is positive to the left: steering into a right lean is negative.
+        let steer_rate = if front_grounded {
+            -omega
+        } else {
+            let p = bike.params();
+            let speed = bike.forward_speed(world, up);
+            let neutral = -eq_4_12(p.wheelbase, lean, speed, p.rake, 9.81);
+            self.gains.air_gain * (neutral - bike.steering(world).0)
+        };
+        controls.set(index::STEER, steer_rate);
+        controls
+    }
+}
+
+/// Lean the arcade controller aims for, from the player's stick and the current speed.
+pub fn desired_lean_from_stick(intent: &TurnIntent, stick: f64, speed: f64) -> f64 {
+    intent.lean_for(stick, speed, 9.81)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn eq_4_8_by_hand() {
+        // α = 0.10, α_o = 0.08, δt = 1/30, p = 0.2, α_d = 0: e = 0.10 + 0.6·0.2 = 0.22;
+        // e_o = 0.15: ω = 0.22·10 + (0.07·30)·0.2 = 2.2 + 0.42 = 2.62.
+        let gains = ArcadeGains {
+            prediction: 0.2,
+            ..ArcadeGains::default()
+        };
+        let (omega, error) = eq_4_8(0.10, 0.08, 0.0, 0.15, 1.0 / 30.0, &gains);
+        assert!((error - 0.22).abs() < 1e-12);
+        assert!((omega - 2.62).abs() < 1e-9, "{omega}");
+    }
+
+    #[test]
+    fn eq_4_12_by_hand() {
+        // w = 1.39, θ = 20°, v = 8 m/s, φ = 25°: σ = 1.39·cos20·tan20·9.81/(cos25·64)
+        // = 1.39·0.34202·9.81/(0.90631·64) = 0.08039 rad.
+        let sigma = eq_4_12(1.39, 20f64.to_radians(), 8.0, 25f64.to_radians(), 9.81);
+        assert!((sigma - 0.080_39).abs() < 1e-4, "{sigma}");
+        assert!(
+            eq_4_12(1.39, -0.3, 8.0, 0.4, 9.81) < 0.0,
+            "into a left lean"
+        );
+        assert_eq!(eq_4_12(1.39, 0.3, 0.0, 0.4, 9.81), 0.0);
+    }
+}

@@ -1,0 +1,9 @@
+//! Controllers that turn the player's intent into joint motor targets.
+
+mod arcade;
+mod lean;
+
+pub use arcade::{desired_lean_from_stick, eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
+pub use lean::{
+    current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
+};
