@@ -1,6 +1,7 @@
 //! Controllers that turn the player's intent into joint motor targets.
 
 mod arcade;
+pub mod cpbp;
 mod lean;
 
 pub use arcade::{desired_lean_from_stick, eq_4_12, eq_4_8, ArcadeController, ArcadeGains};

@@ -1,0 +1,16 @@
+//! Control Particle Belief Propagation (Hämäläinen, Rajamäki, Liu 2015), the sampling
+//! planner of the thesis (§2.3.3, §4.3.1), written from the specification: N particles
+//! simulate K steps ahead in their own copies of the world, sampling controls from
+//! Gaussian priors around a followed sequence; low-cost lineages are forked and high-cost
+//! ones cut (resampling) and the lowest-cost trajectory's first control is applied.
+//!
+//! It is generic over [`RolloutSystem`] so that it is tested exactly on toy systems; the
+//! bike is one such system.
+
+mod planner;
+mod priors;
+mod sequences;
+
+pub use planner::{PlanResult, Planner, PlannerConfig, RolloutSystem};
+pub use priors::Priors;
+pub use sequences::{lineages, shift_one_step};

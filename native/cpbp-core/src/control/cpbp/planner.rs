@@ -1,0 +1,329 @@
+//! One C-PBP planning step ("frame") over N particles and K planning steps.
+
+use rand::{RngExt, SeedableRng};
+use rand_distr::StandardNormal;
+use rand_pcg::Pcg64;
+
+use super::priors::Priors;
+use super::sequences::{lineages, shift_one_step};
+
+/// A simulated system the planner can branch: one instance per particle, all built alike.
+pub trait RolloutSystem {
+    /// Everything needed to put an instance back into a state (a world snapshot).
+    type State: Clone;
+    fn save(&self) -> Self::State;
+    fn restore(&mut self, state: &Self::State);
+    /// Applies control `u` for planning step `step` and simulates it; returns the step's
+    /// state cost (squared, tolerance-scaled), or `None` when the simulation blew up.
+    fn step(&mut self, u: &[f64], step: usize) -> Option<f64>;
+}
+
+/// Sizes and tuning of the planner; defaults are the specification's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannerConfig {
+    /// N, the number of trajectories.
+    pub particles: usize,
+    /// K, the planning steps (horizon / step length).
+    pub steps: usize,
+    /// Share of particles that follow no previous sequence (explore from the priors).
+    pub uniform_bias: f64,
+    /// Resample when the effective sample size drops below this share of N.
+    pub resample_threshold: f64,
+    /// Cost given to a rollout whose simulation blew up.
+    pub blowup_cost: f64,
+    /// Seed of every random draw; the same seed and inputs give the same plan.
+    pub seed: u64,
+}
+
+impl Default for PlannerConfig {
+    fn default() -> Self {
+        Self {
+            particles: 32,
+            steps: 36,
+            uniform_bias: 0.2,
+            resample_threshold: 0.5,
+            blowup_cost: 1e6,
+            seed: 2015,
+        }
+    }
+}
+
+/// What a frame found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlanResult {
+    /// The best trajectory's first control: apply it now.
+    pub control: Vec<f64>,
+    /// Total (state + control) cost of the best trajectory.
+    pub best_cost: f64,
+    /// Index of the best particle.
+    pub best: usize,
+    /// Each final particle's control sequence (K·D values) and total cost.
+    pub sequences: Vec<Vec<f64>>,
+    pub costs: Vec<f64>,
+    /// How many of the K steps resampled.
+    pub resamples: usize,
+    /// Rollouts that blew up (restored and given `blowup_cost`).
+    pub blowups: usize,
+}
+
+/// Carried from one frame to the next.
+#[derive(Clone, Debug)]
+struct Memory {
+    sequences: Vec<Vec<f64>>,
+    beliefs: Vec<f64>,
+    best: Vec<f64>,
+}
+
+/// The planner with its memory of the last frame.
+pub struct Planner {
+    pub config: PlannerConfig,
+    pub priors: Priors,
+    memory: Option<Memory>,
+    applied: Vec<f64>,
+    applied_before: Vec<f64>,
+    frame: u64,
+}
+
+impl Planner {
+    pub fn new(config: PlannerConfig, priors: Priors) -> Self {
+        let rest = priors.mean.clone();
+        Self {
+            config,
+            priors,
+            memory: None,
+            applied: rest.clone(),
+            applied_before: rest,
+            frame: 0,
+        }
+    }
+
+    /// Forgets the previous frames (after a reset or a teleport).
+    pub fn reset(&mut self) {
+        self.memory = None;
+        self.applied = self.priors.mean.clone();
+        self.applied_before = self.priors.mean.clone();
+    }
+
+    /// Tells the planner which control was really applied (when something else than its
+    /// own result was), so the next frame's smoothness priors start from it.
+    pub fn note_applied(&mut self, control: &[f64]) {
+        self.applied_before = std::mem::replace(&mut self.applied, control.to_vec());
+        self.applied_before.truncate(self.priors.dim());
+    }
+
+    /// Plans one frame from `start` with one system per particle (`systems.len()` ≥ N).
+    /// `warm` is particle 1's sequence (the arcade rollout or a refinement), replayed as is.
+    pub fn plan<S: RolloutSystem>(
+        &mut self,
+        systems: &mut [S],
+        start: &S::State,
+        warm: Option<&[f64]>,
+    ) -> PlanResult {
+        let n = self.config.particles.max(2).min(systems.len());
+        let (k_steps, dim) = (self.config.steps.max(1), self.priors.dim());
+        let mut resampler = Pcg64::seed_from_u64(mix(self.config.seed, self.frame, u64::MAX));
+        let mut rngs: Vec<Pcg64> = (0..n)
+            .map(|i| Pcg64::seed_from_u64(mix(self.config.seed, self.frame, i as u64)))
+            .collect();
+        self.frame += 1;
+
+        let (guides, replays) = self.choose_guides(n, warm, &mut resampler);
+        let mut states: Vec<S::State> = vec![start.clone(); n];
+        let mut weights = vec![1.0 / n as f64; n];
+        let mut totals = vec![0.0; n];
+        let mut previous: Vec<Vec<f64>> = vec![self.applied.clone(); n];
+        let mut before_previous: Vec<Vec<f64>> = vec![self.applied_before.clone(); n];
+        let mut parents_per_step = Vec::with_capacity(k_steps);
+        let mut controls_per_step = Vec::with_capacity(k_steps);
+        let (mut resamples, mut blowups) = (0, 0);
+
+        for k in 0..k_steps {
+            normalise(&mut weights);
+            let ess = 1.0 / weights.iter().map(|w| w * w).sum::<f64>();
+            let resample = k == 0 || ess < self.config.resample_threshold * n as f64;
+            resamples += usize::from(resample && k > 0);
+            let parents: Vec<usize> = (0..n)
+                .map(|i| {
+                    if replays[i] || !resample {
+                        i
+                    } else {
+                        draw(&weights, &mut resampler)
+                    }
+                })
+                .collect();
+
+            let mut new_states = Vec::with_capacity(n);
+            let mut new_totals = Vec::with_capacity(n);
+            let mut controls = Vec::with_capacity(n);
+            let mut state_costs = Vec::with_capacity(n);
+            for i in 0..n {
+                let p = parents[i];
+                let system = &mut systems[i];
+                system.restore(&states[p]);
+                let guide = guides[i].as_ref().map(|g| &g[k * dim..(k + 1) * dim]);
+                let u = if replays[i] {
+                    let mut u = guide.expect("replayed particles have a sequence").to_vec();
+                    self.priors.clamp(&mut u);
+                    u
+                } else {
+                    self.sample(&previous[p], &before_previous[p], guide, &mut rngs[i])
+                };
+                let cost = match system.step(&u, k) {
+                    Some(c) if c.is_finite() => c,
+                    _ => {
+                        blowups += 1;
+                        system.restore(&states[p]);
+                        self.config.blowup_cost
+                    }
+                };
+                new_totals.push(
+                    totals[p] + cost + self.priors.cost(&u, &previous[p], &before_previous[p]),
+                );
+                state_costs.push(cost);
+                new_states.push(system.save());
+                controls.push(u);
+            }
+            // Every new value above was computed from the parents' old ones; replace them
+            // only now, all at once, so no particle reads a sibling's new state.
+            totals = new_totals;
+            before_previous = parents.iter().map(|&p| previous[p].clone()).collect();
+            previous = controls.clone();
+            let potentials = potentials(&state_costs);
+            let old_weights = weights.clone();
+            for i in 0..n {
+                weights[i] = if resample {
+                    potentials[i]
+                } else {
+                    old_weights[parents[i]] * potentials[i]
+                };
+            }
+            states = new_states;
+            parents_per_step.push(parents);
+            controls_per_step.push(controls);
+        }
+
+        normalise(&mut weights);
+        let sequences = lineages(&parents_per_step, &controls_per_step);
+        let best = (0..n)
+            .min_by(|a, b| totals[*a].total_cmp(&totals[*b]))
+            .unwrap_or(0);
+        let control = sequences[best][..dim].to_vec();
+        self.remember(&sequences, &weights, best, dim);
+        self.note_applied(&control);
+        PlanResult {
+            control,
+            best_cost: totals[best],
+            best,
+            sequences,
+            costs: totals,
+            resamples,
+            blowups,
+        }
+    }
+
+    /// Which previous sequence each particle follows (shifted one step), and which
+    /// particles replay theirs exactly: particle 0 the last best, particle 1 `warm`.
+    fn choose_guides(
+        &self,
+        n: usize,
+        warm: Option<&[f64]>,
+        rng: &mut Pcg64,
+    ) -> (Vec<Option<Vec<f64>>>, Vec<bool>) {
+        let mut guides = vec![None; n];
+        let mut replays = vec![false; n];
+        if let Some(memory) = &self.memory {
+            guides[0] = Some(memory.best.clone());
+            replays[0] = true;
+            for guide in guides.iter_mut().skip(2) {
+                if rng.random::<f64>() >= self.config.uniform_bias {
+                    *guide = Some(memory.sequences[draw(&memory.beliefs, rng)].clone());
+                }
+            }
+        }
+        if let Some(sequence) = warm {
+            let expected = self.config.steps.max(1) * self.priors.dim();
+            if sequence.len() == expected {
+                guides[1] = Some(sequence.to_vec());
+                replays[1] = true;
+            }
+        }
+        (guides, replays)
+    }
+
+    /// A control drawn from the product of the priors, clamped to the bounds.
+    fn sample(
+        &self,
+        previous: &[f64],
+        before_previous: &[f64],
+        guide: Option<&[f64]>,
+        rng: &mut Pcg64,
+    ) -> Vec<f64> {
+        let mut u: Vec<f64> = (0..self.priors.dim())
+            .map(|d| {
+                let (mean, sigma) =
+                    self.priors
+                        .product(d, previous[d], before_previous[d], guide.map(|g| g[d]));
+                mean + sigma * rng.sample::<f64, _>(StandardNormal)
+            })
+            .collect();
+        self.priors.clamp(&mut u);
+        u
+    }
+
+    /// Keeps this frame's sequences, shifted one step, for the next frame.
+    fn remember(&mut self, sequences: &[Vec<f64>], beliefs: &[f64], best: usize, dim: usize) {
+        let mut shifted: Vec<Vec<f64>> = sequences.to_vec();
+        for sequence in &mut shifted {
+            shift_one_step(sequence, dim);
+        }
+        self.memory = Some(Memory {
+            best: shifted[best].clone(),
+            sequences: shifted,
+            beliefs: beliefs.to_vec(),
+        });
+    }
+}
+
+/// ψ = exp(−½ c) per particle, with the adaptive temperature of the specification: when
+/// even the best step cost exceeds 10, all are scaled by 10 / min so weights never all
+/// underflow to zero.
+fn potentials(costs: &[f64]) -> Vec<f64> {
+    let least = costs.iter().cloned().fold(f64::INFINITY, f64::min);
+    let scale = if least > 10.0 { 10.0 / least } else { 1.0 };
+    costs.iter().map(|c| (-0.5 * c * scale).exp()).collect()
+}
+
+/// Normalises weights to sum 1; NaN, infinite or all-zero weights fall back to uniform.
+fn normalise(weights: &mut [f64]) {
+    let sum: f64 = weights.iter().sum();
+    if sum.is_finite() && sum > 0.0 && weights.iter().all(|w| w.is_finite() && *w >= 0.0) {
+        weights.iter_mut().for_each(|w| *w /= sum);
+    } else {
+        let uniform = 1.0 / weights.len() as f64;
+        weights.iter_mut().for_each(|w| *w = uniform);
+    }
+}
+
+/// An index drawn with probability proportional to `weights`.
+fn draw(weights: &[f64], rng: &mut Pcg64) -> usize {
+    let sum: f64 = weights.iter().sum();
+    let mut target = rng.random::<f64>() * sum;
+    for (i, w) in weights.iter().enumerate() {
+        target -= w;
+        if target <= 0.0 {
+            return i;
+        }
+    }
+    weights.len() - 1
+}
+
+/// A seed for one stream: the same (seed, frame, stream) always gives the same draws,
+/// whichever thread uses it.
+fn mix(seed: u64, frame: u64, stream: u64) -> u64 {
+    let mut z = seed
+        ^ frame.wrapping_mul(0x9E37_79B9_7F4A_7C15)
+        ^ stream.wrapping_mul(0xD1B5_4A32_D192_ED03);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}

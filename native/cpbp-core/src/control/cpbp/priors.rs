@@ -1,0 +1,112 @@
+//! The Gaussian priors a C-PBP particle samples its controls from (per dimension), and
+//! the control cost they imply.
+
+/// Standard deviations of the priors and the control bounds, per dimension.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Priors {
+    /// Static prior N(μ0, σ0²): typical control magnitude.
+    pub mean: Vec<f64>,
+    pub sigma_static: Vec<f64>,
+    /// First-difference smoothness N(u_prev, σ1²).
+    pub sigma_smooth1: Vec<f64>,
+    /// Second-difference smoothness N(2u_prev − u_prevprev, σ2²).
+    pub sigma_smooth2: Vec<f64>,
+    /// Mutation around the followed sequence: σm = `mutation_scale` · σ0.
+    pub mutation_scale: f64,
+    pub lower: Vec<f64>,
+    pub upper: Vec<f64>,
+}
+
+impl Priors {
+    pub fn dim(&self) -> usize {
+        self.mean.len()
+    }
+
+    /// Mean and standard deviation of the product of the priors for dimension `d`: the
+    /// precision-weighted mean and the combined variance. `guide` is the followed
+    /// sequence's value, if the particle follows one.
+    pub fn product(
+        &self,
+        d: usize,
+        previous: f64,
+        before_previous: f64,
+        guide: Option<f64>,
+    ) -> (f64, f64) {
+        let mut terms = vec![
+            (self.mean[d], self.sigma_static[d]),
+            (previous, self.sigma_smooth1[d]),
+            (2.0 * previous - before_previous, self.sigma_smooth2[d]),
+        ];
+        if let Some(g) = guide {
+            terms.push((g, self.mutation_scale * self.sigma_static[d]));
+        }
+        let (weighted, precision) = terms.iter().fold((0.0, 0.0), |(sum, prec), (mean, sigma)| {
+            let p = 1.0 / (sigma * sigma);
+            (sum + mean * p, prec + p)
+        });
+        (weighted / precision, precision.recip().sqrt())
+    }
+
+    /// Control cost Σ over dimensions of the static and smoothness prior terms,
+    /// ((u − μ)/σ)² each: what the chosen control costs in the trajectory's total.
+    pub fn cost(&self, u: &[f64], previous: &[f64], before_previous: &[f64]) -> f64 {
+        (0..self.dim())
+            .map(|d| {
+                let z0 = (u[d] - self.mean[d]) / self.sigma_static[d];
+                let z1 = (u[d] - previous[d]) / self.sigma_smooth1[d];
+                let z2 = (u[d] - (2.0 * previous[d] - before_previous[d])) / self.sigma_smooth2[d];
+                z0 * z0 + z1 * z1 + z2 * z2
+            })
+            .sum()
+    }
+
+    /// `u` clamped to the bounds, non-finite entries replaced by the static mean.
+    pub fn clamp(&self, u: &mut [f64]) {
+        for (d, value) in u.iter_mut().enumerate().take(self.dim()) {
+            let v = if value.is_finite() { *value } else { self.mean[d] };
+            *value = v.clamp(self.lower[d], self.upper[d]);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn priors() -> Priors {
+        Priors {
+            mean: vec![0.0],
+            sigma_static: vec![2.0],
+            sigma_smooth1: vec![1.0],
+            sigma_smooth2: vec![1.0],
+            mutation_scale: 0.5,
+            lower: vec![-3.0],
+            upper: vec![3.0],
+        }
+    }
+
+    #[test]
+    fn the_product_is_the_precision_weighted_mean() {
+        // Static N(0, 4), smooth1 N(1, 1), smooth2 N(2·1 − 1, 1) = N(1, 1), guide N(2, 1):
+        // precisions 0.25, 1, 1, 1 → mean (0 + 1 + 1 + 2)/3.25, variance 1/3.25.
+        let (mean, sigma) = priors().product(0, 1.0, 1.0, Some(2.0));
+        assert!((mean - 4.0 / 3.25).abs() < 1e-12);
+        assert!((sigma - (1.0f64 / 3.25).sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_control_cost_adds_the_prior_terms() {
+        // u = 2, previous 1, before 1: (2/2)² + (1/1)² + (1/1)² = 3.
+        assert!((priors().cost(&[2.0], &[1.0], &[1.0]) - 3.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn clamping_respects_bounds_and_replaces_nan() {
+        let mut u = [7.0];
+        priors().clamp(&mut u);
+        assert_eq!(u, [3.0]);
+        let mut u = [f64::NAN];
+        priors().clamp(&mut u);
+        assert_eq!(u, [0.0]);
+    }
+}
