@@ -63,7 +63,11 @@ impl Priors {
     /// `u` clamped to the bounds, non-finite entries replaced by the static mean.
     pub fn clamp(&self, u: &mut [f64]) {
         for (d, value) in u.iter_mut().enumerate().take(self.dim()) {
-            let v = if value.is_finite() { *value } else { self.mean[d] };
+            let v = if value.is_finite() {
+                *value
+            } else {
+                self.mean[d]
+            };
             *value = v.clamp(self.lower[d], self.upper[d]);
         }
     }
