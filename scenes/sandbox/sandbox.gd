@@ -26,8 +26,15 @@ func _process(_delta: float) -> void:
 	elif _bike.call(&"is_waiting_for_throttle"):
 		state = "press W / RT to ride"
 	var numbers := [speed * 3.6, rad_to_deg(lean), rad_to_deg(wanted), rad_to_deg(steer), state]
+	var controller := str(_bike.call(&"get_controller_name"))
+	if controller in ["optimizer", "combined"]:
+		controller += (
+			" (%d trajectories, %.1f ms)"
+			% [_bike.get(&"trajectories"), _bike.call(&"get_planning_ms")]
+		)
 	_status.text = (
-		"speed %5.1f km/h   lean %+5.1f° (wanted %+5.1f°)   steering %+5.1f°   %s" % numbers
+		"%s\nspeed %5.1f km/h   lean %+5.1f° (wanted %+5.1f°)   steering %+5.1f°   %s"
+		% ([controller] + numbers)
 	)
 
 

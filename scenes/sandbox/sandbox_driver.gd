@@ -3,10 +3,14 @@ extends Node
 ## Drives a BikeSimulation from the input actions: the triggers (W/S) drive and brake,
 ## the stick (A/D) asks for a turn, which the bike's controller turns into a lean (with
 ## the bike's own counter-steering); R puts the bike back at the start, T stands it up
-## where it lies.
+## where it lies; C / Start cycles the controller (optimizer → combined → arcade).
+
+## BikeSimulation.controller values, in the order the thesis cycles them.
+const CONTROLLER_CYCLE: Array[int] = [2, 3, 0]
 
 ## The BikeSimulation to drive.
 @export var bike_path: NodePath
+
 ## Steering rate (rad/s) at full stick when the bike has no controller (manual mode).
 @export var steer_speed := 0.6
 
@@ -37,3 +41,6 @@ func _unhandled_input(event: InputEvent) -> void:
 		_bike.call(&"reset_to", _spawn)
 	elif event.is_action_pressed(&"lift_bike"):
 		_bike.call(&"lift_upright")
+	elif event.is_action_pressed(&"cycle_controller"):
+		var current := CONTROLLER_CYCLE.find(int(_bike.get(&"controller")))
+		_bike.set(&"controller", CONTROLLER_CYCLE[(current + 1) % CONTROLLER_CYCLE.size()])

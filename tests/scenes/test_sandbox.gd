@@ -59,6 +59,22 @@ func test_the_throttle_action_drives_and_the_brake_stops() -> void:
 	assert_lt(_bike.get_speed(), speed * 0.7, "braking slows the bike")
 
 
+func test_the_controller_action_cycles_optimizer_combined_arcade() -> void:
+	Input.action_press(&"throttle")
+	var seen: Array[String] = []
+	for i: int in 3:
+		var event := InputEventAction.new()
+		event.action = &"cycle_controller"
+		event.pressed = true
+		Input.parse_input_event(event)
+		await wait_physics_frames(45)
+		seen.append(_bike.get_controller_name())
+		if seen[-1] != "arcade":
+			assert_gt(_bike.get_planning_ms(), 0.0, "%s plans" % seen[-1])
+	assert_eq(seen, ["optimizer", "combined", "arcade"] as Array[String])
+	assert_false(_bike.is_crashed(), "switching controllers while riding keeps the bike up")
+
+
 func _frame_heading() -> Vector3:
 	var forward := _bike.get_body_transform(3).basis.x
 	return Vector3(forward.x, 0.0, forward.z).normalized()

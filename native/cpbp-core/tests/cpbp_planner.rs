@@ -36,6 +36,10 @@ impl RolloutSystem for PointMass {
 }
 
 fn planner(seed: u64) -> Planner {
+    planner_on_threads(seed, 0)
+}
+
+fn planner_on_threads(seed: u64, threads: usize) -> Planner {
     let priors = Priors {
         mean: vec![0.0],
         sigma_static: vec![3.0],
@@ -44,12 +48,14 @@ fn planner(seed: u64) -> Planner {
         mutation_scale: 0.2,
         lower: vec![-4.0],
         upper: vec![4.0],
+        planned: vec![true],
     };
     Planner::new(
         PlannerConfig {
             particles: 16,
             steps: 20,
             seed,
+            threads,
             ..PlannerConfig::default()
         },
         priors,
@@ -113,6 +119,13 @@ fn a_fixed_seed_reproduces_the_plan_exactly() {
     let (_, other, _) = ride(&mut planner(43), 30, f64::INFINITY);
     assert_eq!(first, second);
     assert_ne!(first, other, "another seed explores differently");
+}
+
+#[test]
+fn one_thread_and_two_threads_plan_identically() {
+    let (_, one, _) = ride(&mut planner_on_threads(11, 1), 20, f64::INFINITY);
+    let (_, two, _) = ride(&mut planner_on_threads(11, 2), 20, f64::INFINITY);
+    assert_eq!(one, two);
 }
 
 #[test]

@@ -5,7 +5,9 @@ use std::sync::Arc;
 use cpbp_core::bike::{
     from_quat, manual_controls, Controls, CrashCause, DriveInput, Part, Shape, CONTROL_DIM,
 };
-use cpbp_core::control::{ArcadeController, TurnIntent};
+use cpbp_core::control::{
+    ArcadeController, BikeOptimizer, OptimizerConfig, OptimizerMode, TurnIntent,
+};
 use cpbp_core::simulation::{Simulation, SimulationConfig, StepEvents};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
@@ -32,10 +34,14 @@ pub struct BikeSimulation {
     /// ODE steps per control step (more: stiffer joints, slower).
     #[export(range = (1.0, 16.0))]
     substeps: i32,
-    /// Who balances and steers: `arcade` (the PD controller of the thesis, §4.3.2) or
-    /// `manual` (nobody: the bar follows `set_steer_rate`, for inspecting the physics).
-    #[export(enum = (Arcade = 0, Manual = 1))]
+    /// Who balances and steers: `arcade` (the PD controller of the thesis, §4.3.2),
+    /// `manual` (nobody: the bar follows `set_steer_rate`, for inspecting the physics),
+    /// `optimizer` (C-PBP) or `combined` (C-PBP warm-started with the arcade controller).
+    #[export(enum = (Arcade = 0, Manual = 1, Optimizer = 2, Combined = 3))]
     controller: i32,
+    /// Trajectories the optimizer simulates each control step (N).
+    #[export(range = (2.0, 256.0))]
+    trajectories: i32,
     /// Hold the bike still where it was placed until the first throttle (and again after
     /// each reset): standing still, no steering can balance a bike, so the ride starts
     /// when the player does.
@@ -49,6 +55,8 @@ pub struct BikeSimulation {
     steer_rate: f64,
     turn: f64,
     arcade: ArcadeController,
+    optimizer: Option<BikeOptimizer>,
+    planning_ms: f64,
     raw_controls: Option<Controls>,
     base: Base<Node3D>,
 }
@@ -61,6 +69,7 @@ impl INode3D for BikeSimulation {
             max_speed_kmh: 25.0,
             substeps: 4,
             controller: 0,
+            trajectories: 15,
             wait_for_throttle: false,
             started: false,
             sim: None,
@@ -70,6 +79,8 @@ impl INode3D for BikeSimulation {
             steer_rate: 0.0,
             turn: 0.0,
             arcade: ArcadeController::default(),
+            optimizer: None,
+            planning_ms: 0.0,
             raw_controls: None,
             base,
         }
@@ -211,6 +222,9 @@ impl BikeSimulation {
             sim.reset_to(placement);
         }
         self.arcade.reset();
+        if let Some(optimizer) = &mut self.optimizer {
+            optimizer.reset();
+        }
         self.started = false;
         self.accumulator = 0.0;
         self.remember_poses();
@@ -223,6 +237,9 @@ impl BikeSimulation {
             sim.lift_upright();
         }
         self.arcade.reset();
+        if let Some(optimizer) = &mut self.optimizer {
+            optimizer.reset();
+        }
         self.remember_poses();
     }
 
@@ -237,6 +254,33 @@ impl BikeSimulation {
             None => return false,
         }
         true
+    }
+
+    /// Name of the active controller: "arcade", "manual", "optimizer" or "combined".
+    #[func]
+    fn get_controller_name(&self) -> GString {
+        GString::from(
+            ["arcade", "manual", "optimizer", "combined"][self.controller.clamp(0, 3) as usize],
+        )
+    }
+
+    /// Milliseconds the optimizer spent planning the last control step (0 for the others).
+    #[func]
+    fn get_planning_ms(&self) -> f64 {
+        if matches!(self.controller, 2 | 3) {
+            self.planning_ms
+        } else {
+            0.0
+        }
+    }
+
+    /// Total cost of the optimizer's best trajectory in the last control step.
+    #[func]
+    fn get_best_cost(&self) -> f64 {
+        self.optimizer
+            .as_ref()
+            .and_then(|o| o.last_plan())
+            .map_or(0.0, |p| p.best_cost)
     }
 
     /// True while the bike stands waiting for the first throttle (`wait_for_throttle`).
@@ -401,6 +445,27 @@ impl BikeSimulation {
         let controls = match (self.raw_controls, self.controller) {
             (Some(controls), _) => controls,
             (None, 1) => manual_controls(sim.bike(), sim.world(), &self.drive, self.steer_rate),
+            (None, 2 | 3) => {
+                let mode = if self.controller == 2 {
+                    OptimizerMode::Optimizer
+                } else {
+                    OptimizerMode::Combined
+                };
+                let wanted = OptimizerConfig {
+                    mode,
+                    particles: self.trajectories.clamp(2, 256) as usize,
+                    ..OptimizerConfig::default()
+                };
+                // Rebuilt only when the mode or the trajectory count changes.
+                if self.optimizer.as_ref().is_none_or(|o| o.config != wanted) {
+                    self.optimizer = Some(BikeOptimizer::new(sim, wanted));
+                }
+                let optimizer = self.optimizer.as_mut().expect("just built");
+                let started = std::time::Instant::now();
+                let controls = optimizer.controls(sim, desired_lean, &self.drive);
+                self.planning_ms = started.elapsed().as_secs_f64() * 1000.0;
+                controls
+            }
             (None, _) => {
                 let dt = sim.config().control_dt;
                 self.arcade.controls(

@@ -338,6 +338,25 @@ impl Bike {
         spin.dot(self.heading(world, up))
     }
 
+    /// Ground support point: midway between the two tyres' lowest points (torus tyres:
+    /// each contact lies in its wheel's plane, a crown radius above the road).
+    pub fn support_point(&self, world: &World, up: DVec3) -> DVec3 {
+        let (r, crown) = (self.params.wheel_radius, self.params.tyre_crown);
+        let contact = |part: Part| {
+            let body = self.body(part);
+            let centre = from_array(world.body_position(body));
+            let axle = from_quat(world.body_quaternion(body)) * DVec3::Z;
+            let down = -(up - axle * up.dot(axle)).normalize_or(up);
+            centre + down * (r - crown) - up * crown
+        };
+        (contact(Part::RearWheel) + contact(Part::FrontWheel)) / 2.0
+    }
+
+    /// Unit heading, for controllers: the frame's forward axis flattened onto the ground.
+    pub fn heading_of(&self, world: &World, up: DVec3) -> DVec3 {
+        self.heading(world, up)
+    }
+
     /// Whether the rear and front wheels touched the ground in the last step.
     pub fn wheel_contacts(&self, world: &World) -> (bool, bool) {
         (

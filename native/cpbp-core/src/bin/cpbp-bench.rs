@@ -4,7 +4,8 @@
 use std::sync::Arc;
 use std::time::Instant;
 
-use cpbp_core::bike::{Controls, Placement};
+use cpbp_core::bike::{Controls, DriveInput, Placement};
+use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode};
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
@@ -46,13 +47,64 @@ fn main() {
     let (snapshot, restore) = snapshot_costs(&flat);
     row("snapshot of the bike world", format!("{snapshot:.2} µs"));
     row("restore of the bike world", format!("{restore:.2} µs"));
+    let mut raw = [0.0; 3];
     for thread_count in [1, 2] {
-        let rate = median(|| parallel_steps_per_second(&flat, 16, thread_count));
+        raw[thread_count] = median(|| parallel_steps_per_second(&flat, 16, thread_count));
         row(
             &format!("16 bike worlds stepped on {thread_count} thread(s)"),
-            format!("{:.0} steps/s", rate),
+            format!("{:.0} steps/s", raw[thread_count]),
         );
     }
+
+    println!();
+    println!("C-PBP, combined mode, 1.2 s horizon (36 steps x 2 ODE steps), riding at 15 km/h:");
+    println!(
+        "{:<14} {:>16} {:>16} {:>12}",
+        "trajectories", "1 thread (ms)", "2 threads (ms)", "efficiency"
+    );
+    let mut largest_real_time = 0;
+    for n in [5, 10, 15, 32, 64, 128] {
+        let one = planning_ms(&flat, n, 1);
+        let two = planning_ms(&flat, n, 2);
+        // ODE steps the planner runs per frame: N rollouts plus the arcade warm start.
+        let steps = ((n + 1) * 36 * 2) as f64;
+        let efficiency = steps / (two / 1000.0) / raw[2];
+        println!("{n:<14} {one:>16.1} {two:>16.1} {efficiency:>12.2}");
+        if two <= 1000.0 / 30.0 {
+            largest_real_time = n;
+        }
+    }
+    println!(
+        "largest N planning within the 33 ms control period on 2 threads: {largest_real_time}"
+    );
+}
+
+/// Median milliseconds per control step of the combined planner with `n` trajectories.
+fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> f64 {
+    let config = OptimizerConfig {
+        mode: OptimizerMode::Combined,
+        particles: n,
+        threads,
+        ..OptimizerConfig::default()
+    };
+    let mut optimizer = BikeOptimizer::new(sim, config);
+    let drive = DriveInput {
+        throttle: 0.6,
+        brake: 0.0,
+        max_speed: 15.0 / 3.6,
+    };
+    for _ in 0..3 {
+        optimizer.controls(sim, 0.0, &drive); // warm-up: memory, thread pool
+    }
+    let mut samples: Vec<f64> = (0..9)
+        .map(|_| {
+            let start = Instant::now();
+            optimizer.controls(sim, 0.0, &drive);
+            start.elapsed().as_secs_f64() * 1000.0
+        })
+        .collect();
+    samples.sort_by(f64::total_cmp);
+    samples[samples.len() / 2]
 }
 
 fn sphere_step_cost(bodies: usize, steps: usize) -> f64 {

@@ -1,10 +1,14 @@
 //! Controllers that turn the player's intent into joint motor targets.
 
 mod arcade;
+mod bike_rollout;
 pub mod cpbp;
 mod lean;
+mod optimizer;
 
 pub use arcade::{desired_lean_from_stick, eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
+pub use bike_rollout::{bike_priors, BikeRollout, LeanGoal};
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };
+pub use optimizer::{BikeOptimizer, OptimizerConfig, OptimizerMode};

@@ -3,19 +3,26 @@
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
+use rayon::prelude::*;
 
 use super::priors::Priors;
 use super::sequences::{lineages, shift_one_step};
 
 /// A simulated system the planner can branch: one instance per particle, all built alike.
-pub trait RolloutSystem {
+/// Instances are stepped on several threads at once, each by one thread at a time.
+pub trait RolloutSystem: Send {
     /// Everything needed to put an instance back into a state (a world snapshot).
-    type State: Clone;
+    type State: Clone + Send + Sync;
     fn save(&self) -> Self::State;
     fn restore(&mut self, state: &Self::State);
     /// Applies control `u` for planning step `step` and simulates it; returns the step's
     /// state cost (squared, tolerance-scaled), or `None` when the simulation blew up.
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64>;
+    /// A prior that depends on the current state (the thesis's pose prior): per dimension
+    /// a mean and a standard deviation (infinite for dimensions it says nothing about).
+    fn client_prior(&self) -> Option<(Vec<f64>, Vec<f64>)> {
+        None
+    }
 }
 
 /// Sizes and tuning of the planner; defaults are the specification's.
@@ -31,8 +38,11 @@ pub struct PlannerConfig {
     pub resample_threshold: f64,
     /// Cost given to a rollout whose simulation blew up.
     pub blowup_cost: f64,
-    /// Seed of every random draw; the same seed and inputs give the same plan.
+    /// Seed of every random draw; the same seed and inputs give the same plan, whatever
+    /// the number of threads.
     pub seed: u64,
+    /// Worker threads for the rollouts (0: one per core).
+    pub threads: usize,
 }
 
 impl Default for PlannerConfig {
@@ -44,6 +54,7 @@ impl Default for PlannerConfig {
             resample_threshold: 0.5,
             blowup_cost: 1e6,
             seed: 2015,
+            threads: 0,
         }
     }
 }
@@ -78,6 +89,7 @@ struct Memory {
 pub struct Planner {
     pub config: PlannerConfig,
     pub priors: Priors,
+    pool: rayon::ThreadPool,
     memory: Option<Memory>,
     applied: Vec<f64>,
     applied_before: Vec<f64>,
@@ -87,9 +99,15 @@ pub struct Planner {
 impl Planner {
     pub fn new(config: PlannerConfig, priors: Priors) -> Self {
         let rest = priors.mean.clone();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(config.threads)
+            .thread_name(|i| format!("cpbp-rollout-{i}"))
+            .build()
+            .expect("the rollout threads could not start");
         Self {
             config,
             priors,
+            pool,
             memory: None,
             applied: rest.clone(),
             applied_before: rest,
@@ -152,36 +170,42 @@ impl Planner {
                 })
                 .collect();
 
+            // Every particle restores its parent's state into its own world, samples, steps
+            // and saves, independently of the others: run them across the worker threads.
+            let (states_ref, previous_ref, before_ref, guides_ref) =
+                (&states, &previous, &before_previous, &guides);
+            let (parents_ref, replays_ref, this) = (&parents, &replays, &*self);
+            let outcomes: Vec<Outcome<S::State>> = self.pool.install(|| {
+                systems[..n]
+                    .par_iter_mut()
+                    .zip(rngs.par_iter_mut())
+                    .enumerate()
+                    .map(|(i, (system, rng))| {
+                        let p = parents_ref[i];
+                        let guide = guides_ref[i].as_ref().map(|g| &g[k * dim..(k + 1) * dim]);
+                        this.rollout_step(
+                            system,
+                            rng,
+                            &states_ref[p],
+                            &previous_ref[p],
+                            &before_ref[p],
+                            guide,
+                            replays_ref[i],
+                            k,
+                        )
+                    })
+                    .collect()
+            });
             let mut new_states = Vec::with_capacity(n);
             let mut new_totals = Vec::with_capacity(n);
             let mut controls = Vec::with_capacity(n);
             let mut state_costs = Vec::with_capacity(n);
-            for i in 0..n {
-                let p = parents[i];
-                let system = &mut systems[i];
-                system.restore(&states[p]);
-                let guide = guides[i].as_ref().map(|g| &g[k * dim..(k + 1) * dim]);
-                let u = if replays[i] {
-                    let mut u = guide.expect("replayed particles have a sequence").to_vec();
-                    self.priors.clamp(&mut u);
-                    u
-                } else {
-                    self.sample(&previous[p], &before_previous[p], guide, &mut rngs[i])
-                };
-                let cost = match system.step(&u, k) {
-                    Some(c) if c.is_finite() => c,
-                    _ => {
-                        blowups += 1;
-                        system.restore(&states[p]);
-                        self.config.blowup_cost
-                    }
-                };
-                new_totals.push(
-                    totals[p] + cost + self.priors.cost(&u, &previous[p], &before_previous[p]),
-                );
-                state_costs.push(cost);
-                new_states.push(system.save());
-                controls.push(u);
+            for (i, outcome) in outcomes.into_iter().enumerate() {
+                blowups += usize::from(outcome.blew_up);
+                new_totals.push(totals[parents[i]] + outcome.state_cost + outcome.control_cost);
+                state_costs.push(outcome.state_cost);
+                new_states.push(outcome.state);
+                controls.push(outcome.control);
             }
             // Every new value above was computed from the parents' old ones; replace them
             // only now, all at once, so no particle reads a sibling's new state.
@@ -221,6 +245,43 @@ impl Planner {
         }
     }
 
+    /// One particle's step: restore the parent's state, choose a control, simulate.
+    #[allow(clippy::too_many_arguments)]
+    fn rollout_step<S: RolloutSystem>(
+        &self,
+        system: &mut S,
+        rng: &mut Pcg64,
+        parent_state: &S::State,
+        previous: &[f64],
+        before_previous: &[f64],
+        guide: Option<&[f64]>,
+        replay: bool,
+        k: usize,
+    ) -> Outcome<S::State> {
+        system.restore(parent_state);
+        let control = if replay {
+            let mut u = guide.expect("replayed particles have a sequence").to_vec();
+            self.priors.clamp(&mut u);
+            u
+        } else {
+            self.sample(previous, before_previous, guide, system.client_prior(), rng)
+        };
+        let (state_cost, blew_up) = match system.step(&control, k) {
+            Some(c) if c.is_finite() => (c, false),
+            _ => {
+                system.restore(parent_state);
+                (self.config.blowup_cost, true)
+            }
+        };
+        Outcome {
+            control_cost: self.priors.cost(&control, previous, before_previous),
+            state: system.save(),
+            control,
+            state_cost,
+            blew_up,
+        }
+    }
+
     /// Which previous sequence each particle follows (shifted one step), and which
     /// particles replay theirs exactly: particle 0 the last best, particle 1 `warm`.
     fn choose_guides(
@@ -250,20 +311,26 @@ impl Planner {
         (guides, replays)
     }
 
-    /// A control drawn from the product of the priors, clamped to the bounds.
+    /// A control drawn from the product of the priors (and the system's own prior, if it
+    /// has one), clamped to the bounds.
     fn sample(
         &self,
         previous: &[f64],
         before_previous: &[f64],
         guide: Option<&[f64]>,
+        client: Option<(Vec<f64>, Vec<f64>)>,
         rng: &mut Pcg64,
     ) -> Vec<f64> {
         let mut u: Vec<f64> = (0..self.priors.dim())
             .map(|d| {
-                let (mean, sigma) =
-                    self.priors
-                        .product(d, previous[d], before_previous[d], guide.map(|g| g[d]));
-                mean + sigma * rng.sample::<f64, _>(StandardNormal)
+                let guided = guide.map(|g| g[d]);
+                let mut prior = self
+                    .priors
+                    .product(d, previous[d], before_previous[d], guided);
+                if let Some((client_mean, client_sigma)) = &client {
+                    prior = combine(prior, (client_mean[d], client_sigma[d]));
+                }
+                prior.0 + prior.1 * rng.sample::<f64, _>(StandardNormal)
             })
             .collect();
         self.priors.clamp(&mut u);
@@ -282,6 +349,24 @@ impl Planner {
             beliefs: beliefs.to_vec(),
         });
     }
+}
+
+/// What one particle's step produced.
+struct Outcome<State> {
+    state: State,
+    control: Vec<f64>,
+    state_cost: f64,
+    control_cost: f64,
+    blew_up: bool,
+}
+
+/// Product of two Gaussians (mean, σ): precision-weighted; an infinite σ adds nothing.
+fn combine(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
+    if !b.1.is_finite() || !b.0.is_finite() {
+        return a;
+    }
+    let (pa, pb) = (1.0 / (a.1 * a.1), 1.0 / (b.1 * b.1));
+    ((a.0 * pa + b.0 * pb) / (pa + pb), (pa + pb).recip().sqrt())
 }
 
 /// ψ = exp(−½ c) per particle, with the adaptive temperature of the specification: when

@@ -15,6 +15,9 @@ pub struct Priors {
     pub mutation_scale: f64,
     pub lower: Vec<f64>,
     pub upper: Vec<f64>,
+    /// Dimensions the planner chooses; the others are set by someone else (the player's
+    /// throttle, say): they are neither sampled (they take the static mean) nor costed.
+    pub planned: Vec<bool>,
 }
 
 impl Priors {
@@ -32,6 +35,9 @@ impl Priors {
         before_previous: f64,
         guide: Option<f64>,
     ) -> (f64, f64) {
+        if !self.planned[d] {
+            return (self.mean[d], 0.0);
+        }
         let mut terms = vec![
             (self.mean[d], self.sigma_static[d]),
             (previous, self.sigma_smooth1[d]),
@@ -51,6 +57,7 @@ impl Priors {
     /// ((u − μ)/σ)² each: what the chosen control costs in the trajectory's total.
     pub fn cost(&self, u: &[f64], previous: &[f64], before_previous: &[f64]) -> f64 {
         (0..self.dim())
+            .filter(|&d| self.planned[d])
             .map(|d| {
                 let z0 = (u[d] - self.mean[d]) / self.sigma_static[d];
                 let z1 = (u[d] - previous[d]) / self.sigma_smooth1[d];
@@ -86,6 +93,7 @@ mod tests {
             mutation_scale: 0.5,
             lower: vec![-3.0],
             upper: vec![3.0],
+            planned: vec![true],
         }
     }
 
@@ -102,6 +110,16 @@ mod tests {
     fn the_control_cost_adds_the_prior_terms() {
         // u = 2, previous 1, before 1: (2/2)² + (1/1)² + (1/1)² = 3.
         assert!((priors().cost(&[2.0], &[1.0], &[1.0]) - 3.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn unplanned_dimensions_are_neither_sampled_nor_costed() {
+        let priors = Priors {
+            planned: vec![false],
+            ..priors()
+        };
+        assert_eq!(priors.product(0, 1.0, 1.0, Some(2.0)), (0.0, 0.0));
+        assert_eq!(priors.cost(&[2.5], &[1.0], &[1.0]), 0.0);
     }
 
     #[test]

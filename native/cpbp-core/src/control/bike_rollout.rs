@@ -1,0 +1,151 @@
+//! The bike as a system the C-PBP planner branches (thesis §4.3.1): each particle owns a
+//! world built like the master's; a planning step applies a control vector for one
+//! control period and costs the squared lean error of eq. 4.7.
+
+use glam::DVec3;
+
+use super::cpbp::{Priors, RolloutSystem};
+use super::lean::{current_lean_vector, desired_lean_vector, lean_cost};
+use crate::bike::{
+    index, Bike, Controls, DriveInput, ForceClass, CONTROL_DIM, LOWER, POSE_GAIN, UPPER,
+};
+use crate::ode::{World, WorldState};
+
+/// What the rider wants during a plan: the lean, and how strictly (eq. 4.7's s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LeanGoal {
+    pub lean: f64,
+    pub tolerance: f64,
+}
+
+impl Default for LeanGoal {
+    fn default() -> Self {
+        Self {
+            lean: 0.0,
+            tolerance: 5f64.to_radians(),
+        }
+    }
+}
+
+/// Cost added for every step in which a part other than a wheel touches the ground.
+const CRASH_COST: f64 = 400.0;
+
+/// One particle's world and what it needs to step and cost it.
+pub struct BikeRollout {
+    pub world: World,
+    pub bike: Bike,
+    pub up: DVec3,
+    /// One planning step (s) and the ODE steps it takes.
+    pub step_dt: f64,
+    pub substeps: usize,
+    pub goal: LeanGoal,
+    /// Throttle and brake go to the rear wheel directly, not through the planner.
+    pub drive: DriveInput,
+}
+
+impl BikeRollout {
+    /// The control vector the planner's `u` stands for: sanitised, with the rear wheel
+    /// entries taken from the player's throttle and brake.
+    pub fn controls_for(&self, u: &[f64]) -> Controls {
+        let mut raw = [0.0; CONTROL_DIM];
+        raw.copy_from_slice(&u[..CONTROL_DIM]);
+        let (mut controls, _) = Controls::sanitized(&raw);
+        self.drive
+            .apply(self.bike.params().wheel_radius, &mut controls);
+        controls
+    }
+}
+
+impl RolloutSystem for BikeRollout {
+    type State = WorldState;
+
+    fn save(&self) -> WorldState {
+        self.world.snapshot()
+    }
+
+    fn restore(&mut self, state: &WorldState) {
+        self.world
+            .restore(state)
+            .expect("every rollout world is built like the master");
+    }
+
+    fn step(&mut self, u: &[f64], _step: usize) -> Option<f64> {
+        let controls = self.controls_for(u);
+        self.bike.apply(&mut self.world, &controls);
+        let dt = self.step_dt / self.substeps as f64;
+        let mut crash = 0.0;
+        for _ in 0..self.substeps {
+            self.world.step(dt);
+            if self.bike.explosion(&self.world).is_some() {
+                return None;
+            }
+            if self.bike.part_touching_ground(&self.world).is_some() {
+                crash = CRASH_COST;
+            }
+        }
+        let heading = self.bike.heading_of(&self.world, self.up);
+        let desired = desired_lean_vector(heading, self.up, self.goal.lean);
+        let current = current_lean_vector(
+            self.bike.center_of_mass(&self.world),
+            self.bike.support_point(&self.world, self.up),
+        );
+        Some(lean_cost(desired, current, self.goal.tolerance) + crash)
+    }
+
+    /// The pose prior (thesis §4.3.1): rider joints towards the riding pose, the steering
+    /// around its current velocity so the plan does not jerk the bar.
+    fn client_prior(&self) -> Option<(Vec<f64>, Vec<f64>)> {
+        let mut mean = vec![0.0; CONTROL_DIM];
+        let mut sigma = vec![f64::INFINITY; CONTROL_DIM];
+        let (_, steer_rate) = self.bike.steering(&self.world);
+        mean[index::STEER] = steer_rate;
+        sigma[index::STEER] = 1.5;
+        for (i, angle) in self
+            .bike
+            .rider_joint_angles(&self.world)
+            .into_iter()
+            .enumerate()
+        {
+            mean[index::WAIST + i] = -POSE_GAIN * angle;
+            sigma[index::WAIST + i] = 0.5;
+        }
+        Some((mean, sigma))
+    }
+}
+
+/// Priors for sampling the bike's controls: joint velocities around zero, steering more
+/// freely than the rider's joints, force tunings near full strength.
+pub fn bike_priors(mutation_scale: f64) -> Priors {
+    let mut mean = vec![0.0; CONTROL_DIM];
+    let mut sigma_static = vec![1.0; CONTROL_DIM];
+    let mut sigma_smooth1 = vec![0.5; CONTROL_DIM];
+    let mut sigma_smooth2 = vec![0.5; CONTROL_DIM];
+    sigma_static[index::STEER] = 4.0;
+    sigma_smooth1[index::STEER] = 4.0;
+    sigma_smooth2[index::STEER] = 4.0;
+    for class in 0..5 {
+        let i = index::FORCE + class;
+        mean[i] = if class == ForceClass::RearWheel as usize {
+            0.0
+        } else {
+            0.9
+        };
+        sigma_static[i] = 0.2;
+        sigma_smooth1[i] = 0.1;
+        sigma_smooth2[i] = 0.1;
+    }
+    // Throttle and brake set the rear wheel: the planner leaves those entries alone.
+    let mut planned = vec![true; CONTROL_DIM];
+    planned[index::REAR_WHEEL] = false;
+    planned[index::FORCE + ForceClass::RearWheel as usize] = false;
+    Priors {
+        mean,
+        sigma_static,
+        sigma_smooth1,
+        sigma_smooth2,
+        mutation_scale,
+        lower: LOWER.to_vec(),
+        upper: UPPER.to_vec(),
+        planned,
+    }
+}
