@@ -1,42 +1,26 @@
 //! The arcade controller (thesis §4.3.2) on flat ground: it keeps the bike up, follows a
 //! commanded lean, and counter-steers to start a turn.
 
-use std::sync::Arc;
+mod common;
 
-use cpbp_core::bike::{index, DriveInput, Placement};
+use cpbp_core::bike::{index, DriveInput};
 use cpbp_core::control::{ArcadeController, ArcadeGains};
-use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
-use glam::{DQuat, DVec3};
+use cpbp_core::simulation::Simulation;
+use glam::DVec3;
 
 const DT: f64 = 1.0 / 30.0;
 
 fn ride(kmh: f64) -> (Simulation, ArcadeController, DriveInput) {
-    let plane = TerrainShape::Plane {
-        normal: DVec3::Y,
-        distance: 0.0,
-    };
-    let terrain = Terrain::new(vec![TerrainPiece {
-        source: "flat".into(),
-        shape: plane,
-        placement: Placement::IDENTITY,
-    }]);
-    // Facing an arbitrary heading, so nothing is symmetric by accident.
-    let spawn = Placement {
-        position: DVec3::new(0.0, 0.02, 0.0),
-        rotation: DQuat::from_rotation_y(0.3),
-    };
-    let sim = Simulation::new(
-        SimulationConfig::default(),
-        Arc::new(terrain.unwrap()),
-        spawn,
-    );
     let drive = DriveInput {
         throttle: 1.0,
         brake: 0.0,
         max_speed: kmh / 3.6,
     };
-    (sim, ArcadeController::new(ArcadeGains::default()), drive)
+    (
+        common::flat_ride(),
+        ArcadeController::new(ArcadeGains::default()),
+        drive,
+    )
 }
 
 /// One control step towards `lean`; returns the steering rate commanded.
@@ -101,12 +85,5 @@ fn a_right_turn_starts_with_a_left_counter_steer() {
             sim.bike().steering(sim.world()).0
         })
         .collect();
-    let first_left = angles.iter().position(|a| *a > 1f64.to_radians());
-    let first_right = angles.iter().position(|a| *a < -1f64.to_radians());
-    match (first_left, first_right) {
-        (Some(left), Some(right)) => {
-            assert!(left < right, "left at step {left}, right at step {right}")
-        }
-        other => panic!("expected the bar left then right, got {other:?} in {angles:?}"),
-    }
+    common::assert_counter_steers(&angles);
 }

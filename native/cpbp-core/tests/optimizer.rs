@@ -1,35 +1,17 @@
 //! The optimizer and combined controllers (C-PBP, N = 15) on flat ground. Heavy: `make
 //! test` runs these in a release build; debug builds skip them.
 
-use std::sync::Arc;
+mod common;
 
-use cpbp_core::bike::{DriveInput, Placement};
+use cpbp_core::bike::DriveInput;
 use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode};
-use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
-use glam::{DQuat, DVec3};
+use cpbp_core::simulation::Simulation;
+use glam::DVec3;
 
 const FRAMES_PER_SECOND: usize = 30;
 
 fn ride(kmh: f64, mode: OptimizerMode) -> (Simulation, BikeOptimizer, DriveInput) {
-    let plane = TerrainShape::Plane {
-        normal: DVec3::Y,
-        distance: 0.0,
-    };
-    let piece = TerrainPiece {
-        source: "flat".into(),
-        shape: plane,
-        placement: Placement::IDENTITY,
-    };
-    let spawn = Placement {
-        position: DVec3::new(0.0, 0.02, 0.0),
-        rotation: DQuat::from_rotation_y(0.3),
-    };
-    let sim = Simulation::new(
-        SimulationConfig::default(),
-        Arc::new(Terrain::new(vec![piece]).unwrap()),
-        spawn,
-    );
+    let sim = common::flat_ride();
     let config = OptimizerConfig {
         mode,
         particles: 15,
@@ -78,17 +60,6 @@ fn steering_into_a_right_turn(mode: OptimizerMode) -> Vec<f64> {
             sim.bike().steering(sim.world()).0
         })
         .collect()
-}
-
-fn assert_counter_steers(angles: &[f64]) {
-    let first_left = angles.iter().position(|a| *a > 1f64.to_radians());
-    let first_right = angles.iter().position(|a| *a < -1f64.to_radians());
-    match (first_left, first_right) {
-        (Some(left), Some(right)) => {
-            assert!(left < right, "left at step {left}, right at step {right}")
-        }
-        other => panic!("expected the bar left then right, got {other:?}"),
-    }
 }
 
 #[test]
@@ -147,6 +118,6 @@ fn combined_follows_a_15_degree_lean_within_3_degrees_rms() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn counter_steering_emerges_in_combined_and_optimizer_modes() {
-    assert_counter_steers(&steering_into_a_right_turn(OptimizerMode::Combined));
-    assert_counter_steers(&steering_into_a_right_turn(OptimizerMode::Optimizer));
+    common::assert_counter_steers(&steering_into_a_right_turn(OptimizerMode::Combined));
+    common::assert_counter_steers(&steering_into_a_right_turn(OptimizerMode::Optimizer));
 }
