@@ -159,3 +159,98 @@ fn the_warm_start_particle_replays_its_sequence() {
     let result = planner.plan(&mut systems, &(0.0, 0.0), Some(&warm));
     assert_eq!(result.sequences[1], warm);
 }
+
+/// The point mass again, remembering the control it was given at the first planning step.
+#[derive(Clone, Copy, Debug, Default)]
+struct FirstStepRecorder {
+    first: f64,
+}
+
+impl RolloutSystem for FirstStepRecorder {
+    type State = ();
+
+    fn save(&self) {}
+
+    fn restore(&mut self, _state: &()) {}
+
+    /// Only the first control costs anything: any lineage that survives to the end should
+    /// descend from a cheap first step.
+    fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
+        if step == 0 {
+            self.first = u[0];
+            return Some((u[0] / 0.1).powi(2));
+        }
+        Some(0.0)
+    }
+}
+
+#[test]
+fn resampling_keeps_the_low_cost_lineages() {
+    let mut planner = planner(5);
+    let mut systems = vec![FirstStepRecorder::default(); 16];
+    let result = planner.plan(&mut systems, &(), None);
+    let sampled: Vec<f64> = systems.iter().map(|s| s.first).collect();
+    let survived: Vec<f64> = result.sequences.iter().map(|s| s[0]).collect();
+    assert!(
+        result.resamples > 0,
+        "the first step's costs should force a resample"
+    );
+    assert!(survived.iter().all(|u| sampled.contains(u)));
+    let mean_abs = |v: &[f64]| v.iter().map(|u| u.abs()).sum::<f64>() / v.len() as f64;
+    assert!(
+        mean_abs(&survived) < 0.5 * mean_abs(&sampled),
+        "survivors {survived:?} of {sampled:?}"
+    );
+    let distinct = survived
+        .iter()
+        .filter(|u| survived.iter().filter(|v| v == u).count() > 1)
+        .count();
+    assert!(distinct > 0, "low-cost first steps should be forked");
+}
+
+/// A point mass that tells the refinement its position and velocity.
+#[derive(Clone, Copy, Debug, Default)]
+struct ObservedPointMass(PointMass);
+
+impl RolloutSystem for ObservedPointMass {
+    type State = (f64, f64);
+
+    fn save(&self) -> (f64, f64) {
+        self.0.save()
+    }
+
+    fn restore(&mut self, state: &(f64, f64)) {
+        self.0.restore(state)
+    }
+
+    fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
+        self.0.step(u, step)
+    }
+
+    fn features(&self) -> Vec<f64> {
+        vec![self.0.x, self.0.v]
+    }
+}
+
+#[test]
+fn the_refinement_stays_in_bounds_and_is_replayed_by_particle_1_next_frame() {
+    let mut planner = planner(9);
+    let mass = PointMass {
+        explodes_beyond: f64::INFINITY,
+        ..PointMass::default()
+    };
+    let mut systems = vec![ObservedPointMass(mass); 16];
+    let first = planner.plan(&mut systems, &(0.0, 0.0), None);
+    let refined = first.refined.expect("a system with features is refined");
+    assert_eq!(refined.len(), 20);
+    assert!(
+        refined.iter().all(|u| (-4.0..=4.0).contains(u)),
+        "{refined:?}"
+    );
+    // It heads for the target like the particles did: push forward first.
+    assert!(refined[0] > 0.0, "{refined:?}");
+    let second = planner.plan(&mut systems, &(0.0, 0.0), None);
+    let mut shifted = refined.clone();
+    cpbp_core::control::cpbp::shift_one_step(&mut shifted, 1);
+    assert_eq!(second.sequences[1], shifted);
+}

@@ -32,8 +32,8 @@ fn planner_at(
     debug_assertions,
     ignore = "slow in debug builds; make test runs it in release"
 )]
-fn combined_rides_straight_at_15_20_and_25_kmh() {
-    for kmh in [15.0, 20.0, 25.0] {
+fn combined_rides_straight_at_10_15_20_and_25_kmh() {
+    for kmh in [10.0, 15.0, 20.0, 25.0] {
         let (mut sim, mut control) = planner_at(kmh, OptimizerMode::Combined);
         common::assert_rides_straight_for_20_seconds(&mut sim, &mut control);
     }
@@ -44,8 +44,8 @@ fn combined_rides_straight_at_15_20_and_25_kmh() {
     debug_assertions,
     ignore = "slow in debug builds; make test runs it in release"
 )]
-fn optimizer_rides_straight_at_15_20_and_25_kmh() {
-    for kmh in [15.0, 20.0, 25.0] {
+fn optimizer_rides_straight_at_10_15_20_and_25_kmh() {
+    for kmh in [10.0, 15.0, 20.0, 25.0] {
         let (mut sim, mut control) = planner_at(kmh, OptimizerMode::Optimizer);
         common::assert_rides_straight_for_20_seconds(&mut sim, &mut control);
     }
@@ -60,6 +60,17 @@ fn combined_follows_a_15_degree_lean_within_3_degrees_rms() {
     let (mut sim, mut control) = planner_at(20.0, OptimizerMode::Combined);
     let rms = common::rms_lean_error_in_a_15_degree_turn(&mut sim, &mut control);
     assert!(rms <= 3.0, "RMS lean error {rms:.2}°");
+}
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "slow in debug builds; make test runs it in release"
+)]
+fn optimizer_alone_follows_a_15_degree_lean_within_4_degrees_rms() {
+    let (mut sim, mut control) = planner_at(20.0, OptimizerMode::Optimizer);
+    let rms = common::rms_lean_error_in_a_15_degree_turn(&mut sim, &mut control);
+    assert!(rms <= 4.0, "RMS lean error {rms:.2}°");
 }
 
 #[test]

@@ -92,6 +92,18 @@ impl RolloutSystem for BikeRollout {
         Some(lean_cost(desired, current, self.goal.tolerance) + crash)
     }
 
+    /// Lean, lean rate, steering angle and rate, in units of roughly what one control
+    /// step changes (0.1 rad, 1 rad/s): the state the lean cost depends on.
+    fn features(&self) -> Vec<f64> {
+        let (steer, steer_rate) = self.bike.steering(&self.world);
+        vec![
+            self.bike.lean(&self.world, self.up) / 0.1,
+            self.bike.lean_rate(&self.world, self.up),
+            steer / 0.1,
+            steer_rate,
+        ]
+    }
+
     /// The pose prior (thesis §4.3.1): rider joints towards the riding pose, the steering
     /// around its current velocity so the plan does not jerk the bar.
     fn client_prior(&self) -> Option<(Vec<f64>, Vec<f64>)> {

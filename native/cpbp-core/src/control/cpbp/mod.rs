@@ -9,6 +9,7 @@
 
 mod planner;
 mod priors;
+mod refinement;
 mod sequences;
 
 pub use planner::{PlanResult, Planner, PlannerConfig, RolloutSystem};

@@ -6,6 +6,7 @@ use rand_pcg::Pcg64;
 use rayon::prelude::*;
 
 use super::priors::Priors;
+use super::refinement::{refine, StepSamples};
 use super::sequences::{lineages, shift_one_step};
 
 /// A simulated system the planner can branch: one instance per particle, all built alike.
@@ -22,6 +23,11 @@ pub trait RolloutSystem: Send {
     /// a mean and a standard deviation (infinite for dimensions it says nothing about).
     fn client_prior(&self) -> Option<(Vec<f64>, Vec<f64>)> {
         None
+    }
+    /// A few numbers describing the state, scaled to about unit size, that the local
+    /// refinement regresses controls on. None (the default): no refinement.
+    fn features(&self) -> Vec<f64> {
+        Vec::new()
     }
 }
 
@@ -43,6 +49,15 @@ pub struct PlannerConfig {
     pub seed: u64,
     /// Worker threads for the rollouts (0: one per core).
     pub threads: usize,
+    /// Compute the local refinement (Gaussian back-propagation) each frame; particle 1
+    /// replays it next frame unless the caller supplies its own warm start.
+    pub refine: bool,
+    /// Ridge λ of the refinement's regression (absolute: features are unit-scaled).
+    pub ridge: f64,
+    /// Scale of the control (prior) cost in a trajectory's total. With many controlled
+    /// dimensions and one costed state feature, the prior terms can outweigh the state
+    /// cost that the choice of the best trajectory is about.
+    pub control_cost_weight: f64,
 }
 
 impl Default for PlannerConfig {
@@ -55,6 +70,9 @@ impl Default for PlannerConfig {
             blowup_cost: 1e6,
             seed: 2015,
             threads: 0,
+            refine: true,
+            ridge: 1e-3,
+            control_cost_weight: 1.0,
         }
     }
 }
@@ -75,6 +93,10 @@ pub struct PlanResult {
     pub resamples: usize,
     /// Rollouts that blew up (restored and given `blowup_cost`).
     pub blowups: usize,
+    /// The refined sequence (K·D values, within bounds), when the system has features.
+    pub refined: Option<Vec<f64>>,
+    /// Each final particle's belief (weights of next frame's choice of sequences).
+    pub beliefs: Vec<f64>,
 }
 
 /// Carried from one frame to the next.
@@ -83,6 +105,7 @@ struct Memory {
     sequences: Vec<Vec<f64>>,
     beliefs: Vec<f64>,
     best: Vec<f64>,
+    refined: Option<Vec<f64>>,
 }
 
 /// The planner with its memory of the last frame.
@@ -146,6 +169,8 @@ impl Planner {
         self.frame += 1;
 
         let (guides, replays) = self.choose_guides(n, warm, &mut resampler);
+        systems[0].restore(start);
+        let start_features = systems[0].features();
         let mut states: Vec<S::State> = vec![start.clone(); n];
         let mut weights = vec![1.0 / n as f64; n];
         let mut totals = vec![0.0; n];
@@ -153,6 +178,9 @@ impl Planner {
         let mut before_previous: Vec<Vec<f64>> = vec![self.applied_before.clone(); n];
         let mut parents_per_step = Vec::with_capacity(k_steps);
         let mut controls_per_step = Vec::with_capacity(k_steps);
+        let mut features_per_step: Vec<Vec<Vec<f64>>> = Vec::with_capacity(k_steps);
+        let mut potentials_per_step = Vec::with_capacity(k_steps);
+        let mut weights_per_step = Vec::with_capacity(k_steps);
         let (mut resamples, mut blowups) = (0, 0);
 
         for k in 0..k_steps {
@@ -200,7 +228,9 @@ impl Planner {
             let mut new_totals = Vec::with_capacity(n);
             let mut controls = Vec::with_capacity(n);
             let mut state_costs = Vec::with_capacity(n);
+            let mut features = Vec::with_capacity(n);
             for (i, outcome) in outcomes.into_iter().enumerate() {
+                features.push(outcome.features);
                 blowups += usize::from(outcome.blew_up);
                 new_totals.push(totals[parents[i]] + outcome.state_cost + outcome.control_cost);
                 state_costs.push(outcome.state_cost);
@@ -224,15 +254,41 @@ impl Planner {
             states = new_states;
             parents_per_step.push(parents);
             controls_per_step.push(controls);
+            features_per_step.push(features);
+            potentials_per_step.push(potentials);
+            weights_per_step.push(weights.clone());
         }
 
         normalise(&mut weights);
+        let smoothed = smoothed_beliefs(&weights_per_step, &potentials_per_step, &parents_per_step);
         let sequences = lineages(&parents_per_step, &controls_per_step);
         let best = (0..n)
             .min_by(|a, b| totals[*a].total_cmp(&totals[*b]))
             .unwrap_or(0);
         let control = sequences[best][..dim].to_vec();
-        self.remember(&sequences, &weights, best, dim);
+        let refined = if self.config.refine {
+            let steps: Vec<StepSamples> = (0..k_steps)
+                .map(|k| StepSamples {
+                    before: parents_per_step[k]
+                        .iter()
+                        .map(|&p| {
+                            if k == 0 {
+                                start_features.as_slice()
+                            } else {
+                                features_per_step[k - 1][p].as_slice()
+                            }
+                        })
+                        .collect(),
+                    controls: &controls_per_step[k],
+                    after: &features_per_step[k],
+                    weights: &smoothed[k],
+                })
+                .collect();
+            refine(&steps, &weights, &self.priors, self.config.ridge)
+        } else {
+            None
+        };
+        self.remember(&sequences, &weights, best, refined.clone(), dim);
         self.note_applied(&control);
         PlanResult {
             control,
@@ -242,6 +298,8 @@ impl Planner {
             costs: totals,
             resamples,
             blowups,
+            refined,
+            beliefs: weights,
         }
     }
 
@@ -274,7 +332,9 @@ impl Planner {
             }
         };
         Outcome {
-            control_cost: self.priors.cost(&control, previous, before_previous),
+            control_cost: self.config.control_cost_weight
+                * self.priors.cost(&control, previous, before_previous),
+            features: system.features(),
             state: system.save(),
             control,
             state_cost,
@@ -283,7 +343,8 @@ impl Planner {
     }
 
     /// Which previous sequence each particle follows (shifted one step), and which
-    /// particles replay theirs exactly: particle 0 the last best, particle 1 `warm`.
+    /// particles replay theirs exactly: particle 0 the last best, particle 1 `warm` or,
+    /// without one, the last refinement.
     fn choose_guides(
         &self,
         n: usize,
@@ -301,7 +362,8 @@ impl Planner {
                 }
             }
         }
-        if let Some(sequence) = warm {
+        let refined = self.memory.as_ref().and_then(|m| m.refined.as_deref());
+        if let Some(sequence) = warm.or(refined) {
             let expected = self.config.steps.max(1) * self.priors.dim();
             if sequence.len() == expected {
                 guides[1] = Some(sequence.to_vec());
@@ -338,12 +400,20 @@ impl Planner {
     }
 
     /// Keeps this frame's sequences, shifted one step, for the next frame.
-    fn remember(&mut self, sequences: &[Vec<f64>], beliefs: &[f64], best: usize, dim: usize) {
+    fn remember(
+        &mut self,
+        sequences: &[Vec<f64>],
+        beliefs: &[f64],
+        best: usize,
+        mut refined: Option<Vec<f64>>,
+        dim: usize,
+    ) {
         let mut shifted: Vec<Vec<f64>> = sequences.to_vec();
-        for sequence in &mut shifted {
+        for sequence in shifted.iter_mut().chain(refined.iter_mut()) {
             shift_one_step(sequence, dim);
         }
         self.memory = Some(Memory {
+            refined,
             best: shifted[best].clone(),
             sequences: shifted,
             beliefs: beliefs.to_vec(),
@@ -354,10 +424,41 @@ impl Planner {
 /// What one particle's step produced.
 struct Outcome<State> {
     state: State,
+    features: Vec<f64>,
     control: Vec<f64>,
     state_cost: f64,
     control_cost: f64,
     blew_up: bool,
+}
+
+/// The backward pass: β_K = 1/N, β_k(parent) = Σ over its children of ψ·β_{k+1}; the
+/// smoothed belief of particle i at step k is its forward weight times β_k(i), so a
+/// step's samples count by how well their whole future went, not only their past.
+fn smoothed_beliefs(
+    forward: &[Vec<f64>],
+    potentials: &[Vec<f64>],
+    parents: &[Vec<usize>],
+) -> Vec<Vec<f64>> {
+    let steps = forward.len();
+    let Some(n) = forward.first().map(Vec::len) else {
+        return Vec::new();
+    };
+    let mut beliefs = vec![Vec::new(); steps];
+    let mut backward = vec![1.0 / n as f64; n];
+    for k in (0..steps).rev() {
+        let mut smoothed: Vec<f64> = (0..n).map(|i| forward[k][i] * backward[i]).collect();
+        normalise(&mut smoothed);
+        beliefs[k] = smoothed;
+        if k > 0 {
+            let mut message = vec![0.0; n];
+            for i in 0..n {
+                message[parents[k][i]] += potentials[k][i] * backward[i];
+            }
+            normalise(&mut message);
+            backward = message;
+        }
+    }
+    beliefs
 }
 
 /// Product of two Gaussians (mean, σ): precision-weighted; an infinite σ adds nothing.
