@@ -28,9 +28,15 @@ func _process(_delta: float) -> void:
 	var numbers := [speed * 3.6, rad_to_deg(lean), rad_to_deg(wanted), rad_to_deg(steer), state]
 	var controller := str(_bike.call(&"get_controller_name"))
 	if controller in ["optimizer", "combined"]:
+		var handover: Dictionary = _bike.call(&"get_handover_stats")
 		controller += (
-			" (%d trajectories, %.1f ms)"
-			% [_bike.get(&"trajectories"), _bike.call(&"get_planning_ms")]
+			" (%d trajectories, planned in %.1f ms, %d resamples, hand-over wait %.1f ms)"
+			% [
+				_bike.get(&"trajectories"),
+				_bike.call(&"get_planning_ms"),
+				_bike.call(&"get_resample_count"),
+				handover.last_wait_ms,
+			]
 		)
 	_status.text = (
 		"%s\nspeed %5.1f km/h   lean %+5.1f° (wanted %+5.1f°)   steering %+5.1f°   %s"

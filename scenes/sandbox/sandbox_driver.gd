@@ -3,7 +3,8 @@ extends Node
 ## Drives a BikeSimulation from the input actions: the triggers (W/S) drive and brake,
 ## the stick (A/D) asks for a turn, which the bike's controller turns into a lean (with
 ## the bike's own counter-steering); R puts the bike back at the start, T stands it up
-## where it lies; C / Start cycles the controller (optimizer → combined → arcade).
+## where it lies; C / Start cycles the controller (optimizer → combined → arcade); V / Y
+## shows or hides the optimizer's trajectories.
 
 ## BikeSimulation.controller values, in the order the thesis cycles them.
 const CONTROLLER_CYCLE: Array[int] = [2, 3, 0]
@@ -41,6 +42,10 @@ func _unhandled_input(event: InputEvent) -> void:
 		_bike.call(&"reset_to", _spawn)
 	elif event.is_action_pressed(&"lift_bike"):
 		_bike.call(&"lift_upright")
+	elif event.is_action_pressed(&"toggle_trajectories"):
+		var view := _bike.get_node_or_null(^"TrajectoryView") as Node3D
+		if view != null:
+			view.visible = not view.visible
 	elif event.is_action_pressed(&"cycle_controller"):
 		var current := CONTROLLER_CYCLE.find(int(_bike.get(&"controller")))
 		_bike.set(&"controller", CONTROLLER_CYCLE[(current + 1) % CONTROLLER_CYCLE.size()])

@@ -81,6 +81,14 @@ func assert_lt(got: Variant, bound: Variant, text := "") -> void:
 	)
 
 
+func assert_between(got: Variant, low: Variant, high: Variant, text := "") -> void:
+	_check(
+		_is_number(got) and _is_number(low) and _is_number(high) and got >= low and got <= high,
+		"expected %s in [%s, %s]" % [_show(got), _show(low), _show(high)],
+		text
+	)
+
+
 func assert_null(got: Variant, text := "") -> void:
 	_check(got == null, "expected null, got %s" % _show(got), text)
 

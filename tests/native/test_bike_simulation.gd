@@ -75,6 +75,27 @@ func test_bad_input_is_rejected_or_clamped_without_a_crash() -> void:
 	assert_true(_bike.get_body_transform(0).origin.is_finite())
 
 
+func test_the_optimizer_settings_shape_its_plans() -> void:
+	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
+	_bike.controller = 3
+	_bike.trajectories = 4
+	_bike.horizon = 0.6
+	_bike.plan_wait_ms = 1000.0
+	_bike.set_drive(1.0, 0.0)
+	await wait_physics_frames(60)
+	var paths := _bike.get_trajectory_paths()
+	assert_eq(paths.size(), 4)
+	assert_eq(paths[0].size(), 18, "0.6 s at 30 planning steps a second")
+	assert_eq(_bike.get_warm_trajectory(), 1, "combined: the arcade rollout")
+	var stats: Dictionary = _bike.get_handover_stats()
+	assert_gt(stats.boundaries, 20)
+	assert_eq(stats.late, 0, "waiting up to a second, every plan is on time")
+	_bike.trajectories = 1
+	await wait_physics_frames(30)
+	assert_eq(_bike.get_trajectory_paths().size(), 1, "a single trajectory plans too")
+	assert_false(_bike.is_crashed())
+
+
 func _spawn(where: Transform3D) -> void:
 	_bike = BikeSimulation.new()
 	_bike.transform = where

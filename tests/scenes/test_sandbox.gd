@@ -71,7 +71,16 @@ func test_the_controller_action_cycles_optimizer_combined_arcade() -> void:
 		seen.append(_bike.get_controller_name())
 		if seen[-1] != "arcade":
 			assert_gt(_bike.get_planning_ms(), 0.0, "%s plans" % seen[-1])
+			var paths := _bike.get_trajectory_paths()
+			assert_eq(paths.size(), _bike.trajectories, "one path per trajectory")
+			assert_between(_bike.get_best_trajectory(), 0, paths.size() - 1)
+			await get_tree().process_frame
+			var view: TrajectoryView = _sandbox.get_node("Bike/TrajectoryView")
+			assert_eq(view.drawn_count(), paths.size(), "every trajectory is drawn")
 	assert_eq(seen, ["optimizer", "combined", "arcade"] as Array[String])
+	await get_tree().process_frame
+	var view: TrajectoryView = _sandbox.get_node("Bike/TrajectoryView")
+	assert_eq(view.drawn_count(), 0, "no trajectories while the arcade controller drives")
 	assert_false(_bike.is_crashed(), "switching controllers while riding keeps the bike up")
 
 

@@ -83,6 +83,12 @@ impl Simulation {
         build_world(&self.config, &self.terrain, &self.spawn).0
     }
 
+    /// A second simulation on the same terrain and bike (for a planning thread, which
+    /// restores the master's snapshots into it).
+    pub fn replica(&self) -> Simulation {
+        Simulation::new(self.config.clone(), self.terrain.clone(), self.spawn)
+    }
+
     pub fn config(&self) -> &SimulationConfig {
         &self.config
     }

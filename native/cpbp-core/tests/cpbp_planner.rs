@@ -254,3 +254,21 @@ fn the_refinement_stays_in_bounds_and_is_replayed_by_particle_1_next_frame() {
     cpbp_core::control::cpbp::shift_one_step(&mut shifted, 1);
     assert_eq!(second.sequences[1], shifted);
 }
+
+#[test]
+fn a_single_trajectory_still_plans_even_with_a_warm_start() {
+    let mut planner = planner(4);
+    planner.config.particles = 1;
+    let mass = PointMass {
+        explodes_beyond: f64::INFINITY,
+        ..PointMass::default()
+    };
+    let mut systems = vec![mass; 1];
+    let warm = vec![1.0; 20];
+    for _ in 0..3 {
+        let result = planner.plan(&mut systems, &(0.0, 0.0), Some(&warm));
+        assert_eq!(result.sequences.len(), 1);
+        assert!(!result.warm_started);
+        assert!(result.best_cost.is_finite());
+    }
+}

@@ -1,12 +1,13 @@
 //! `BikeSimulation`: the ODE bike and rider in a Godot scene.
 
 use std::sync::Arc;
+use std::time::Duration;
 
 use cpbp_core::bike::{
     from_quat, manual_controls, Controls, CrashCause, DriveInput, Part, Shape, CONTROL_DIM,
 };
 use cpbp_core::control::{
-    ArcadeController, BikeOptimizer, OptimizerConfig, OptimizerMode, TurnIntent,
+    AnytimeOptimizer, ArcadeController, OptimizerConfig, OptimizerMode, TurnIntent,
 };
 use cpbp_core::simulation::{Simulation, SimulationConfig, StepEvents};
 use cpbp_core::terrain::Terrain;
@@ -40,8 +41,23 @@ pub struct BikeSimulation {
     #[export(enum = (Arcade = 0, Manual = 1, Optimizer = 2, Combined = 3))]
     controller: i32,
     /// Trajectories the optimizer simulates each control step (N).
-    #[export(range = (2.0, 256.0))]
+    #[export(range = (1.0, 256.0))]
     trajectories: i32,
+    /// How far ahead the optimizer plans (s); the thesis used 1.2 s.
+    #[export(range = (0.2, 3.0, 0.1, suffix = "s"))]
+    horizon: f64,
+    /// Lean error (degrees) that costs as much as one unit (eq. 4.7's s): smaller tracks
+    /// the requested lean more strictly.
+    #[export(range = (1.0, 30.0, 0.5, suffix = "°"))]
+    lean_tolerance_deg: f64,
+    /// ODE steps per planning step in the rollouts: 4 is the master's own physics; fewer
+    /// plan faster but predict a different bike.
+    #[export(range = (1.0, 8.0))]
+    rollout_substeps: i32,
+    /// Longest the game waits at a control step for the planning thread (ms); a later
+    /// plan is taken over at a later step while the last best trajectory plays on.
+    #[export(range = (0.0, 1000.0, 1.0, suffix = "ms"))]
+    plan_wait_ms: f64,
     /// Hold the bike still where it was placed until the first throttle (and again after
     /// each reset): standing still, no steering can balance a bike, so the ride starts
     /// when the player does.
@@ -55,8 +71,8 @@ pub struct BikeSimulation {
     steer_rate: f64,
     turn: f64,
     arcade: ArcadeController,
-    optimizer: Option<BikeOptimizer>,
-    planning_ms: f64,
+    optimizer: Option<AnytimeOptimizer>,
+    planning: bool,
     raw_controls: Option<Controls>,
     base: Base<Node3D>,
 }
@@ -70,6 +86,10 @@ impl INode3D for BikeSimulation {
             substeps: 4,
             controller: 0,
             trajectories: 15,
+            horizon: 1.2,
+            lean_tolerance_deg: 5.0,
+            rollout_substeps: 4,
+            plan_wait_ms: 12.0,
             wait_for_throttle: false,
             started: false,
             sim: None,
@@ -80,7 +100,7 @@ impl INode3D for BikeSimulation {
             turn: 0.0,
             arcade: ArcadeController::default(),
             optimizer: None,
-            planning_ms: 0.0,
+            planning: false,
             raw_controls: None,
             base,
         }
@@ -221,10 +241,7 @@ impl BikeSimulation {
         if let Some(sim) = &mut self.sim {
             sim.reset_to(placement);
         }
-        self.arcade.reset();
-        if let Some(optimizer) = &mut self.optimizer {
-            optimizer.reset();
-        }
+        self.forget_plans();
         self.started = false;
         self.accumulator = 0.0;
         self.remember_poses();
@@ -236,10 +253,7 @@ impl BikeSimulation {
         if let Some(sim) = &mut self.sim {
             sim.lift_upright();
         }
-        self.arcade.reset();
-        if let Some(optimizer) = &mut self.optimizer {
-            optimizer.reset();
-        }
+        self.forget_plans();
         self.remember_poses();
     }
 
@@ -253,6 +267,8 @@ impl BikeSimulation {
             Some(sim) => sim.set_terrain(terrain),
             None => return false,
         }
+        // The planning thread's replica has the old terrain.
+        self.optimizer = None;
         true
     }
 
@@ -264,23 +280,73 @@ impl BikeSimulation {
         )
     }
 
-    /// Milliseconds the optimizer spent planning the last control step (0 for the others).
+    /// Milliseconds the planning thread took for the last plan taken over (0 when the
+    /// optimizer is not driving).
     #[func]
     fn get_planning_ms(&self) -> f64 {
-        if matches!(self.controller, 2 | 3) {
-            self.planning_ms
-        } else {
-            0.0
-        }
+        self.current_plan().map_or(0.0, |p| p.planning_ms)
     }
 
-    /// Total cost of the optimizer's best trajectory in the last control step.
+    /// Total cost of the best trajectory of the last plan taken over.
     #[func]
     fn get_best_cost(&self) -> f64 {
-        self.optimizer
-            .as_ref()
-            .and_then(|o| o.last_plan())
-            .map_or(0.0, |p| p.best_cost)
+        self.current_plan().map_or(0.0, |p| p.best_cost)
+    }
+
+    /// Resampling steps in the last plan taken over.
+    #[func]
+    fn get_resample_count(&self) -> i64 {
+        self.current_plan().map_or(0, |p| p.resamples as i64)
+    }
+
+    /// Hand-over statistics of the planning thread: `last_wait_ms`, `mean_wait_ms`,
+    /// `max_wait_ms` (the game thread's waits at control-step boundaries), `boundaries`
+    /// and `late` (boundaries with no plan for their step).
+    #[func]
+    fn get_handover_stats(&self) -> Dictionary<Variant, Variant> {
+        let mut d: Dictionary<Variant, Variant> = Dictionary::new();
+        let stats = self.optimizer.as_ref().map(|o| o.stats).unwrap_or_default();
+        d.set(
+            &"last_wait_ms".to_variant(),
+            &stats.last_wait_ms.to_variant(),
+        );
+        d.set(
+            &"mean_wait_ms".to_variant(),
+            &stats.mean_wait_ms().to_variant(),
+        );
+        d.set(&"max_wait_ms".to_variant(), &stats.max_wait_ms.to_variant());
+        d.set(
+            &"boundaries".to_variant(),
+            &(stats.boundaries as i64).to_variant(),
+        );
+        d.set(&"late".to_variant(), &(stats.late as i64).to_variant());
+        d
+    }
+
+    /// The last plan's trajectories as centre-of-mass paths (one point per planning
+    /// step), for drawing: `get_best_trajectory` and `get_warm_trajectory` index it.
+    #[func]
+    fn get_trajectory_paths(&self) -> Array<PackedVector3Array> {
+        let mut paths = Array::new();
+        for path in self.current_plan().map_or(&[][..], |p| &p.paths[..]) {
+            let points: PackedVector3Array = path.iter().map(|p| vector3(*p)).collect();
+            paths.push(&points);
+        }
+        paths
+    }
+
+    /// Index of the best trajectory in `get_trajectory_paths` (−1 without a plan).
+    #[func]
+    fn get_best_trajectory(&self) -> i64 {
+        self.current_plan().map_or(-1, |p| p.best as i64)
+    }
+
+    /// Index of the refined (optimizer) or arcade (combined) trajectory, −1 if none.
+    #[func]
+    fn get_warm_trajectory(&self) -> i64 {
+        self.current_plan()
+            .and_then(|p| p.warm)
+            .map_or(-1, |w| w as i64)
     }
 
     /// True while the bike stands waiting for the first throttle (`wait_for_throttle`).
@@ -439,32 +505,25 @@ impl BikeSimulation {
 
     fn step_once(&mut self) -> StepEvents {
         let desired_lean = self.get_desired_lean();
+        let config = self.optimizer_config();
         let Some(sim) = &mut self.sim else {
             return StepEvents::default();
         };
+        let planning = self.raw_controls.is_none() && matches!(self.controller, 2 | 3);
         let controls = match (self.raw_controls, self.controller) {
             (Some(controls), _) => controls,
             (None, 1) => manual_controls(sim.bike(), sim.world(), &self.drive, self.steer_rate),
             (None, 2 | 3) => {
-                let mode = if self.controller == 2 {
-                    OptimizerMode::Optimizer
-                } else {
-                    OptimizerMode::Combined
-                };
-                let wanted = OptimizerConfig {
-                    mode,
-                    particles: self.trajectories.clamp(2, 256) as usize,
-                    ..OptimizerConfig::default()
-                };
-                // Rebuilt only when the mode or the trajectory count changes.
-                if self.optimizer.as_ref().is_none_or(|o| o.config != wanted) {
-                    self.optimizer = Some(BikeOptimizer::new(sim, wanted));
+                let optimizer = self
+                    .optimizer
+                    .get_or_insert_with(|| AnytimeOptimizer::new(sim, Duration::ZERO));
+                optimizer.max_wait =
+                    Duration::from_secs_f64(self.plan_wait_ms.clamp(0.0, 1000.0) / 1000.0);
+                // Plans made while another controller drove are for states long gone.
+                if !self.planning {
+                    optimizer.reset();
                 }
-                let optimizer = self.optimizer.as_mut().expect("just built");
-                let started = std::time::Instant::now();
-                let controls = optimizer.controls(sim, desired_lean, &self.drive);
-                self.planning_ms = started.elapsed().as_secs_f64() * 1000.0;
-                controls
+                optimizer.controls(sim, desired_lean, &self.drive, &config)
             }
             (None, _) => {
                 let dt = sim.config().control_dt;
@@ -478,8 +537,40 @@ impl BikeSimulation {
                 )
             }
         };
+        self.planning = planning;
         sim.set_controls(controls);
         sim.step()
+    }
+
+    fn optimizer_config(&self) -> OptimizerConfig {
+        let mode = if self.controller == 2 {
+            OptimizerMode::Optimizer
+        } else {
+            OptimizerMode::Combined
+        };
+        OptimizerConfig {
+            mode,
+            particles: self.trajectories.clamp(1, 256) as usize,
+            horizon: self.horizon.clamp(0.2, 3.0),
+            lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
+            rollout_substeps: self.rollout_substeps.clamp(1, 8) as usize,
+            ..OptimizerConfig::default()
+        }
+    }
+
+    /// The plan in use, while the optimizer drives.
+    fn current_plan(&self) -> Option<&cpbp_core::control::Plan> {
+        if !self.planning {
+            return None;
+        }
+        self.optimizer.as_ref().and_then(|o| o.plan())
+    }
+
+    fn forget_plans(&mut self) {
+        self.arcade.reset();
+        if let Some(optimizer) = &mut self.optimizer {
+            optimizer.reset();
+        }
     }
 
     fn emit(&mut self, events: StepEvents) {
@@ -494,7 +585,7 @@ impl BikeSimulation {
             self.signals().landed().emit();
         }
         if let Some(reason) = events.recovered_from {
-            self.arcade.reset();
+            self.forget_plans();
             godot_warn!("BikeSimulation: the physics blew up ({reason})");
             self.signals()
                 .recovered()

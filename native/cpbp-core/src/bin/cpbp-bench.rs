@@ -2,10 +2,10 @@
 //! Timings are medians of several runs so one noisy run does not move them.
 
 use std::sync::Arc;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use cpbp_core::bike::{Controls, DriveInput, Placement};
-use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode};
+use cpbp_core::control::{AnytimeOptimizer, BikeOptimizer, OptimizerConfig, OptimizerMode};
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
@@ -56,35 +56,57 @@ fn main() {
         );
     }
 
-    println!();
-    println!("C-PBP, combined mode, 1.2 s horizon (36 steps x 2 ODE steps), riding at 15 km/h:");
-    println!(
-        "{:<14} {:>16} {:>16} {:>12}",
-        "trajectories", "1 thread (ms)", "2 threads (ms)", "efficiency"
-    );
-    let mut largest_real_time = 0;
-    for n in [5, 10, 15, 32, 64, 128] {
-        let one = planning_ms(&flat, n, 1);
-        let two = planning_ms(&flat, n, 2);
-        // ODE steps the planner runs per frame: N rollouts plus the arcade warm start.
-        let steps = ((n + 1) * 36 * 2) as f64;
-        let efficiency = steps / (two / 1000.0) / raw[2];
-        println!("{n:<14} {one:>16.1} {two:>16.1} {efficiency:>12.2}");
-        if two <= 1000.0 / 30.0 {
-            largest_real_time = n;
+    for substeps in [4, 2] {
+        println!();
+        println!(
+            "C-PBP, combined mode, 1.2 s horizon (36 steps x {substeps} ODE steps), riding at 15 km/h:"
+        );
+        println!(
+            "{:<14} {:>16} {:>16} {:>12}",
+            "trajectories", "1 thread (ms)", "2 threads (ms)", "efficiency"
+        );
+        let mut largest_real_time = 0;
+        for n in [5, 10, 15, 32, 64, 128] {
+            let one = planning_ms(&flat, n, 1, substeps);
+            let two = planning_ms(&flat, n, 2, substeps);
+            // ODE steps the planner runs per frame (particle 1 rides the arcade controller).
+            let steps = (n * 36 * substeps) as f64;
+            let efficiency = steps / (two / 1000.0) / raw[2];
+            println!("{n:<14} {one:>16.1} {two:>16.1} {efficiency:>12.2}");
+            if two <= 1000.0 / 30.0 {
+                largest_real_time = n;
+            }
         }
+        println!(
+            "largest N planning within the 33 ms control period on 2 threads: {largest_real_time}"
+        );
     }
+
+    println!();
+    println!("Hand-over: planning thread, game loop paced at 30 control steps/s, 6 s riding:");
     println!(
-        "largest N planning within the 33 ms control period on 2 threads: {largest_real_time}"
+        "{:<14} {:>14} {:>14} {:>14} {:>10}",
+        "trajectories", "plan (ms)", "mean wait", "max wait", "late"
     );
+    for n in [5, 15, 24, 32] {
+        let h = handover(&flat_terrain(), n);
+        println!(
+            "{n:<14} {:>14.1} {:>11.2} ms {:>11.2} ms {:>9.0}%",
+            h.0,
+            h.1,
+            h.2,
+            h.3 * 100.0
+        );
+    }
 }
 
 /// Median milliseconds per control step of the combined planner with `n` trajectories.
-fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> f64 {
+fn planning_ms(sim: &Simulation, n: usize, threads: usize, rollout_substeps: usize) -> f64 {
     let config = OptimizerConfig {
         mode: OptimizerMode::Combined,
         particles: n,
         threads,
+        rollout_substeps,
         ..OptimizerConfig::default()
     };
     let mut optimizer = BikeOptimizer::new(sim, config);
@@ -105,6 +127,47 @@ fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> f64 {
         .collect();
     samples.sort_by(f64::total_cmp);
     samples[samples.len() / 2]
+}
+
+/// Rides 6 s in real time with the planner on its own thread, waiting at most 10 ms at a
+/// boundary: (mean planning ms, mean wait ms, max wait ms, share of late boundaries).
+fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
+    let mut sim = rolling_bike(terrain.clone());
+    let config = OptimizerConfig {
+        mode: OptimizerMode::Combined,
+        particles: n,
+        ..OptimizerConfig::default()
+    };
+    let drive = DriveInput {
+        throttle: 1.0,
+        brake: 0.0,
+        max_speed: 15.0 / 3.6,
+    };
+    let mut anytime = AnytimeOptimizer::new(&sim, Duration::from_millis(10));
+    let period = Duration::from_secs_f64(1.0 / 30.0);
+    let mut boundary = Instant::now();
+    let (mut planning, mut plans, mut last_plan_step) = (0.0, 0, None);
+    for _ in 0..180 {
+        let controls = anytime.controls(&sim, 0.0, &drive, &config);
+        if let Some(plan) = anytime.plan() {
+            if last_plan_step != Some(plan.step) {
+                last_plan_step = Some(plan.step);
+                planning += plan.planning_ms;
+                plans += 1;
+            }
+        }
+        sim.set_controls(controls);
+        sim.step();
+        boundary += period;
+        std::thread::sleep(boundary.saturating_duration_since(Instant::now()));
+    }
+    let stats = anytime.stats;
+    (
+        planning / plans.max(1) as f64,
+        stats.mean_wait_ms(),
+        stats.max_wait_ms,
+        stats.late as f64 / stats.boundaries.max(1) as f64,
+    )
 }
 
 fn sphere_step_cost(bodies: usize, steps: usize) -> f64 {

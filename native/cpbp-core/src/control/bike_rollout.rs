@@ -4,6 +4,7 @@
 
 use glam::DVec3;
 
+use super::arcade::ArcadeController;
 use super::cpbp::{Priors, RolloutSystem};
 use super::lean::{current_lean_vector, desired_lean_vector, lean_cost};
 use crate::bike::{
@@ -41,6 +42,9 @@ pub struct BikeRollout {
     pub goal: LeanGoal,
     /// Throttle and brake go to the rear wheel directly, not through the planner.
     pub drive: DriveInput,
+    /// The arcade controller this particle follows (combined mode's particle 1), with
+    /// its memory as it was on the master at the start of the plan.
+    pub policy: Option<ArcadeController>,
 }
 
 impl BikeRollout {
@@ -102,6 +106,23 @@ impl RolloutSystem for BikeRollout {
             steer / 0.1,
             steer_rate,
         ]
+    }
+
+    fn policy(&mut self, _step: usize) -> Option<Vec<f64>> {
+        let controller = self.policy.as_mut()?;
+        let controls = controller.controls(
+            &self.bike,
+            &self.world,
+            self.goal.lean,
+            &self.drive,
+            self.up,
+            self.step_dt,
+        );
+        Some(controls.values().to_vec())
+    }
+
+    fn trace_point(&self) -> Option<[f64; 3]> {
+        Some(self.bike.center_of_mass(&self.world).to_array())
     }
 
     /// The pose prior (thesis §4.3.1): rider joints towards the riding pose, the steering

@@ -1,11 +1,13 @@
 //! Controllers that turn the player's intent into joint motor targets.
 
+mod anytime;
 mod arcade;
 mod bike_rollout;
 pub mod cpbp;
 mod lean;
 mod optimizer;
 
+pub use anytime::{AnytimeOptimizer, HandoverStats, Plan};
 pub use arcade::{desired_lean_from_stick, eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
 pub use bike_rollout::{bike_priors, BikeRollout, LeanGoal};
 pub use lean::{

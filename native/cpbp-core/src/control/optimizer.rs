@@ -4,7 +4,7 @@
 
 use super::arcade::ArcadeController;
 use super::bike_rollout::{bike_priors, BikeRollout, LeanGoal};
-use super::cpbp::{PlanResult, Planner, PlannerConfig, RolloutSystem};
+use super::cpbp::{PlanResult, Planner, PlannerConfig};
 use crate::bike::{Controls, DriveInput};
 use crate::simulation::Simulation;
 
@@ -62,7 +62,6 @@ pub struct BikeOptimizer {
     pub config: OptimizerConfig,
     planner: Planner,
     rollouts: Vec<BikeRollout>,
-    arcade_rollout: BikeRollout,
     arcade: ArcadeController,
     last: Option<PlanResult>,
 }
@@ -80,20 +79,21 @@ impl BikeOptimizer {
             substeps: config.rollout_substeps.max(1),
             goal: LeanGoal::default(),
             drive: DriveInput::default(),
+            policy: None,
         };
         let planner_config = PlannerConfig {
-            particles: config.particles.max(2),
+            particles: config.particles.max(1),
             steps,
             seed: config.seed,
             threads: config.threads,
             refine: config.mode == OptimizerMode::Optimizer,
+            policy_warm_start: config.mode == OptimizerMode::Combined,
             control_cost_weight: config.control_cost_weight,
             ..PlannerConfig::default()
         };
         Self {
             planner: Planner::new(planner_config, bike_priors(config.mutation_scale)),
-            rollouts: (0..config.particles.max(2)).map(|_| rollout()).collect(),
-            arcade_rollout: rollout(),
+            rollouts: (0..config.particles.max(1)).map(|_| rollout()).collect(),
             arcade: ArcadeController::default(),
             last: None,
             config,
@@ -112,6 +112,24 @@ impl BikeOptimizer {
         self.last.as_ref()
     }
 
+    /// The last plan's best trajectory as controls, one per control step (the first is
+    /// what `controls` returned), with the player's throttle and brake.
+    pub fn best_sequence(&self) -> Vec<Controls> {
+        let Some(plan) = &self.last else {
+            return Vec::new();
+        };
+        plan.sequences[plan.best]
+            .chunks_exact(crate::bike::CONTROL_DIM)
+            .map(|u| self.rollouts[0].controls_for(u))
+            .collect()
+    }
+
+    /// Tells the planner which controls the master really applied last (when that was
+    /// not its own first control: a fallback, or a plan that arrived late).
+    pub fn note_applied(&mut self, controls: &Controls) {
+        self.planner.note_applied(controls.values());
+    }
+
     /// Plans one control step of `sim` towards `desired_lean` with the player's `drive`.
     pub fn controls(
         &mut self,
@@ -124,62 +142,24 @@ impl BikeOptimizer {
             lean: desired_lean,
             tolerance: self.config.lean_tolerance,
         };
-        for rollout in self
-            .rollouts
-            .iter_mut()
-            .chain(std::iter::once(&mut self.arcade_rollout))
-        {
+        for rollout in &mut self.rollouts {
             rollout.goal = goal;
             rollout.drive = *drive;
         }
-        let warm = match self.config.mode {
-            OptimizerMode::Combined => Some(self.arcade_sequence(&start, desired_lean, drive)),
-            OptimizerMode::Optimizer => None,
-        };
+        // Combined mode: particle 1 rides with the arcade controller, starting from the
+        // master's controller memory (taken before this step updates it).
+        if let (OptimizerMode::Combined, Some(rollout)) =
+            (self.config.mode, self.rollouts.get_mut(1))
+        {
+            rollout.policy = Some(self.arcade);
+        }
         // Keep the arcade controller's memory in step with the master.
         let dt = sim.config().control_dt;
         self.arcade
             .controls(sim.bike(), sim.world(), desired_lean, drive, sim.up(), dt);
-        let result = self
-            .planner
-            .plan(&mut self.rollouts, &start, warm.as_deref());
+        let result = self.planner.plan(&mut self.rollouts, &start, None);
         let controls = self.rollouts[0].controls_for(&result.control);
         self.last = Some(result);
         controls
-    }
-
-    /// What the arcade controller would do over the horizon, from the master's state.
-    fn arcade_sequence(
-        &mut self,
-        start: &crate::ode::WorldState,
-        lean: f64,
-        drive: &DriveInput,
-    ) -> Vec<f64> {
-        let steps = self.planner.config.steps;
-        let mut arcade = self.arcade;
-        let rollout = &mut self.arcade_rollout;
-        rollout.restore(start);
-        let mut sequence = Vec::with_capacity(steps * crate::bike::CONTROL_DIM);
-        for k in 0..steps {
-            let controls = arcade.controls(
-                &rollout.bike,
-                &rollout.world,
-                lean,
-                drive,
-                rollout.up,
-                rollout.step_dt,
-            );
-            sequence.extend_from_slice(controls.values());
-            if rollout.step(controls.values(), k).is_none() {
-                // The rest of the sequence repeats the last control; particle 1 replays
-                // it and the planner costs the blow-up like any other.
-                let last = controls.values().to_vec();
-                while sequence.len() < steps * crate::bike::CONTROL_DIM {
-                    sequence.extend_from_slice(&last);
-                }
-                break;
-            }
-        }
-        sequence
     }
 }

@@ -2,6 +2,9 @@
 //! controller is held to. A controller is passed in as a closure from the simulation and
 //! the desired lean to the controls for the next step.
 
+// Each test crate uses its own subset of these helpers.
+#![allow(dead_code)]
+
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Placement};

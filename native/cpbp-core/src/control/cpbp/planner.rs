@@ -29,6 +29,16 @@ pub trait RolloutSystem: Send {
     fn features(&self) -> Vec<f64> {
         Vec::new()
     }
+    /// The control the system's own controller would choose now (for the combined mode's
+    /// arcade controller), when it has one: particle 1 follows it live when the planner
+    /// is configured with `policy_warm_start`.
+    fn policy(&mut self, _step: usize) -> Option<Vec<f64>> {
+        None
+    }
+    /// A point to draw the trajectory through (the bike's centre of mass), if any.
+    fn trace_point(&self) -> Option<[f64; 3]> {
+        None
+    }
 }
 
 /// Sizes and tuning of the planner; defaults are the specification's.
@@ -52,6 +62,10 @@ pub struct PlannerConfig {
     /// Compute the local refinement (Gaussian back-propagation) each frame; particle 1
     /// replays it next frame unless the caller supplies its own warm start.
     pub refine: bool,
+    /// Particle 1 follows the system's policy (`RolloutSystem::policy`) step by step: the
+    /// same trajectory as replaying that controller's rollout, without simulating it
+    /// first on one thread while the others wait.
+    pub policy_warm_start: bool,
     /// Ridge λ of the refinement's regression (absolute: features are unit-scaled).
     pub ridge: f64,
     /// Scale of the control (prior) cost in a trajectory's total. With many controlled
@@ -71,6 +85,7 @@ impl Default for PlannerConfig {
             seed: 2015,
             threads: 0,
             refine: true,
+            policy_warm_start: false,
             ridge: 1e-3,
             control_cost_weight: 1.0,
         }
@@ -97,6 +112,10 @@ pub struct PlanResult {
     pub refined: Option<Vec<f64>>,
     /// Each final particle's belief (weights of next frame's choice of sequences).
     pub beliefs: Vec<f64>,
+    /// Each final particle's trace points, one per step, when the system gives them.
+    pub paths: Vec<Vec<[f64; 3]>>,
+    /// Whether particle 1 replayed a warm start (the caller's or the refinement).
+    pub warm_started: bool,
 }
 
 /// Carried from one frame to the next.
@@ -160,7 +179,7 @@ impl Planner {
         start: &S::State,
         warm: Option<&[f64]>,
     ) -> PlanResult {
-        let n = self.config.particles.max(2).min(systems.len());
+        let n = self.config.particles.max(1).min(systems.len());
         let (k_steps, dim) = (self.config.steps.max(1), self.priors.dim());
         let mut resampler = Pcg64::seed_from_u64(mix(self.config.seed, self.frame, u64::MAX));
         let mut rngs: Vec<Pcg64> = (0..n)
@@ -181,6 +200,7 @@ impl Planner {
         let mut features_per_step: Vec<Vec<Vec<f64>>> = Vec::with_capacity(k_steps);
         let mut potentials_per_step = Vec::with_capacity(k_steps);
         let mut weights_per_step = Vec::with_capacity(k_steps);
+        let mut points_per_step: Vec<Vec<Option<[f64; 3]>>> = Vec::with_capacity(k_steps);
         let (mut resamples, mut blowups) = (0, 0);
 
         for k in 0..k_steps {
@@ -229,8 +249,10 @@ impl Planner {
             let mut controls = Vec::with_capacity(n);
             let mut state_costs = Vec::with_capacity(n);
             let mut features = Vec::with_capacity(n);
+            let mut points = Vec::with_capacity(n);
             for (i, outcome) in outcomes.into_iter().enumerate() {
                 features.push(outcome.features);
+                points.push(outcome.point);
                 blowups += usize::from(outcome.blew_up);
                 new_totals.push(totals[parents[i]] + outcome.state_cost + outcome.control_cost);
                 state_costs.push(outcome.state_cost);
@@ -255,6 +277,7 @@ impl Planner {
             parents_per_step.push(parents);
             controls_per_step.push(controls);
             features_per_step.push(features);
+            points_per_step.push(points);
             potentials_per_step.push(potentials);
             weights_per_step.push(weights.clone());
         }
@@ -300,6 +323,8 @@ impl Planner {
             blowups,
             refined,
             beliefs: weights,
+            paths: trace_paths(&parents_per_step, &points_per_step),
+            warm_started: replays.get(1).copied().unwrap_or(false),
         }
     }
 
@@ -318,7 +343,10 @@ impl Planner {
     ) -> Outcome<S::State> {
         system.restore(parent_state);
         let control = if replay {
-            let mut u = guide.expect("replayed particles have a sequence").to_vec();
+            let mut u = match guide {
+                Some(sequence) => sequence.to_vec(),
+                None => system.policy(k).unwrap_or_else(|| self.priors.mean.clone()),
+            };
             self.priors.clamp(&mut u);
             u
         } else {
@@ -335,6 +363,7 @@ impl Planner {
             control_cost: self.config.control_cost_weight
                 * self.priors.cost(&control, previous, before_previous),
             features: system.features(),
+            point: system.trace_point(),
             state: system.save(),
             control,
             state_cost,
@@ -363,7 +392,10 @@ impl Planner {
             }
         }
         let refined = self.memory.as_ref().and_then(|m| m.refined.as_deref());
-        if let Some(sequence) = warm.or(refined) {
+        if self.config.policy_warm_start && n > 1 {
+            guides[1] = None;
+            replays[1] = true;
+        } else if let Some(sequence) = warm.or(refined).filter(|_| n > 1) {
             let expected = self.config.steps.max(1) * self.priors.dim();
             if sequence.len() == expected {
                 guides[1] = Some(sequence.to_vec());
@@ -425,10 +457,33 @@ impl Planner {
 struct Outcome<State> {
     state: State,
     features: Vec<f64>,
+    point: Option<[f64; 3]>,
     control: Vec<f64>,
     state_cost: f64,
     control_cost: f64,
     blew_up: bool,
+}
+
+/// Each final particle's trace points, step by step, found by following its parents back;
+/// empty when the system has none.
+fn trace_paths(parents: &[Vec<usize>], points: &[Vec<Option<[f64; 3]>>]) -> Vec<Vec<[f64; 3]>> {
+    let Some(last) = points.last() else {
+        return Vec::new();
+    };
+    (0..last.len())
+        .map(|end| {
+            let mut path = Vec::with_capacity(points.len());
+            let mut i = end;
+            for k in (0..points.len()).rev() {
+                if let Some(p) = points[k][i] {
+                    path.push(p);
+                }
+                i = parents[k][i];
+            }
+            path.reverse();
+            path
+        })
+        .collect()
 }
 
 /// The backward pass: β_K = 1/N, β_k(parent) = Σ over its children of ψ·β_{k+1}; the

@@ -1,0 +1,245 @@
+//! Planning off the game thread. While the master simulates control step t with control
+//! u_t, a planning thread restores the master's state at the start of step t into its own
+//! replica, simulates u_t to predict the state at t + 1, and plans step t + 1 from there.
+//! At the next control-step boundary the game takes the plan over (the hand-over); if it
+//! is late it does not stall: the game keeps replaying the previous best trajectory open
+//! loop (or, with none, the arcade controller) and takes the plan that is for the step it
+//! has reached once one arrives.
+
+use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender};
+use std::thread::JoinHandle;
+use std::time::{Duration, Instant};
+
+use glam::DVec3;
+
+use super::arcade::ArcadeController;
+use super::optimizer::{BikeOptimizer, OptimizerConfig};
+use crate::bike::{Controls, DriveInput};
+use crate::ode::WorldState;
+use crate::simulation::Simulation;
+
+/// What the planning thread plans: the plan for master step `step`, made from the state
+/// one step earlier and the control applied during that step.
+struct Request {
+    epoch: u64,
+    step: u64,
+    start: WorldState,
+    applied: Controls,
+    desired_lean: f64,
+    drive: DriveInput,
+    config: OptimizerConfig,
+    reset: bool,
+}
+
+/// A finished plan.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    /// Plans from before a reset have an older epoch and are dropped.
+    epoch: u64,
+    /// The master step its first control is for.
+    pub step: u64,
+    /// The best trajectory's controls, one per control step from `step` on.
+    pub sequence: Vec<Controls>,
+    pub best_cost: f64,
+    pub resamples: usize,
+    pub blowups: usize,
+    pub planning_ms: f64,
+    /// Every trajectory's centre-of-mass path; `best` and `warm` index into it.
+    pub paths: Vec<Vec<DVec3>>,
+    pub best: usize,
+    /// The refinement's (optimizer) or the arcade rollout's (combined) trajectory.
+    pub warm: Option<usize>,
+}
+
+/// How the hand-overs went: waits at the boundary and plans that came too late.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct HandoverStats {
+    /// Milliseconds the game thread waited for a plan at the last boundary.
+    pub last_wait_ms: f64,
+    pub max_wait_ms: f64,
+    pub total_wait_ms: f64,
+    /// Boundaries passed, and those at which no plan for that step was ready.
+    pub boundaries: u64,
+    pub late: u64,
+}
+
+impl HandoverStats {
+    pub fn mean_wait_ms(&self) -> f64 {
+        self.total_wait_ms / self.boundaries.max(1) as f64
+    }
+}
+
+/// The planning thread and the game thread's side of the hand-over.
+pub struct AnytimeOptimizer {
+    requests: Option<Sender<Request>>,
+    replies: Receiver<Plan>,
+    worker: Option<JoinHandle<()>>,
+    outstanding: bool,
+    plan: Option<Plan>,
+    arcade: ArcadeController,
+    step: u64,
+    epoch: u64,
+    reset_pending: bool,
+    /// Longest the game thread waits at a boundary for a plan before falling back.
+    pub max_wait: Duration,
+    pub stats: HandoverStats,
+}
+
+impl AnytimeOptimizer {
+    /// Starts a planning thread with its own replica of `sim`.
+    pub fn new(sim: &Simulation, max_wait: Duration) -> Self {
+        let (request_tx, request_rx) = channel::<Request>();
+        let (reply_tx, reply_rx) = channel::<Plan>();
+        let replica = sim.replica();
+        let worker = std::thread::Builder::new()
+            .name("cpbp-planner".into())
+            .spawn(move || plan_requests(replica, request_rx, reply_tx))
+            .expect("the planning thread could not start");
+        Self {
+            requests: Some(request_tx),
+            replies: reply_rx,
+            worker: Some(worker),
+            outstanding: false,
+            plan: None,
+            arcade: ArcadeController::default(),
+            step: 0,
+            epoch: 0,
+            reset_pending: true,
+            max_wait,
+            stats: HandoverStats::default(),
+        }
+    }
+
+    /// Forgets plans (after a reset, a lift or a teleport): they were for another state.
+    pub fn reset(&mut self) {
+        self.plan = None;
+        self.arcade.reset();
+        self.reset_pending = true;
+        self.epoch += 1;
+    }
+
+    /// The most recent plan taken over (for statistics and drawing).
+    pub fn plan(&self) -> Option<&Plan> {
+        self.plan.as_ref()
+    }
+
+    /// The controls for the master's next step; call once per control step, then step.
+    pub fn controls(
+        &mut self,
+        sim: &Simulation,
+        desired_lean: f64,
+        drive: &DriveInput,
+        config: &OptimizerConfig,
+    ) -> Controls {
+        self.take_plan();
+        let dt = sim.config().control_dt;
+        let fallback =
+            self.arcade
+                .controls(sim.bike(), sim.world(), desired_lean, drive, sim.up(), dt);
+        let planned = self.plan.as_ref().and_then(|plan| {
+            let offset = self.step.checked_sub(plan.step)?;
+            plan.sequence.get(offset as usize).copied()
+        });
+        let controls = planned.unwrap_or(fallback);
+        if !self.outstanding {
+            let request = Request {
+                epoch: self.epoch,
+                step: self.step + 1,
+                start: sim.world().snapshot(),
+                applied: controls,
+                desired_lean,
+                drive: *drive,
+                config: config.clone(),
+                reset: std::mem::take(&mut self.reset_pending),
+            };
+            if let Some(sender) = &self.requests {
+                self.outstanding = sender.send(request).is_ok();
+            }
+        }
+        self.step += 1;
+        controls
+    }
+
+    /// At a boundary: wait (at most `max_wait`) for the plan of the step about to run.
+    fn take_plan(&mut self) {
+        let started = Instant::now();
+        let mut fresh = false;
+        while self.outstanding {
+            let left = self.max_wait.saturating_sub(started.elapsed());
+            match self.replies.recv_timeout(left) {
+                Ok(plan) => {
+                    self.outstanding = false;
+                    if plan.epoch == self.epoch && plan.step <= self.step {
+                        fresh |= plan.step == self.step;
+                        self.plan = Some(plan);
+                    }
+                }
+                Err(RecvTimeoutError::Timeout) => break,
+                Err(RecvTimeoutError::Disconnected) => {
+                    self.outstanding = false;
+                }
+            }
+        }
+        let waited = started.elapsed().as_secs_f64() * 1000.0;
+        let stats = &mut self.stats;
+        stats.last_wait_ms = waited;
+        stats.max_wait_ms = stats.max_wait_ms.max(waited);
+        stats.total_wait_ms += waited;
+        stats.boundaries += 1;
+        stats.late += u64::from(!fresh && self.step > 0);
+    }
+}
+
+impl Drop for AnytimeOptimizer {
+    fn drop(&mut self) {
+        // Closing the channel ends the thread's loop after the plan in hand.
+        self.requests = None;
+        if let Some(worker) = self.worker.take() {
+            let _ = worker.join();
+        }
+    }
+}
+
+/// The planning thread's loop: one plan per request until the game side hangs up.
+fn plan_requests(mut replica: Simulation, requests: Receiver<Request>, replies: Sender<Plan>) {
+    let mut optimizer: Option<BikeOptimizer> = None;
+    for request in requests {
+        let started = Instant::now();
+        if replica.world_mut().restore(&request.start).is_err() {
+            continue;
+        }
+        replica.set_controls(request.applied);
+        replica.step();
+        let optimizer = match &mut optimizer {
+            Some(o) if o.config == request.config => o,
+            slot => slot.insert(BikeOptimizer::new(&replica, request.config.clone())),
+        };
+        if request.reset {
+            optimizer.reset();
+        }
+        optimizer.note_applied(&request.applied);
+        optimizer.controls(&replica, request.desired_lean, &request.drive);
+        let Some(result) = optimizer.last_plan() else {
+            continue;
+        };
+        let plan = Plan {
+            epoch: request.epoch,
+            step: request.step,
+            sequence: optimizer.best_sequence(),
+            best_cost: result.best_cost,
+            resamples: result.resamples,
+            blowups: result.blowups,
+            planning_ms: started.elapsed().as_secs_f64() * 1000.0,
+            paths: result
+                .paths
+                .iter()
+                .map(|p| p.iter().map(|x| DVec3::from_array(*x)).collect())
+                .collect(),
+            best: result.best,
+            warm: result.warm_started.then_some(1),
+        };
+        if replies.send(plan).is_err() {
+            return;
+        }
+    }
+}

@@ -1,0 +1,67 @@
+class_name TrajectoryView
+extends MeshInstance3D
+## Draws the optimizer's last plan as in the thesis's Figure 4.10: each trajectory's
+## centre-of-mass path, the best in green, the refined (optimizer) or arcade (combined)
+## one in yellow, the others in black. Draws nothing while another controller drives.
+
+const BEST_COLOUR := Color(0.1, 0.9, 0.2)
+const WARM_COLOUR := Color(1.0, 0.85, 0.1)
+const OTHER_COLOUR := Color(0.02, 0.02, 0.02)
+
+## The simulation whose plans to draw; by default the parent.
+@export var simulation_path: NodePath = ^".."
+
+var _simulation: Node
+var _lines := ImmediateMesh.new()
+
+
+func _ready() -> void:
+	_simulation = get_node_or_null(simulation_path)
+	mesh = _lines
+	# Paths are in world coordinates, whatever the parent's transform.
+	top_level = true
+	global_transform = Transform3D.IDENTITY
+	var material := StandardMaterial3D.new()
+	material.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+	material.vertex_color_use_as_albedo = true
+	material_override = material
+	cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	if _simulation == null:
+		push_error("TrajectoryView: no BikeSimulation at %s" % simulation_path)
+		set_process(false)
+
+
+func _process(_delta: float) -> void:
+	_lines.clear_surfaces()
+	if not visible or not _simulation.call(&"is_running"):
+		return
+	var paths: Array[PackedVector3Array] = _simulation.call(&"get_trajectory_paths")
+	var best: int = _simulation.call(&"get_best_trajectory")
+	var warm: int = _simulation.call(&"get_warm_trajectory")
+	# Others first, then the highlighted two on top of them.
+	var order: Array[int] = []
+	for i: int in paths.size():
+		if i != best and i != warm:
+			order.append(i)
+	for i: int in [warm, best]:
+		if i >= 0 and i < paths.size():
+			order.append(i)
+	for i: int in order:
+		var path := paths[i]
+		if path.size() < 2:
+			continue
+		var colour := OTHER_COLOUR
+		if i == best:
+			colour = BEST_COLOUR
+		elif i == warm:
+			colour = WARM_COLOUR
+		_lines.surface_begin(Mesh.PRIMITIVE_LINE_STRIP)
+		_lines.surface_set_color(colour)
+		for point: Vector3 in path:
+			_lines.surface_add_vertex(point)
+		_lines.surface_end()
+
+
+## The number of trajectories drawn last frame (for tests and the HUD).
+func drawn_count() -> int:
+	return _lines.get_surface_count()
