@@ -40,16 +40,7 @@ fn planner(seed: u64) -> Planner {
 }
 
 fn planner_on_threads(seed: u64, threads: usize) -> Planner {
-    let priors = Priors {
-        mean: vec![0.0],
-        sigma_static: vec![3.0],
-        sigma_smooth1: vec![1.0],
-        sigma_smooth2: vec![1.0],
-        mutation_scale: 0.2,
-        lower: vec![-4.0],
-        upper: vec![4.0],
-        planned: vec![true],
-    };
+    let priors = Priors::uniform(1, 3.0, 1.0, 0.2, 4.0);
     Planner::new(
         PlannerConfig {
             particles: 16,

@@ -64,16 +64,7 @@ impl RolloutSystem for Pendulum {
 }
 
 fn planner() -> Planner {
-    let priors = Priors {
-        mean: vec![0.0],
-        sigma_static: vec![2.0],
-        sigma_smooth1: vec![1.0],
-        sigma_smooth2: vec![1.0],
-        mutation_scale: 0.2,
-        lower: vec![-4.0],
-        upper: vec![4.0],
-        planned: vec![true],
-    };
+    let priors = Priors::uniform(1, 2.0, 1.0, 0.2, 4.0);
     let config = PlannerConfig {
         particles: 16,
         steps: 24,

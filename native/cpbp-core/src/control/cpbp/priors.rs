@@ -21,6 +21,27 @@ pub struct Priors {
 }
 
 impl Priors {
+    /// The same priors for every one of `dim` dimensions, all planned, zero-mean, within
+    /// ±`bound`, with both smoothness priors at `sigma_smooth` (for toy systems).
+    pub fn uniform(
+        dim: usize,
+        sigma_static: f64,
+        sigma_smooth: f64,
+        mutation_scale: f64,
+        bound: f64,
+    ) -> Self {
+        Self {
+            mean: vec![0.0; dim],
+            sigma_static: vec![sigma_static; dim],
+            sigma_smooth1: vec![sigma_smooth; dim],
+            sigma_smooth2: vec![sigma_smooth; dim],
+            mutation_scale,
+            lower: vec![-bound; dim],
+            upper: vec![bound; dim],
+            planned: vec![true; dim],
+        }
+    }
+
     pub fn dim(&self) -> usize {
         self.mean.len()
     }
@@ -85,16 +106,7 @@ mod tests {
     use super::*;
 
     fn priors() -> Priors {
-        Priors {
-            mean: vec![0.0],
-            sigma_static: vec![2.0],
-            sigma_smooth1: vec![1.0],
-            sigma_smooth2: vec![1.0],
-            mutation_scale: 0.5,
-            lower: vec![-3.0],
-            upper: vec![3.0],
-            planned: vec![true],
-        }
+        Priors::uniform(1, 2.0, 1.0, 0.5, 3.0)
     }
 
     #[test]

@@ -129,16 +129,7 @@ mod tests {
     use super::*;
 
     fn priors(dim: usize) -> Priors {
-        Priors {
-            mean: vec![0.0; dim],
-            sigma_static: vec![1.0; dim],
-            sigma_smooth1: vec![1.0; dim],
-            sigma_smooth2: vec![1.0; dim],
-            mutation_scale: 0.2,
-            lower: vec![-1.0; dim],
-            upper: vec![1.0; dim],
-            planned: vec![true; dim],
-        }
+        Priors::uniform(dim, 1.0, 1.0, 0.2, 1.0)
     }
 
     #[test]
