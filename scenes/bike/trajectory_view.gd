@@ -43,8 +43,9 @@ func _process(_delta: float) -> void:
 	for i: int in paths.size():
 		if i != best and i != warm:
 			order.append(i)
+	# The best may be the warm-started one itself: draw it once, in green.
 	for i: int in [warm, best]:
-		if i >= 0 and i < paths.size():
+		if i >= 0 and i < paths.size() and i not in order:
 			order.append(i)
 	for i: int in order:
 		var path := paths[i]
