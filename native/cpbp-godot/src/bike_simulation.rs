@@ -177,14 +177,7 @@ impl BikeSimulation {
     /// path, and the lean the controller aims for follows from it and the speed (eq. 4.4).
     #[func]
     fn set_turn(&mut self, command: f64) {
-        if !command.is_finite() {
-            godot_warn!("BikeSimulation.set_turn: non-finite command treated as 0");
-        }
-        self.turn = if command.is_finite() {
-            command.clamp(-1.0, 1.0)
-        } else {
-            0.0
-        };
+        self.turn = finite_input(command, 1.0, "set_turn");
         self.raw_controls = None;
     }
 
@@ -201,14 +194,7 @@ impl BikeSimulation {
     /// bar spring back to centre.
     #[func]
     fn set_steer_rate(&mut self, rate: f64) {
-        if !rate.is_finite() {
-            godot_warn!("BikeSimulation.set_steer_rate: non-finite rate treated as 0");
-        }
-        self.steer_rate = if rate.is_finite() {
-            rate.clamp(-4.0, 4.0)
-        } else {
-            0.0
-        };
+        self.steer_rate = finite_input(rate, 4.0, "set_steer_rate");
         self.raw_controls = None;
     }
 
@@ -606,6 +592,16 @@ impl BikeSimulation {
                 )
             })
             .collect();
+    }
+}
+
+/// A player input clamped to ±`bound`; a non-finite one counts as 0, with a warning.
+fn finite_input(value: f64, bound: f64, function: &str) -> f64 {
+    if value.is_finite() {
+        value.clamp(-bound, bound)
+    } else {
+        godot_warn!("BikeSimulation.{function}: non-finite input {value} treated as 0");
+        0.0
     }
 }
 

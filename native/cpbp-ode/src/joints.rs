@@ -85,12 +85,7 @@ impl World {
 
     /// Angle limits (radians) of a hinge (axis 0) or an Euler motor (axes 0–2).
     pub fn set_joint_limits(&mut self, joint: JointId, axis: usize, lo: f64, hi: f64) {
-        let (id, kind) = self.joints[joint.0];
-        assert!(
-            axis < kind.motor_axes(),
-            "joint {joint:?} has no axis {axis}"
-        );
-        let group = PARAM_GROUP * axis as i32;
+        let (id, kind, group) = self.axis_params(joint, axis);
         // SAFETY: the joint belongs to this world and has this axis.
         unsafe {
             self.set_param(id, kind, group + ffi::dParamLoStop as i32, lo);
@@ -102,12 +97,7 @@ impl World {
 
     /// Target angular velocity (rad/s) and force limit (N·m) of one motor axis.
     pub fn set_motor(&mut self, joint: JointId, axis: usize, velocity: f64, max_force: f64) {
-        let (id, kind) = self.joints[joint.0];
-        assert!(
-            axis < kind.motor_axes(),
-            "joint {joint:?} has no motor axis {axis}"
-        );
-        let group = PARAM_GROUP * axis as i32;
+        let (id, kind, group) = self.axis_params(joint, axis);
         // SAFETY: the joint belongs to this world and has this axis.
         unsafe {
             self.set_param(id, kind, group + ffi::dParamVel as i32, velocity);
@@ -170,6 +160,17 @@ impl World {
     /// Number of joints (contacts excluded).
     pub fn joint_count(&self) -> usize {
         self.joints.len()
+    }
+
+    /// The joint, its kind and the parameter group of `axis`; panics if it has no such
+    /// axis (a programming error: joints are built by this crate's callers once).
+    fn axis_params(&self, joint: JointId, axis: usize) -> (ffi::dJointID, JointKind, i32) {
+        let (id, kind) = self.joints[joint.0];
+        assert!(
+            axis < kind.motor_axes(),
+            "joint {joint:?} has no axis {axis}"
+        );
+        (id, kind, PARAM_GROUP * axis as i32)
     }
 
     fn push_joint(&mut self, joint: ffi::dJointID, kind: JointKind) -> JointId {

@@ -289,27 +289,22 @@ impl Bike {
 
     /// Mass-weighted centre of all bodies.
     pub fn center_of_mass(&self, world: &World) -> DVec3 {
-        let (sum, mass) = self
-            .bodies
-            .iter()
-            .fold((DVec3::ZERO, 0.0), |(sum, mass), &b| {
-                let m = world.body_mass(b);
-                (sum + from_array(world.body_position(b)) * m, mass + m)
-            });
-        sum / mass
+        self.mass_weighted(world, |b| world.body_position(b))
     }
 
     /// Mass-weighted velocity of all bodies: only external forces change it.
     pub fn center_of_mass_velocity(&self, world: &World) -> DVec3 {
+        self.mass_weighted(world, |b| world.body_linear_velocity(b))
+    }
+
+    /// The mass-weighted mean of a per-body vector.
+    fn mass_weighted(&self, world: &World, of: impl Fn(BodyId) -> [f64; 3]) -> DVec3 {
         let (sum, mass) = self
             .bodies
             .iter()
             .fold((DVec3::ZERO, 0.0), |(sum, mass), &b| {
                 let m = world.body_mass(b);
-                (
-                    sum + from_array(world.body_linear_velocity(b)) * m,
-                    mass + m,
-                )
+                (sum + from_array(of(b)) * m, mass + m)
             });
         sum / mass
     }

@@ -133,6 +133,8 @@ impl AnytimeOptimizer {
     ) -> Controls {
         self.take_plan();
         let dt = sim.config().control_dt;
+        // Run every step, used or not, so its memory is in step with the master whenever
+        // a plan is missing.
         let fallback =
             self.arcade
                 .controls(sim.bike(), sim.world(), desired_lean, drive, sim.up(), dt);

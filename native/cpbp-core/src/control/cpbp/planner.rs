@@ -188,8 +188,13 @@ impl Planner {
         self.frame += 1;
 
         let (guides, replays) = self.choose_guides(n, warm, &mut resampler);
-        systems[0].restore(start);
-        let start_features = systems[0].features();
+        // Features feed only the refinement: skip them (a hot path) when it is off.
+        let start_features = if self.config.refine {
+            systems[0].restore(start);
+            systems[0].features()
+        } else {
+            Vec::new()
+        };
         let mut states: Vec<S::State> = vec![start.clone(); n];
         let mut weights = vec![1.0 / n as f64; n];
         let mut totals = vec![0.0; n];
@@ -283,13 +288,14 @@ impl Planner {
         }
 
         normalise(&mut weights);
-        let smoothed = smoothed_beliefs(&weights_per_step, &potentials_per_step, &parents_per_step);
         let sequences = lineages(&parents_per_step, &controls_per_step);
         let best = (0..n)
             .min_by(|a, b| totals[*a].total_cmp(&totals[*b]))
             .unwrap_or(0);
         let control = sequences[best][..dim].to_vec();
         let refined = if self.config.refine {
+            let smoothed =
+                smoothed_beliefs(&weights_per_step, &potentials_per_step, &parents_per_step);
             let steps: Vec<StepSamples> = (0..k_steps)
                 .map(|k| StepSamples {
                     before: parents_per_step[k]
@@ -362,7 +368,11 @@ impl Planner {
         Outcome {
             control_cost: self.config.control_cost_weight
                 * self.priors.cost(&control, previous, before_previous),
-            features: system.features(),
+            features: if self.config.refine {
+                system.features()
+            } else {
+                Vec::new()
+            },
             point: system.trace_point(),
             state: system.save(),
             control,
