@@ -8,7 +8,7 @@ if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
        cannot open. On a machine without a screen, run it under a virtual display:
          xvfb-run -a -s "-screen 0 1280x720x24" make play
        or take a screenshot of a scene with:
-         tools/screenshot.sh res://scenes/ui/title_screen.tscn build/screenshots/title.png
+         tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/start-menu.png
 MSG
   exit 1
 fi

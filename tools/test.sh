@@ -36,8 +36,16 @@ step "gdformat"             bash -c "$(declare -f gdscript_files); gdscript_file
 step "test runner self-test" tools/test-runner-selftest.sh
 step "GDScript suites"      godot_suites
 screenshots() {
-  tools/screenshot.sh res://scenes/ui/title_screen.tscn build/screenshots/title.png \
-    && tools/screenshot.sh res://scenes/sandbox.tscn build/screenshots/sandbox.png 45
+  local game=res://scenes/game/game.tscn levels=res://scenes/levels
+  tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/start-menu.png \
+    && tools/screenshot.sh $game build/screenshots/test-level.png 150 \
+         --set=level_path=$levels/test_level/test_level.tscn \
+    && tools/screenshot.sh $game build/screenshots/track.png 240 \
+         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
+    && tools/screenshot.sh $game build/screenshots/skate-park.png 150 \
+         --set=level_path=$levels/skate_park/skate_park.tscn --tap=next_spawn@5 --hold=throttle:0.6 \
+    && tools/screenshot.sh $game build/screenshots/pause-menu.png 60 \
+         --set=level_path=$levels/track/track.tscn --tap=pause@40
 }
 
 step "screenshots (Xvfb)"   screenshots

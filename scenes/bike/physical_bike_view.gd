@@ -31,7 +31,8 @@ func _ready() -> void:
 
 
 func _process(_delta: float) -> void:
-	_follow()
+	if visible:
+		_follow()
 
 
 func _add_shape(shape: Dictionary) -> void:

@@ -1,32 +1,43 @@
 class_name FollowCamera
 extends Camera3D
-## Follows the bike from behind and a little to the side (as the thesis's camera did, so
-## both the rider and the road ahead stay in view), smoothly, never turning upside down.
+## Follows the bike from behind and a little to the side (the thesis's camera, §6.2, so
+## both rider and road stay in view), smoothly and never upside down. The right stick
+## (or I/J/K/L, or dragging with the right mouse button) orbits around the bike; the view
+## drifts back behind it when let go. The camera never goes through the level's
+## geometry: it moves in front of whatever is between it and the bike.
 
-## The BikeSimulation to follow.
-@export var target_path: NodePath
+## Lowest and highest pitch of the orbit (rad) relative to the default view.
+const PITCH_LIMITS := Vector2(-0.25, 1.0)
+## Distance kept from geometry between the camera and the bike (m).
+const CLEARANCE := 0.3
+
 ## Metres behind, beside (to the right) and above the bike's centre of mass.
 @export var offset := Vector3(2.6, 1.5, 4.2)
 ## How quickly the camera catches up (1/s); higher is stiffer.
 @export var stiffness := 4.0
+## Orbit speed at full stick (rad/s).
+@export var orbit_speed := 2.2
+## Seconds after the stick is let go before the view drifts back behind the bike.
+@export var recentre_delay := 2.0
+## Mouse orbit (rad per pixel while the right button is held).
+@export var mouse_sensitivity := 0.006
 
-var _target: Node
+## The bike to follow.
+var target: BikeSimulation
+## Orbit around the bike: yaw (rad, positive to the left) and pitch (rad, positive up).
+var orbit := Vector2.ZERO
+
 var _heading := Vector3.FORWARD
 var _placed := false
-
-
-func _ready() -> void:
-	_target = get_node_or_null(target_path)
-	if _target == null:
-		push_error("FollowCamera: no target at %s" % target_path)
-		set_process(false)
+var _idle := 0.0
 
 
 func _process(delta: float) -> void:
-	if not _target.call(&"is_running"):
+	if target == null or not target.is_running():
 		return
-	var centre: Vector3 = _target.call(&"get_center_of_mass")
-	var frame: Transform3D = _target.call(&"get_body_transform", 3)
+	_orbit_from_stick(delta)
+	var centre := target.get_center_of_mass()
+	var frame := target.get_body_transform(3)
 	# The frame's forward (−z of the bike's node frame is +x of its body frame).
 	var forward := frame.basis.x
 	forward.y = 0.0
@@ -36,9 +47,50 @@ func _process(delta: float) -> void:
 		var blended := _heading.lerp(forward.normalized(), clampf(stiffness * delta, 0.0, 1.0))
 		if blended.length() > 1e-3:
 			_heading = blended.normalized()
-	var right := _heading.cross(Vector3.UP).normalized()
-	var wanted := centre - _heading * offset.z + right * offset.x + Vector3.UP * offset.y
+	var wanted := centre + _offset_around(_heading)
 	var catch_up := clampf(stiffness * delta, 0.0, 1.0) if _placed else 1.0
-	global_position = global_position.lerp(wanted, catch_up)
+	global_position = _unblocked(centre, global_position.lerp(wanted, catch_up))
 	_placed = true
-	look_at(centre + _heading * 2.0, Vector3.UP)
+	look_at(centre + _heading * 2.0 * cos(orbit.x), Vector3.UP)
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	var motion := event as InputEventMouseMotion
+	if motion != null and motion.button_mask & MOUSE_BUTTON_MASK_RIGHT:
+		orbit.x -= motion.relative.x * mouse_sensitivity
+		orbit.y += motion.relative.y * mouse_sensitivity
+		orbit.y = clampf(orbit.y, PITCH_LIMITS.x, PITCH_LIMITS.y)
+		_idle = 0.0
+
+
+func _orbit_from_stick(delta: float) -> void:
+	var stick := Input.get_vector(&"camera_left", &"camera_right", &"camera_down", &"camera_up")
+	if stick.length() > 0.0:
+		orbit.x -= stick.x * orbit_speed * delta
+		orbit.y = clampf(orbit.y + stick.y * orbit_speed * delta, PITCH_LIMITS.x, PITCH_LIMITS.y)
+		_idle = 0.0
+		return
+	_idle += delta
+	if _idle > recentre_delay:
+		orbit.x = wrapf(orbit.x, -PI, PI)
+		orbit = orbit.lerp(Vector2.ZERO, clampf(1.5 * delta, 0.0, 1.0))
+
+
+## The camera's offset from the bike for a heading, turned by the orbit.
+func _offset_around(heading: Vector3) -> Vector3:
+	var right := heading.cross(Vector3.UP).normalized()
+	var behind := -heading * offset.z + right * offset.x
+	var pitched := behind.length() * cos(orbit.y)
+	var height := offset.y + behind.length() * sin(orbit.y)
+	return (behind.normalized() * pitched).rotated(Vector3.UP, orbit.x) + Vector3.UP * height
+
+
+## `wanted`, or the point just in front of the first thing between it and `centre`.
+func _unblocked(centre: Vector3, wanted: Vector3) -> Vector3:
+	var query := PhysicsRayQueryParameters3D.create(centre, wanted)
+	var hit := get_world_3d().direct_space_state.intersect_ray(query)
+	if hit.is_empty():
+		return wanted
+	var to_camera := wanted - centre
+	var reach := maxf((hit.position as Vector3).distance_to(centre) - CLEARANCE, 0.5)
+	return centre + to_camera.normalized() * minf(reach, to_camera.length())

@@ -1,6 +1,7 @@
 extends TestCase
 ## The follow camera stays with the bike through long turns, behind and above it, without
-## numerical drift (any engine error raised while it runs fails the test).
+## numerical drift (any engine error raised while it runs fails the test), and never ends
+## up behind a wall.
 
 var _level: Node3D
 var _bike: BikeSimulation
@@ -13,7 +14,7 @@ func before_each() -> void:
 	_bike.name = "Bike"
 	_level.add_child(_bike)
 	_camera = FollowCamera.new()
-	_camera.target_path = ^"../Bike"
+	_camera.target = _bike
 	_level.add_child(_camera)
 	add_child(_level)
 	await wait_physics_frames(1)
@@ -34,3 +35,27 @@ func test_it_follows_a_bike_riding_circles() -> void:
 		assert_gt(-_camera.global_basis.z.dot(to_bike.normalized()), 0.9, "looking at the bike")
 	assert_false(_bike.is_crashed(), "the arcade controller kept it up through 20 s of circles")
 	assert_gt(_camera.global_position.y, _bike.get_center_of_mass().y, "above the bike")
+
+
+func test_a_wall_between_bike_and_camera_pulls_the_camera_in() -> void:
+	# The camera sits about 5 m behind and to the right; a wall 2 m behind the bike.
+	var wall := StaticBody3D.new()
+	var shape := CollisionShape3D.new()
+	var box := BoxShape3D.new()
+	box.size = Vector3(20, 6, 0.3)
+	shape.shape = box
+	wall.add_child(shape)
+	wall.position = Vector3(0, 2, 2)
+	_level.add_child(wall)
+	await wait_frames(30)
+	assert_lt(_camera.global_position.z, 2.0 - 0.15, "in front of the wall")
+	assert_gt(_camera.global_position.z, 0.0, "still behind the bike")
+
+
+func test_the_right_stick_orbits_and_the_view_drifts_back() -> void:
+	Input.action_press(&"camera_right")
+	await wait_frames(30)
+	Input.action_release(&"camera_right")
+	assert_lt(_camera.orbit.x, -0.5, "orbited")
+	await wait_frames(300)
+	assert_almost_eq(_camera.orbit.x, 0.0, 0.1, "back behind the bike after a while")

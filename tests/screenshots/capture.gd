@@ -3,7 +3,10 @@ extends Node
 ## when the picture is blank (one flat colour, or nearly so): a scene that loads but shows
 ## a grey screen is a bug. Run under Xvfb by tools/screenshot.sh.
 ##
-## Arguments after `--`: `--scene=res://…`, `--out=PATH.png`, `--frames=N` (default 30).
+## Arguments after `--`: `--scene=res://…`, `--out=PATH.png`, `--frames=N` (default 30),
+## and to stage the picture: `--set=property=value` (on the scene's root before it enters
+## the tree, repeatable), `--hold=action` (held throughout, repeatable, `action:0.5` for
+## part strength) and `--tap=action@frame` (pressed once at that frame, repeatable).
 
 const MIN_DISTINCT_COLOURS := 12
 const MIN_LUMINANCE_SPREAD := 0.04
@@ -11,10 +14,13 @@ const MIN_LUMINANCE_SPREAD := 0.04
 
 func _ready() -> void:
 	var options := {scene = "", out = "", frames = "30"}
+	var staging := {"set": [], "hold": [], "tap": []}
 	for argument: String in OS.get_cmdline_user_args():
 		var parts := argument.trim_prefix("--").split("=", true, 1)
 		if parts.size() == 2 and options.has(parts[0]):
 			options[parts[0]] = parts[1]
+		elif parts.size() == 2 and staging.has(parts[0]):
+			(staging[parts[0]] as Array).append(parts[1])
 	if options.scene.is_empty() or options.out.is_empty():
 		_quit_with("usage: -- --scene=res://… --out=PATH.png [--frames=N]", 2)
 		return
@@ -22,8 +28,19 @@ func _ready() -> void:
 	if packed == null:
 		_quit_with("cannot load scene %s" % options.scene, 1)
 		return
-	add_child(packed.instantiate())
-	for _i: int in int(options.frames):
+	var root := packed.instantiate()
+	for assignment: String in staging["set"]:
+		var pair := assignment.split("=", true, 1)
+		root.set(pair[0], str_to_var(pair[1]) if str_to_var(pair[1]) != null else pair[1])
+	add_child(root)
+	for held: String in staging["hold"]:
+		var action := held.split(":")
+		Input.action_press(action[0], float(action[1]) if action.size() > 1 else 1.0)
+	for frame: int in int(options.frames):
+		for tap: String in staging["tap"]:
+			var at := tap.split("@")
+			if at.size() == 2 and int(at[1]) == frame:
+				_tap(at[0])
 		await get_tree().process_frame
 	await RenderingServer.frame_post_draw
 	var image := get_viewport().get_texture().get_image()
@@ -48,6 +65,16 @@ func _ready() -> void:
 		)
 	)
 	_quit_with("", 1 if blank else 0)
+
+
+func _tap(action: String) -> void:
+	var event := InputEventAction.new()
+	event.action = action
+	event.pressed = true
+	Input.parse_input_event(event)
+	event = event.duplicate()
+	event.pressed = false
+	Input.parse_input_event(event)
 
 
 ## Distinct colours (4 bits a channel) and luminance standard deviation over a 64×36 grid.

@@ -32,6 +32,9 @@ pub struct BikeSimulation {
     /// Speed (km/h) full throttle drives towards.
     #[export(range = (1.0, 90.0))]
     max_speed_kmh: f64,
+    /// Share of the rear motor's torque (700 N·m) that full throttle or brake uses.
+    #[export(range = (0.1, 1.0, 0.05))]
+    motor_force: f64,
     /// ODE steps per control step (more: stiffer joints, slower).
     #[export(range = (1.0, 16.0))]
     substeps: i32,
@@ -64,6 +67,7 @@ pub struct BikeSimulation {
     #[export]
     wait_for_throttle: bool,
     started: bool,
+    steps_since_reset: u64,
     sim: Option<Simulation>,
     accumulator: f64,
     previous_poses: Vec<(DVec3, DQuat)>,
@@ -83,6 +87,7 @@ impl INode3D for BikeSimulation {
         Self {
             terrain_root: NodePath::from(".."),
             max_speed_kmh: 25.0,
+            motor_force: 1.0,
             substeps: 4,
             controller: 0,
             trajectories: 15,
@@ -92,6 +97,7 @@ impl INode3D for BikeSimulation {
             plan_wait_ms: 12.0,
             wait_for_throttle: false,
             started: false,
+            steps_since_reset: 0,
             sim: None,
             accumulator: 0.0,
             previous_poses: Vec::new(),
@@ -139,9 +145,7 @@ impl INode3D for BikeSimulation {
         }
         while self.accumulator >= dt {
             self.accumulator -= dt;
-            self.remember_poses();
-            let events = self.step_once();
-            self.emit(events);
+            self.advance_one();
         }
     }
 }
@@ -164,9 +168,10 @@ impl BikeSimulation {
         if !(throttle.is_finite() && brake.is_finite()) {
             godot_warn!("BikeSimulation.set_drive: non-finite input ({throttle}, {brake}) treated as released");
         }
+        let force = self.motor_force.clamp(0.1, 1.0);
         self.drive = DriveInput {
-            throttle,
-            brake,
+            throttle: throttle * force,
+            brake: brake * force,
             max_speed: self.max_speed_kmh / 3.6,
         }
         .sanitized();
@@ -229,8 +234,30 @@ impl BikeSimulation {
         }
         self.forget_plans();
         self.started = false;
+        self.steps_since_reset = 0;
         self.accumulator = 0.0;
         self.remember_poses();
+    }
+
+    /// Runs `steps` control steps at once, as fast as the machine allows (headless tests
+    /// and experiments; stop `_physics_process` first). With `plan_wait_ms` at or above
+    /// the planning time every step uses a fresh plan, so results repeat for a seed.
+    #[func]
+    fn advance(&mut self, steps: i64) {
+        if !(0..=100_000).contains(&steps) {
+            godot_error!("BikeSimulation.advance: {steps} steps is out of range (0–100000)");
+            return;
+        }
+        self.started = true;
+        for _ in 0..steps {
+            self.advance_one();
+        }
+    }
+
+    /// Control steps simulated since the bike was built or last placed.
+    #[func]
+    fn get_step_count(&self) -> i64 {
+        self.steps_since_reset as i64
     }
 
     /// Stands a fallen bike up where it lies.
@@ -487,6 +514,16 @@ impl BikeSimulation {
                 None
             }
         }
+    }
+
+    fn advance_one(&mut self) {
+        if self.sim.is_none() {
+            return;
+        }
+        self.remember_poses();
+        let events = self.step_once();
+        self.steps_since_reset += 1;
+        self.emit(events);
     }
 
     fn step_once(&mut self) -> StepEvents {

@@ -4,6 +4,7 @@ mod bike_simulation;
 mod convert;
 mod native_info;
 mod ode_world;
+mod terrain_check;
 mod terrain_import;
 
 use godot::prelude::*;

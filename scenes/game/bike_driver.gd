@@ -1,0 +1,35 @@
+class_name BikeDriver
+extends Node
+## The player's hands: reads the throttle, brake and turn actions every physics tick and
+## passes them to the bike. Auto-accelerate (X / F) holds a chosen speed instead of the
+## triggers; an automatic level also takes the turn command away, as in the thesis's test.
+
+## Throttle used by auto-accelerate: the rear motor drives towards the chosen speed with
+## this share of its force, so the start is brisk without lifting the front wheel.
+const AUTO_THROTTLE := 0.6
+
+## The bike being driven (set by the game).
+var bike: BikeSimulation
+## Hold `auto_speed_kmh` without the triggers.
+var auto_accelerate := false
+## Speed auto-accelerate holds (km/h).
+var auto_speed_kmh := 15.0
+## Ignore the turn command (automatic levels).
+var steering_locked := false
+## Top speed (km/h) of full throttle when driving by hand.
+var max_speed_kmh := 40.0
+
+
+func _physics_process(_delta: float) -> void:
+	if bike == null:
+		return
+	if auto_accelerate:
+		bike.max_speed_kmh = auto_speed_kmh
+		bike.set_drive(AUTO_THROTTLE, Input.get_action_strength(&"brake"))
+	else:
+		bike.max_speed_kmh = max_speed_kmh
+		bike.set_drive(Input.get_action_strength(&"throttle"), Input.get_action_strength(&"brake"))
+	var turn := 0.0 if steering_locked else Input.get_axis(&"steer_left", &"steer_right")
+	bike.set_turn(turn)
+	# Without a controller (manual mode) the stick steers the bar directly.
+	bike.set_steer_rate(-turn * 0.6)

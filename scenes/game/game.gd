@@ -1,0 +1,188 @@
+class_name Game
+extends Node3D
+## One ride on one level: builds the level and the bike at its first spawn point, applies
+## the player's settings, runs the level's rules and handles the game buttons (respawn,
+## lift, spawn points, controller, trajectories, pause). The level comes from the
+## settings unless `level_path` names one.
+
+## BikeSimulation.controller values in the order Start cycles them.
+const CONTROLLER_CYCLE: Array[int] = [2, 3, 0]
+const CONTROLLER_NAMES := {0: "arcade", 1: "manual", 2: "optimizer", 3: "combined"}
+const BIKE := preload("res://scenes/bike/bike.tscn")
+const START_MENU := "res://scenes/ui/start_menu.tscn"
+## Seconds a result stays on screen before an automatic level starts the next attempt.
+const RESULT_PAUSE := 2.5
+
+## Level scene to ride; empty: the one chosen in the settings.
+@export_file("*.tscn") var level_path := ""
+
+var level: Level
+var bike: BikeSimulation
+## Attempts finished, and how many reached the goal, on this level.
+var attempts := 0
+var successes := 0
+var falls := 0
+
+var _spawn_index := 0
+var _attempt_seed := 1
+var _finished_for := -1.0
+
+@onready var _driver: BikeDriver = $Driver
+@onready var _camera: FollowCamera = $Camera
+@onready var _hud: Hud = $Hud
+@onready var _pause_menu: PauseMenu = $PauseMenu
+
+
+func _ready() -> void:
+	var path := (
+		level_path if not level_path.is_empty() else Levels.path_of(Settings.get_value(&"level"))
+	)
+	var packed := load(path) as PackedScene if ResourceLoader.exists(path) else null
+	var instance := packed.instantiate() if packed != null else null
+	if not instance is Level:
+		push_error("Game: %s is not a level scene; riding the test level" % path)
+		if instance != null:
+			instance.free()
+		instance = (load(Levels.path_of("test_level")) as PackedScene).instantiate()
+	level = instance as Level
+	level.name = "Level"
+	add_child(level)
+	var spawns := level.spawn_points()
+	bike = BIKE.instantiate() as BikeSimulation
+	bike.terrain_root = ^"../Level"
+	bike.wait_for_throttle = true
+	bike.plan_wait_ms = 12.0
+	if not spawns.is_empty():
+		bike.transform = spawns[0].spawn_transform()
+	add_child(bike)
+	_driver.bike = bike
+	_camera.target = bike
+	_hud.bind(self)
+	_pause_menu.bind(self)
+	level.announced.connect(_hud.announce)
+	bike.crashed.connect(_on_crashed)
+	Settings.changed.connect(_apply_setting)
+	for key: StringName in Settings.DEFAULTS:
+		_apply_setting(key)
+	restart()
+
+
+func _physics_process(delta: float) -> void:
+	if not bike.is_running():
+		return
+	if _finished_for >= 0.0:
+		_finished_for += delta
+		if level.automatic and _finished_for >= RESULT_PAUSE:
+			restart()
+		return
+	if bike.is_waiting_for_throttle():
+		return
+	var outcome := level.judge(bike, delta)
+	if outcome != Level.RIDING:
+		_finish(outcome)
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if event.is_action_pressed(&"pause"):
+		_pause_menu.open()
+	elif event.is_action_pressed(&"reset_bike"):
+		restart()
+	elif event.is_action_pressed(&"lift_bike"):
+		bike.lift_upright()
+		_finished_for = -1.0
+	elif event.is_action_pressed(&"next_spawn"):
+		cycle_spawn(1)
+	elif event.is_action_pressed(&"previous_spawn"):
+		cycle_spawn(-1)
+	elif event.is_action_pressed(&"cycle_controller"):
+		var current := CONTROLLER_CYCLE.find(int(Settings.get_value(&"controller")))
+		Settings.set_value(&"controller", CONTROLLER_CYCLE[(current + 1) % CONTROLLER_CYCLE.size()])
+		_hud.announce("Controller: %s" % controller_name())
+	elif event.is_action_pressed(&"toggle_trajectories"):
+		Settings.set_value(&"show_trajectories", not Settings.get_value(&"show_trajectories"))
+	elif event.is_action_pressed(&"toggle_auto_accelerate") and not level.automatic:
+		Settings.set_value(&"auto_accelerate", not Settings.get_value(&"auto_accelerate"))
+		_hud.announce("Auto-accelerate %s" % ("on" if _driver.auto_accelerate else "off"))
+
+
+## Puts the bike back at the current spawn point and starts a new attempt at once.
+func restart() -> void:
+	var spawns := level.spawn_points()
+	if spawns.is_empty():
+		push_error("Game: the level has no SpawnPoint")
+		return
+	_spawn_index = posmod(_spawn_index, spawns.size())
+	bike.reset_to(spawns[_spawn_index].spawn_transform())
+	if level.begin_attempt(bike, _attempt_seed):
+		bike.rebuild_terrain()
+	_attempt_seed += 1
+	_finished_for = -1.0
+
+
+## Moves to the next (`step` 1) or previous (−1) spawn point and respawns there.
+func cycle_spawn(step: int) -> void:
+	var spawns := level.spawn_points()
+	if spawns.size() == 0:
+		return
+	_spawn_index = posmod(_spawn_index + step, spawns.size())
+	restart()
+	var label := spawns[_spawn_index].label
+	_hud.announce(
+		"Spawn point %d/%d%s" % [_spawn_index + 1, spawns.size(), (": " + label) if label else ""]
+	)
+
+
+## Index of the spawn point in use.
+func spawn_index() -> int:
+	return _spawn_index
+
+
+## Name of the controller in use.
+func controller_name() -> String:
+	return CONTROLLER_NAMES.get(bike.controller, "?")
+
+
+## Leaves for the start menu.
+func quit_to_menu() -> void:
+	get_tree().paused = false
+	get_tree().change_scene_to_file(START_MENU)
+
+
+func _finish(outcome: String) -> void:
+	_finished_for = 0.0
+	attempts += 1
+	match outcome:
+		Level.GOAL:
+			successes += 1
+			_hud.announce("Reached the goal in %s" % Level.format_time(level.elapsed))
+		Level.TIMEOUT:
+			_hud.announce("Out of time")
+		Level.FELL:
+			_hud.announce("Fell" if level.automatic else "Fell: B / R to respawn, A / T to lift")
+
+
+func _on_crashed(_cause: String) -> void:
+	falls += 1
+
+
+func _apply_setting(key: StringName) -> void:
+	var value: Variant = Settings.get_value(key)
+	match key:
+		&"controller":
+			bike.controller = value
+		&"trajectories":
+			bike.trajectories = value
+		&"motor_force":
+			bike.motor_force = value
+		&"max_speed_kmh":
+			_driver.max_speed_kmh = value
+		&"auto_speed_kmh":
+			_driver.auto_speed_kmh = value
+		&"auto_accelerate":
+			_driver.auto_accelerate = value or level.automatic
+		&"show_trajectories":
+			bike.get_node(^"TrajectoryView").visible = value
+		&"physical_model":
+			bike.get_node(^"PhysicalBikeView").visible = value
+			bike.get_node(^"VisualBikeView").visible = not value
+	_driver.steering_locked = level.automatic

@@ -1,0 +1,117 @@
+@tool
+class_name RampPiece
+extends StaticBody3D
+## A solid prism for ramps, hills, tables, drops and steps: it rises over `up_length`
+## to `height`, stays level for `top_length` and comes down over `down_length` (along this
+## node's −z, starting at its origin). A length of 0 makes that face vertical: a step to
+## climb or a drop to ride off. Builds its own convex collision shape and mesh.
+
+## Width (m), centred on the origin.
+@export_range(0.5, 40.0, 0.1, "suffix:m") var width := 4.0:
+	set(value):
+		width = value
+		_build()
+## Height of the top (m).
+@export_range(0.05, 10.0, 0.05, "suffix:m") var height := 0.6:
+	set(value):
+		height = value
+		_build()
+## Length of the way up (m); 0 is a vertical step.
+@export_range(0.0, 40.0, 0.1, "suffix:m") var up_length := 4.0:
+	set(value):
+		up_length = value
+		_build()
+## Length of the level top (m).
+@export_range(0.0, 80.0, 0.1, "suffix:m") var top_length := 2.0:
+	set(value):
+		top_length = value
+		_build()
+## Length of the way down (m); 0 is a drop.
+@export_range(0.0, 40.0, 0.1, "suffix:m") var down_length := 4.0:
+	set(value):
+		down_length = value
+		_build()
+## Colour of the surface.
+@export var colour := Color(0.6, 0.55, 0.48):
+	set(value):
+		colour = value
+		_build()
+
+var _shape: CollisionShape3D
+var _mesh: MeshInstance3D
+
+
+func _ready() -> void:
+	_build()
+
+
+func _build() -> void:
+	if not is_inside_tree():
+		return
+	if _shape == null:
+		_shape = CollisionShape3D.new()
+		_shape.name = "Shape"
+		add_child(_shape)
+		_mesh = MeshInstance3D.new()
+		_mesh.name = "Mesh"
+		add_child(_mesh)
+	var profile := _profile()
+	var points := PackedVector3Array()
+	for side: float in [-width / 2.0, width / 2.0]:
+		for p: Vector2 in profile:
+			points.append(Vector3(side, p.y, -p.x))
+	var convex := ConvexPolygonShape3D.new()
+	convex.points = points
+	_shape.shape = convex
+	_mesh.mesh = _prism_mesh(profile)
+
+
+## The side profile as (distance forward, height), anticlockwise from the rear bottom,
+## without repeated points where a face is vertical or the top has no length.
+func _profile() -> PackedVector2Array:
+	var end := maxf(up_length + top_length + down_length, 0.05)
+	var corners: Array[Vector2] = [
+		Vector2(0.0, 0.0),
+		Vector2(end, 0.0),
+		Vector2(up_length + top_length, height) if down_length > 0.0 else Vector2(end, height),
+		Vector2(up_length, height),
+	]
+	var profile := PackedVector2Array()
+	for corner in corners:
+		if profile.is_empty() or not profile[-1].is_equal_approx(corner):
+			profile.append(corner)
+	if profile.size() > 3 and profile[-1].is_equal_approx(profile[0]):
+		profile.remove_at(profile.size() - 1)
+	return profile
+
+
+func _prism_mesh(profile: PackedVector2Array) -> ArrayMesh:
+	var tool := SurfaceTool.new()
+	tool.begin(Mesh.PRIMITIVE_TRIANGLES)
+	var left := -width / 2.0
+	var right := width / 2.0
+	var at := func(p: Vector2, x: float) -> Vector3: return Vector3(x, p.y, -p.x)
+	# Sides: a fan over the convex profile (winding per side so both face outwards).
+	for i in range(1, profile.size() - 1):
+		tool.add_vertex(at.call(profile[0], right))
+		tool.add_vertex(at.call(profile[i + 1], right))
+		tool.add_vertex(at.call(profile[i], right))
+		tool.add_vertex(at.call(profile[0], left))
+		tool.add_vertex(at.call(profile[i], left))
+		tool.add_vertex(at.call(profile[i + 1], left))
+	# The faces around the profile, each a quad between the two sides.
+	for i in profile.size():
+		var a := profile[i]
+		var b := profile[(i + 1) % profile.size()]
+		tool.add_vertex(at.call(a, left))
+		tool.add_vertex(at.call(a, right))
+		tool.add_vertex(at.call(b, right))
+		tool.add_vertex(at.call(a, left))
+		tool.add_vertex(at.call(b, right))
+		tool.add_vertex(at.call(b, left))
+	tool.generate_normals()
+	var material := StandardMaterial3D.new()
+	material.albedo_color = colour
+	material.roughness = 0.85
+	tool.set_material(material)
+	return tool.commit()

@@ -1,0 +1,32 @@
+class_name TestRun
+extends RefCounted
+## One attempt at the test level, simulated as fast as the machine allows (headless tests
+## and the experiment): the bike is put at the start, the bumps are laid out for the seed,
+## and auto-accelerate rides it at the chosen speed with no turn command until the level
+## judges the attempt. The game plays the same attempt in real time.
+
+
+## Rides one attempt and returns `outcome` (Level.GOAL, FELL or TIMEOUT), `time` (s),
+## `distance` (m towards the goal) and `steps` (control steps simulated). The bike's
+## `_physics_process` must be off so only this drives it.
+static func ride(
+	level: TestLevel, bike: BikeSimulation, seed_value: int, speed_kmh: float
+) -> Dictionary:
+	var spawn := level.spawn_points()[0]
+	bike.reset_to(spawn.spawn_transform())
+	if level.begin_attempt(bike, seed_value):
+		bike.rebuild_terrain()
+	var dt := 1.0 / 30.0
+	var outcome := Level.RIDING
+	while outcome == Level.RIDING:
+		bike.max_speed_kmh = speed_kmh
+		bike.set_drive(BikeDriver.AUTO_THROTTLE, 0.0)
+		bike.set_turn(0.0)
+		bike.advance(1)
+		outcome = level.judge(bike, dt)
+	return {
+		outcome = outcome,
+		time = level.elapsed,
+		distance = level.distance(bike),
+		steps = bike.get_step_count(),
+	}

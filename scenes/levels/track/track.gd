@@ -1,0 +1,78 @@
+@tool
+class_name Track
+extends Level
+## A timed lap (§4.1.2, Figures 4.4 and 4.6): the clock starts at the start/finish line;
+## a lap counts when every checkpoint was crossed in order before the line is crossed
+## again. The best lap is saved with the player's records.
+
+## Key the best lap is saved under.
+@export var record_key := "track"
+
+var _gates: Array[LapGate] = []
+var _next_checkpoint := 0
+var _lap_started := false
+var _lap_time := 0.0
+var _last_lap := INF
+var _previous_centre := Vector3.ZERO
+
+
+func _ready() -> void:
+	for child in find_children("*", "Node3D", true, false):
+		if child is LapGate:
+			_gates.append(child)
+
+
+func begin_attempt(bike: BikeSimulation, seed_value: int) -> bool:
+	super(bike, seed_value)
+	_lap_started = false
+	_lap_time = 0.0
+	_next_checkpoint = 0
+	_previous_centre = bike.get_center_of_mass()
+	return false
+
+
+func judge(bike: BikeSimulation, delta: float) -> String:
+	var outcome := super(bike, delta)
+	var centre := bike.get_center_of_mass()
+	if _lap_started:
+		_lap_time += delta
+	for gate in _gates:
+		if gate.crossing(_previous_centre, centre) == 1:
+			_passed(gate.checkpoint)
+	_previous_centre = centre
+	return outcome
+
+
+## Checkpoints the lap needs, besides the start/finish line.
+func checkpoint_count() -> int:
+	var highest := 0
+	for gate in _gates:
+		highest = maxi(highest, gate.checkpoint)
+	return highest
+
+
+func status_line() -> String:
+	var lap := format_time(_lap_time) if _lap_started else "cross the start line"
+	return (
+		"lap %s   last %s   best %s"
+		% [lap, format_time(_last_lap), format_time(Settings.best_lap(record_key))]
+	)
+
+
+func _passed(checkpoint: int) -> void:
+	if checkpoint == 0:
+		if _lap_started and _next_checkpoint > checkpoint_count():
+			_finish_lap()
+		_lap_started = true
+		_lap_time = 0.0
+		_next_checkpoint = 1
+	elif _lap_started and checkpoint == _next_checkpoint:
+		_next_checkpoint += 1
+
+
+func _finish_lap() -> void:
+	_last_lap = _lap_time
+	if Settings.record_lap(record_key, _lap_time):
+		announced.emit("New best lap: %s" % format_time(_lap_time))
+	else:
+		announced.emit("Lap: %s" % format_time(_lap_time))

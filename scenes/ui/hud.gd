@@ -1,0 +1,70 @@
+class_name Hud
+extends CanvasLayer
+## The riding HUD: lean dial (wanted vs actual lean), speed, controller with its
+## trajectory count and planning time, frame rate, the level's timer line, attempt tally,
+## and banners for what just happened.
+
+## Seconds a banner stays before fading.
+const BANNER_SECONDS := 3.0
+
+var _game: Game
+var _banner_left := 0.0
+
+@onready var _dial: LeanDial = %LeanDial
+@onready var _speed: Label = %Speed
+@onready var _lean: Label = %Lean
+@onready var _controller: Label = %Controller
+@onready var _performance: Label = %Performance
+@onready var _status: Label = %Status
+@onready var _banner: Label = %Banner
+@onready var _hint: Label = %Hint
+
+
+## Starts showing `game`'s bike and level.
+func bind(game: Game) -> void:
+	_game = game
+
+
+## Shows `text` as a banner for a few seconds.
+func announce(text: String) -> void:
+	_banner.text = text
+	_banner.modulate.a = 1.0
+	_banner_left = BANNER_SECONDS
+
+
+func _process(delta: float) -> void:
+	_banner_left -= delta
+	_banner.modulate.a = clampf(_banner_left, 0.0, 1.0)
+	if _game == null or _game.bike == null or not _game.bike.is_running():
+		return
+	var bike := _game.bike
+	_dial.desired = bike.get_desired_lean()
+	_dial.current = bike.get_lean()
+	_speed.text = "%d km/h" % roundi(absf(bike.get_speed()) * 3.6)
+	_lean.text = (
+		"lean %+.0f°   wanted %+.0f°"
+		% [rad_to_deg(bike.get_lean()), rad_to_deg(bike.get_desired_lean())]
+	)
+	var controller := _game.controller_name()
+	if bike.controller in [2, 3]:
+		controller += (
+			"  ·  %d trajectories  ·  planning %.1f ms"
+			% [bike.trajectories, bike.get_planning_ms()]
+		)
+	_controller.text = controller
+	_performance.text = "%d fps" % Engine.get_frames_per_second()
+	var status := "%s   ·   %s" % [_game.level.title, _game.level.status_line()]
+	if _game.level.automatic:
+		status += "   ·   %d/%d reached the goal" % [_game.successes, _game.attempts]
+	else:
+		status += "   ·   falls %d" % _game.falls
+	_status.text = status
+	_hint.text = _hint_text(bike)
+
+
+func _hint_text(bike: BikeSimulation) -> String:
+	if bike.is_waiting_for_throttle():
+		return "RT / W to ride"
+	if bike.is_crashed():
+		return "B / R respawn   ·   A / T lift the bike"
+	return "Back / Esc: pause and controls"

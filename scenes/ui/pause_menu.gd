@@ -1,0 +1,128 @@
+class_name PauseMenu
+extends CanvasLayer
+## The pause menu (Back / Esc): stops the simulation and offers resume, the trajectory
+## view, physical or visual model, motor force, top speed, controller, trajectory count,
+## auto-accelerate speed, restart and quit; lists the controls. Every change is saved in
+## the settings at once. Works with a gamepad alone (d-pad/stick to move, A to choose,
+## B or Back to resume).
+
+const CONTROLLERS: Array[int] = [2, 3, 0]
+const CONTROLLER_LABELS: Array[String] = [
+	"Optimizer (C-PBP)", "Combined (C-PBP + arcade)", "Arcade (PD)"
+]
+const CONTROLS := """Gamepad / keyboard
+RT / W, ↑        throttle
+LT / S, ↓        brake
+Left stick / A D, ← →   turn (sets the lean)
+Right stick / I J K L, right mouse drag   camera
+Start / C        cycle controller
+Back / Esc, P    pause
+B / R            respawn
+A / T            lift the bike upright
+LB RB / Q E      previous / next spawn point
+X / F            auto-accelerate
+Y / V            show trajectories"""
+
+var _game: Game
+var _syncing := false
+
+@onready var _resume: Button = %Resume
+@onready var _trajectories_shown: CheckButton = %ShowTrajectories
+@onready var _physical: CheckButton = %PhysicalModel
+@onready var _motor_force: HSlider = %MotorForce
+@onready var _motor_force_label: Label = %MotorForceLabel
+@onready var _max_speed: HSlider = %MaxSpeed
+@onready var _max_speed_label: Label = %MaxSpeedLabel
+@onready var _controller: OptionButton = %Controller
+@onready var _trajectory_count: OptionButton = %TrajectoryCount
+@onready var _auto_speed: OptionButton = %AutoSpeed
+@onready var _controls: Label = %Controls
+
+
+func _ready() -> void:
+	visible = false
+	_controls.text = CONTROLS
+	for label in CONTROLLER_LABELS:
+		_controller.add_item(label)
+	for count in Settings.TRAJECTORY_CHOICES:
+		_trajectory_count.add_item("%d trajectories" % count)
+	for speed in Settings.AUTO_SPEEDS:
+		_auto_speed.add_item("%d km/h" % speed)
+	_resume.pressed.connect(close)
+	%Restart.pressed.connect(_on_restart)
+	%Quit.pressed.connect(_on_quit)
+	_trajectories_shown.toggled.connect(_save.bind(&"show_trajectories"))
+	_physical.toggled.connect(_save.bind(&"physical_model"))
+	_motor_force.value_changed.connect(_save.bind(&"motor_force"))
+	_max_speed.value_changed.connect(_save.bind(&"max_speed_kmh"))
+	_controller.item_selected.connect(func(i: int) -> void: _save(CONTROLLERS[i], &"controller"))
+	_trajectory_count.item_selected.connect(
+		func(i: int) -> void: _save(Settings.TRAJECTORY_CHOICES[i], &"trajectories")
+	)
+	_auto_speed.item_selected.connect(
+		func(i: int) -> void: _save(Settings.AUTO_SPEEDS[i], &"auto_speed_kmh")
+	)
+
+
+## Connects the menu to the game it pauses.
+func bind(game: Game) -> void:
+	_game = game
+
+
+## Pauses the game and shows the menu with the current settings.
+func open() -> void:
+	_sync()
+	visible = true
+	get_tree().paused = true
+	_resume.grab_focus()
+
+
+## Hides the menu and resumes the game.
+func close() -> void:
+	visible = false
+	get_tree().paused = false
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if visible and (event.is_action_pressed(&"pause") or event.is_action_pressed(&"ui_cancel")):
+		get_viewport().set_input_as_handled()
+		close()
+
+
+func _sync() -> void:
+	_syncing = true
+	_trajectories_shown.button_pressed = Settings.get_value(&"show_trajectories")
+	_physical.button_pressed = Settings.get_value(&"physical_model")
+	_motor_force.value = Settings.get_value(&"motor_force")
+	_max_speed.value = Settings.get_value(&"max_speed_kmh")
+	_controller.selected = maxi(CONTROLLERS.find(Settings.get_value(&"controller")), 0)
+	_trajectory_count.selected = maxi(
+		Settings.TRAJECTORY_CHOICES.find(Settings.get_value(&"trajectories")), 0
+	)
+	_auto_speed.selected = maxi(Settings.AUTO_SPEEDS.find(Settings.get_value(&"auto_speed_kmh")), 0)
+	_update_labels()
+	_syncing = false
+
+
+func _save(value: Variant, key: StringName) -> void:
+	if _syncing:
+		return
+	Settings.set_value(key, value)
+	_update_labels()
+
+
+func _update_labels() -> void:
+	_motor_force_label.text = "Motor force: %d %%" % roundi(_motor_force.value * 100.0)
+	_max_speed_label.text = "Top speed: %d km/h" % roundi(_max_speed.value)
+
+
+func _on_restart() -> void:
+	close()
+	if _game != null:
+		_game.restart()
+
+
+func _on_quit() -> void:
+	close()
+	if _game != null:
+		_game.quit_to_menu()

@@ -1,0 +1,88 @@
+extends Control
+## The start menu: pick a level (that starts the ride), the controller, the trajectory
+## count and the auto-accelerate speed; shows the track's best lap and what native module
+## runs underneath. Works with a gamepad alone (d-pad/stick to move, A to choose).
+## `--native-info` prints the native module and exits (smoke tests, bug reports).
+
+## The player chose a level to ride (its key in `Levels.ALL`).
+signal ride_requested(level: String)
+
+const GAME := "res://scenes/game/game.tscn"
+
+@onready var _version_label: Label = %VersionLabel
+@onready var _status_label: Label = %StatusLabel
+@onready var _levels: VBoxContainer = %Levels
+@onready var _controller: OptionButton = %Controller
+@onready var _trajectories: OptionButton = %Trajectories
+@onready var _auto_speed: OptionButton = %AutoSpeed
+@onready var _best_lap: Label = %BestLap
+
+
+func _ready() -> void:
+	if OS.get_cmdline_user_args().has("--native-info"):
+		_print_native_info_and_quit()
+		return
+	_version_label.text = NativeModule.describe()
+	# Only the menu that is the running scene navigates; embedded ones just report.
+	if get_tree().current_scene == self:
+		ride_requested.connect(_ride)
+	_build_choices()
+	if not NativeModule.is_loaded():
+		_status_label.text = "The native simulation is missing; the game cannot start."
+		_status_label.add_theme_color_override(&"font_color", Color(1.0, 0.45, 0.4))
+		for button: Button in _levels.get_children():
+			button.disabled = true
+		return
+	var chosen := _levels.get_node_or_null(NodePath(str(Settings.get_value(&"level")))) as Button
+	(chosen if chosen != null else _levels.get_child(0) as Button).grab_focus()
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if event.is_action_pressed(&"ui_cancel"):
+		get_tree().quit()
+
+
+func _build_choices() -> void:
+	for key: String in Levels.ALL:
+		var button := Button.new()
+		button.name = key
+		button.text = Levels.NAMES[key]
+		button.add_theme_font_size_override(&"font_size", 26)
+		button.pressed.connect(func() -> void: ride_requested.emit(key))
+		_levels.add_child(button)
+	for label in PauseMenu.CONTROLLER_LABELS:
+		_controller.add_item(label)
+	_controller.selected = maxi(PauseMenu.CONTROLLERS.find(Settings.get_value(&"controller")), 0)
+	_controller.item_selected.connect(
+		func(i: int) -> void: Settings.set_value(&"controller", PauseMenu.CONTROLLERS[i])
+	)
+	for count in Settings.TRAJECTORY_CHOICES:
+		_trajectories.add_item("%d trajectories" % count)
+	_trajectories.selected = maxi(
+		Settings.TRAJECTORY_CHOICES.find(Settings.get_value(&"trajectories")), 0
+	)
+	_trajectories.item_selected.connect(
+		func(i: int) -> void: Settings.set_value(&"trajectories", Settings.TRAJECTORY_CHOICES[i])
+	)
+	for speed in Settings.AUTO_SPEEDS:
+		_auto_speed.add_item("test speed %d km/h" % speed)
+	_auto_speed.selected = maxi(Settings.AUTO_SPEEDS.find(Settings.get_value(&"auto_speed_kmh")), 0)
+	_auto_speed.item_selected.connect(
+		func(i: int) -> void: Settings.set_value(&"auto_speed_kmh", Settings.AUTO_SPEEDS[i])
+	)
+	_best_lap.text = "Best lap on the track: %s" % Level.format_time(Settings.best_lap("track"))
+
+
+## `--native-info`: print what native module is loaded and exit; non-zero when it is missing
+## or unsuitable. Used to check an exported build and for bug reports.
+func _print_native_info_and_quit() -> void:
+	print(NativeModule.describe())
+	# Quitting before the first frame has run makes the release template's containers
+	# report spurious signal errors while they are torn down.
+	await get_tree().process_frame
+	get_tree().quit(0 if NativeModule.ode_is_suitable() else 1)
+
+
+func _ride(level: String) -> void:
+	Settings.set_value(&"level", level)
+	get_tree().change_scene_to_file(GAME)

@@ -1,0 +1,92 @@
+extends Node
+## The player's settings and records (autoload `Settings`). Every change is saved at once,
+## atomically, to `user://settings.cfg`, and best laps to `user://records.cfg`, so a crash
+## or a kill loses nothing.
+
+## A setting changed (by a menu or by a key); `key` is its name.
+signal changed(key: StringName)
+
+## Trajectory counts the menus offer.
+const TRAJECTORY_CHOICES: Array[int] = [5, 10, 15, 32, 64, 128]
+## Speeds auto-accelerate offers (km/h): the thesis tested 10, 15, 20 and 25.
+const AUTO_SPEEDS: Array[int] = [10, 15, 20, 25]
+
+## Default value of every setting; also their types: a loaded value of another type is
+## ignored.
+const DEFAULTS := {
+	&"level": "test_level",
+	&"trajectories": 15,
+	&"controller": 3,
+	&"show_trajectories": true,
+	&"physical_model": false,
+	&"motor_force": 0.6,
+	&"max_speed_kmh": 40.0,
+	&"auto_speed_kmh": 15,
+	&"auto_accelerate": false,
+}
+const SECTION := "game"
+
+var settings_path := "user://settings.cfg"
+var records_path := "user://records.cfg"
+
+var _values := {}
+var _records := ConfigFile.new()
+
+
+func _ready() -> void:
+	reload()
+
+
+## Reads both files again (used at start and by tests that point the paths elsewhere).
+func reload() -> void:
+	_values = DEFAULTS.duplicate()
+	var config := ConfigStore.load_or_empty(settings_path)
+	for key: StringName in DEFAULTS:
+		var value: Variant = config.get_value(SECTION, key, DEFAULTS[key])
+		if typeof(value) == typeof(DEFAULTS[key]):
+			_values[key] = value
+		elif typeof(DEFAULTS[key]) == TYPE_FLOAT and typeof(value) == TYPE_INT:
+			_values[key] = float(value)
+		else:
+			push_warning("settings: ignoring %s = %s (wrong type)" % [key, value])
+	_records = ConfigStore.load_or_empty(records_path)
+
+
+## The value of setting `key`.
+func get_value(key: StringName) -> Variant:
+	assert(DEFAULTS.has(key), "unknown setting %s" % key)
+	return _values.get(key, DEFAULTS.get(key))
+
+
+## Sets and saves setting `key`; an unknown key or a value of the wrong type is refused.
+func set_value(key: StringName, value: Variant) -> void:
+	if not DEFAULTS.has(key):
+		push_error("settings: unknown setting %s" % key)
+		return
+	if typeof(value) != typeof(DEFAULTS[key]):
+		push_error(
+			"settings: %s must be %s, not %s" % [key, type_string(typeof(DEFAULTS[key])), value]
+		)
+		return
+	if _values[key] == value:
+		return
+	_values[key] = value
+	var config := ConfigFile.new()
+	for k: StringName in _values:
+		config.set_value(SECTION, k, _values[k])
+	ConfigStore.save(config, settings_path)
+	changed.emit(key)
+
+
+## Best lap time (s) on `level`, or INF when there is none.
+func best_lap(level: String) -> float:
+	return float(_records.get_value("best_laps", level, INF))
+
+
+## Records `seconds` as a lap of `level`; returns true when it is a new best (then saved).
+func record_lap(level: String, seconds: float) -> bool:
+	if not (is_finite(seconds) and seconds > 0.0) or seconds >= best_lap(level):
+		return false
+	_records.set_value("best_laps", level, seconds)
+	ConfigStore.save(_records, records_path)
+	return true

@@ -1,0 +1,175 @@
+extends TestCase
+## The game driven through its input actions, as a player would: throttle, respawn, lift,
+## spawn points, controller cycling, auto-accelerate, pause, and the pause menu with a
+## gamepad alone.
+
+const GAME := preload("res://scenes/game/game.tscn")
+const TRACK := "res://scenes/levels/track/track.tscn"
+
+var _game: Game
+
+
+func before_each() -> void:
+	SettingsSandbox.enter()
+	Settings.set_value(&"controller", 0)
+	_game = GAME.instantiate()
+	_game.level_path = TRACK
+	add_child(_game)
+	await wait_physics_frames(2)
+
+
+func after_each() -> void:
+	for action: StringName in [&"throttle", &"brake", &"steer_left", &"steer_right"]:
+		Input.action_release(action)
+	get_tree().paused = false
+	_game.queue_free()
+	await wait_frames(1)
+	SettingsSandbox.leave()
+
+
+func test_throttle_drives_the_bike_forward() -> void:
+	var start := _game.bike.get_center_of_mass()
+	Input.action_press(&"throttle")
+	await wait_physics_frames(90)
+	var forward := -_game.level.spawn_points()[0].global_basis.z
+	assert_gt(_game.bike.get_speed(), 2.0, "speed after 1.5 s")
+	assert_gt((_game.bike.get_center_of_mass() - start).dot(forward), 1.5, "moved forward")
+
+
+func test_the_stick_turns_the_bike_through_its_lean() -> void:
+	Input.action_press(&"throttle", 0.5)
+	await wait_physics_frames(150)
+	var heading_before := _frame_heading()
+	Input.action_press(&"steer_left", 0.6)
+	await wait_physics_frames(90)
+	assert_lt(_game.bike.get_lean(), deg_to_rad(-5.0), "leans into a left turn")
+	Input.action_release(&"steer_left")
+	await wait_physics_frames(60)
+	assert_false(_game.bike.is_crashed())
+	var turned := heading_before.signed_angle_to(_frame_heading(), Vector3.UP)
+	assert_gt(turned, deg_to_rad(20.0), "turned left (anticlockwise seen from above)")
+
+
+func test_reset_puts_the_bike_back_at_the_spawn_point() -> void:
+	var start := _game.bike.get_center_of_mass()
+	Input.action_press(&"throttle")
+	await wait_physics_frames(60)
+	Input.action_release(&"throttle")
+	await _tap(&"reset_bike")
+	assert_almost_eq(_game.bike.get_center_of_mass(), start, Vector3(0.05, 0.05, 0.05))
+	assert_almost_eq(_game.bike.get_speed(), 0.0, 1e-6)
+
+
+func test_lift_stands_a_fallen_bike_up() -> void:
+	_game.bike.controller = 1
+	Input.action_press(&"throttle")
+	await wait_physics_frames(300)
+	assert_true(_game.bike.is_crashed(), "nobody balancing: it fell")
+	Input.action_release(&"throttle")
+	await _tap(&"lift_bike")
+	assert_false(_game.bike.is_crashed())
+	assert_almost_eq(_game.bike.get_lean(), 0.0, deg_to_rad(2.0))
+
+
+func test_spawn_buttons_cycle_through_the_spawn_points() -> void:
+	var spawns := _game.level.spawn_points()
+	await _tap(&"next_spawn")
+	assert_eq(_game.spawn_index(), 1)
+	assert_almost_eq(
+		_horizontal(_game.bike.get_center_of_mass()), _horizontal(spawns[1].global_position), 0.5
+	)
+	await _tap(&"previous_spawn")
+	await _tap(&"previous_spawn")
+	assert_eq(_game.spawn_index(), spawns.size() - 1, "wraps around")
+
+
+func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
+	Settings.set_value(&"trajectories", 5)
+	Input.action_press(&"throttle", 0.5)
+	var seen: Array[int] = []
+	var view: TrajectoryView = _game.bike.get_node("TrajectoryView")
+	for i in 3:
+		await _tap(&"cycle_controller")
+		await wait_physics_frames(45)
+		seen.append(_game.bike.controller)
+		if _game.bike.controller != 0:
+			var paths := _game.bike.get_trajectory_paths()
+			assert_eq(paths.size(), 5, "one path per trajectory")
+			await get_tree().process_frame
+			assert_eq(view.drawn_count(), paths.size(), "every trajectory is drawn")
+	assert_eq(seen, [2, 3, 0] as Array[int], "optimizer → combined → arcade")
+	await get_tree().process_frame
+	assert_eq(view.drawn_count(), 0, "no trajectories while the arcade controller drives")
+	assert_false(_game.bike.is_crashed(), "switching controllers while riding keeps it up")
+	var saved := ConfigFile.new()
+	assert_eq(saved.load(SettingsSandbox.SETTINGS), OK)
+	assert_eq(saved.get_value("game", "controller"), 0)
+
+
+func test_auto_accelerate_holds_the_chosen_speed() -> void:
+	Settings.set_value(&"auto_speed_kmh", 10)
+	await _tap(&"toggle_auto_accelerate")
+	await wait_physics_frames(180)
+	assert_almost_eq(_game.bike.get_speed() * 3.6, 10.0, 1.5, "km/h without the throttle")
+
+
+func test_pause_stops_the_simulation_and_b_resumes() -> void:
+	Input.action_press(&"throttle")
+	await wait_physics_frames(30)
+	await _tap(&"pause")
+	assert_true(get_tree().paused)
+	var menu: PauseMenu = _game.get_node("PauseMenu")
+	assert_true(menu.visible)
+	var steps := _game.bike.get_step_count()
+	await wait_frames(30)
+	assert_eq(_game.bike.get_step_count(), steps, "no steps while paused")
+	await _press_button(JOY_BUTTON_B)
+	assert_false(get_tree().paused)
+	assert_false(menu.visible)
+
+
+func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
+	var before: bool = Settings.get_value(&"show_trajectories")
+	await _press_button(JOY_BUTTON_BACK)
+	assert_true(get_tree().paused, "Back pauses")
+	var menu: PauseMenu = _game.get_node("PauseMenu")
+	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%Resume"))
+	await _press_button(JOY_BUTTON_DPAD_DOWN)
+	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%ShowTrajectories"))
+	await _press_button(JOY_BUTTON_A)
+	assert_eq(Settings.get_value(&"show_trajectories"), not before, "A toggled the trajectory view")
+	assert_eq(_game.bike.get_node("TrajectoryView").visible, not before)
+	await _press_button(JOY_BUTTON_DPAD_DOWN)
+	await _press_button(JOY_BUTTON_A)
+	assert_true(Settings.get_value(&"physical_model"))
+	assert_true(_game.bike.get_node("PhysicalBikeView").visible, "physical bodies shown")
+	assert_false(_game.bike.get_node("VisualBikeView").visible)
+	await _press_button(JOY_BUTTON_BACK)
+	assert_false(get_tree().paused, "Back resumes")
+
+
+func _tap(action: StringName) -> void:
+	for pressed: bool in [true, false]:
+		var event := InputEventAction.new()
+		event.action = action
+		event.pressed = pressed
+		Input.parse_input_event(event)
+	await wait_physics_frames(2)
+
+
+func _press_button(button: JoyButton) -> void:
+	for pressed: bool in [true, false]:
+		var event := InputEventJoypadButton.new()
+		event.button_index = button
+		event.pressed = pressed
+		Input.parse_input_event(event)
+		await wait_frames(2)
+
+
+func _frame_heading() -> Vector3:
+	var forward := _game.bike.get_body_transform(3).basis.x
+	return Vector3(forward.x, 0.0, forward.z).normalized()
+
+
+func _horizontal(v: Vector3) -> Vector2:
+	return Vector2(v.x, v.z)

@@ -1,0 +1,58 @@
+extends TestCase
+## Settings and records survive: saved at once, atomically, read back, broken files kept.
+
+
+func before_each() -> void:
+	SettingsSandbox.enter()
+
+
+func after_each() -> void:
+	SettingsSandbox.leave()
+
+
+func test_a_change_is_saved_at_once_and_read_back() -> void:
+	Settings.set_value(&"trajectories", 32)
+	assert_false(FileAccess.file_exists(SettingsSandbox.SETTINGS + ".tmp"), "no temporary left")
+	Settings.reload()
+	assert_eq(Settings.get_value(&"trajectories"), 32)
+
+
+func test_wrong_types_and_unknown_keys_are_refused() -> void:
+	expect_error("must be")
+	Settings.set_value(&"trajectories", "many")
+	expect_error("unknown setting")
+	Settings.set_value(&"colour", 3)
+	assert_eq(Settings.get_value(&"trajectories"), Settings.DEFAULTS[&"trajectories"])
+
+
+func test_a_broken_file_is_kept_aside_and_defaults_used() -> void:
+	var file := FileAccess.open(SettingsSandbox.SETTINGS, FileAccess.WRITE)
+	file.store_string("[game\ntrajectories = = 7\n")
+	file.close()
+	expect_error("ConfigFile parse error")
+	Settings.reload()
+	assert_eq(Settings.get_value(&"trajectories"), Settings.DEFAULTS[&"trajectories"])
+	assert_true(
+		FileAccess.file_exists(SettingsSandbox.SETTINGS + ".broken"), "the old file is kept"
+	)
+
+
+func test_only_a_faster_lap_is_a_new_best() -> void:
+	assert_eq(Settings.best_lap("track"), INF)
+	assert_true(Settings.record_lap("track", 61.5))
+	assert_false(Settings.record_lap("track", 70.0))
+	assert_false(Settings.record_lap("track", NAN))
+	assert_true(Settings.record_lap("track", 58.25))
+	Settings.reload()
+	assert_eq(Settings.best_lap("track"), 58.25, "read back from the records file")
+
+
+func test_a_lap_gate_counts_forward_crossings_within_its_width() -> void:
+	var gate := LapGate.new()
+	gate.width = 8.0
+	add_child(gate)
+	assert_eq(gate.crossing(Vector3(0, 0, 1), Vector3(0, 0, -1)), 1, "forwards (−z)")
+	assert_eq(gate.crossing(Vector3(0, 0, -1), Vector3(0, 0, 1)), -1, "backwards")
+	assert_eq(gate.crossing(Vector3(5, 0, 1), Vector3(5, 0, -1)), 0, "outside the posts")
+	assert_eq(gate.crossing(Vector3(0, 0, 2), Vector3(0, 0, 1)), 0, "not reached")
+	gate.free()

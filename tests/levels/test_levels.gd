@@ -1,0 +1,71 @@
+extends TestCase
+## Every level loads, its geometry becomes the bike's terrain without a problem, and the
+## bike spawned at each of its spawn points comes to rest on both wheels.
+
+const BIKE := preload("res://scenes/bike/bike.tscn")
+## Physics ticks to settle (the runner uses --fixed-fps 60).
+const SETTLE_TICKS := 60
+
+
+func test_every_level_converts_to_terrain_without_problems() -> void:
+	for key: String in Levels.ALL:
+		var level := _load(key)
+		add_child(level)
+		assert_eq(
+			TerrainCheck.problems(level), PackedStringArray(), "%s has no terrain problems" % key
+		)
+		assert_gt(TerrainCheck.usable_shape_count(level), 0, "%s has terrain" % key)
+		assert_false(level.spawn_points().is_empty(), "%s has spawn points" % key)
+		level.free()
+
+
+func test_the_bike_rests_on_its_wheels_at_every_spawn_point() -> void:
+	for key: String in Levels.ALL:
+		var level := _load(key)
+		add_child(level)
+		var spawns := level.spawn_points()
+		assert_gt(spawns.size(), 1 if key != "test_level" else 0, "%s spawn points" % key)
+		for spawn in spawns:
+			var bike: BikeSimulation = BIKE.instantiate()
+			bike.terrain_root = NodePath("../" + level.name)
+			bike.transform = spawn.spawn_transform()
+			add_child(bike)
+			bike.set_physics_process(false)
+			bike.advance(SETTLE_TICKS / 2)
+			var where := "%s at %s" % [key, spawn.name]
+			assert_true(bike.is_running(), where)
+			assert_true(
+				bike.is_rear_wheel_grounded() and bike.is_front_wheel_grounded(),
+				"%s: both wheels down" % where
+			)
+			assert_false(bike.is_crashed(), "%s: standing" % where)
+			assert_almost_eq(bike.get_lean(), 0.0, deg_to_rad(3.0), "%s: upright" % where)
+			bike.free()
+		level.free()
+
+
+func test_a_level_warns_about_shapes_the_simulation_cannot_use() -> void:
+	var level := _load("skate_park")
+	var body := StaticBody3D.new()
+	var shape := CollisionShape3D.new()
+	shape.shape = SeparationRayShape3D.new()
+	body.add_child(shape)
+	level.add_child(body)
+	add_child(level)
+	var warnings := level._get_configuration_warnings()
+	assert_eq(warnings.size(), 1)
+	assert_has(warnings[0], "SeparationRayShape3D is not supported")
+	level.free()
+
+
+func test_a_level_without_spawn_points_warns() -> void:
+	var level := Level.new()
+	add_child(level)
+	var warnings := level._get_configuration_warnings()
+	assert_has(warnings[0], "SpawnPoint")
+	assert_has(warnings[1], "no static collision shapes")
+	level.free()
+
+
+func _load(key: String) -> Level:
+	return (load(Levels.path_of(key)) as PackedScene).instantiate() as Level

@@ -1,0 +1,66 @@
+extends TestCase
+## The thesis's automatic test on the game's own test level: riding straight across seeded
+## bumps at 15 km/h, the combined controller with 5 trajectories reaches the goal.
+
+const LEVEL := preload("res://scenes/levels/test_level/test_level.tscn")
+const BIKE := preload("res://scenes/bike/bike.tscn")
+
+var _level: TestLevel
+var _bike: BikeSimulation
+
+
+func before_each() -> void:
+	_level = LEVEL.instantiate()
+	add_child(_level)
+	_bike = BIKE.instantiate()
+	_bike.terrain_root = ^"../TestLevel"
+	_bike.transform = _level.spawn_points()[0].spawn_transform()
+	add_child(_bike)
+	_bike.set_physics_process(false)
+	# Wait for every plan, so the run repeats exactly for its seeds.
+	_bike.plan_wait_ms = 1000.0
+
+
+func after_each() -> void:
+	_bike.queue_free()
+	_level.queue_free()
+
+
+func test_the_same_seed_lays_the_same_bumps() -> void:
+	var bumps: BumpField = _level.get_node("Bumps")
+	bumps.regenerate(7)
+	var first := _bump_positions(bumps)
+	bumps.regenerate(8)
+	assert_ne(_bump_positions(bumps), first, "another seed, other bumps")
+	bumps.regenerate(7)
+	assert_eq(_bump_positions(bumps), first, "seed 7 again")
+	assert_eq(first.size(), bumps.count)
+
+
+func test_combined_with_5_trajectories_reaches_the_goal_in_9_of_10_attempts() -> void:
+	_bike.controller = 3
+	_bike.trajectories = 5
+	var reached := 0
+	var outcomes: Array[String] = []
+	for attempt in 10:
+		var result := TestRun.ride(_level, _bike, 1000 + attempt, 15.0)
+		outcomes.append("%s %.1f s %.1f m" % [result.outcome, result.time, result.distance])
+		if result.outcome == Level.GOAL:
+			reached += 1
+	print("    test level, combined N=5, 15 km/h: ", ", ".join(outcomes))
+	assert_gt(reached, 8, "attempts that reached the goal: %s" % ", ".join(outcomes))
+
+
+func test_an_attempt_without_a_rider_ends_in_a_fall_or_timeout() -> void:
+	# Manual mode with the bar left alone: nobody balances, the bike falls.
+	_bike.controller = 1
+	var result := TestRun.ride(_level, _bike, 1, 15.0)
+	assert_eq(result.outcome, Level.FELL)
+	assert_lt(result.time, 25.0)
+
+
+func _bump_positions(bumps: BumpField) -> Array[Vector3]:
+	var positions: Array[Vector3] = []
+	for bump: Node3D in bumps.get_children():
+		positions.append(bump.position)
+	return positions

@@ -1,0 +1,52 @@
+extends TestCase
+## The start menu shows the game's name and native version, offers every level, and can be
+## worked with a gamepad alone.
+
+const START_MENU := preload("res://scenes/ui/start_menu.tscn")
+
+var _menu: Control
+
+
+func before_each() -> void:
+	_menu = START_MENU.instantiate()
+	add_child(_menu)
+	await wait_frames(1)
+
+
+func after_each() -> void:
+	_menu.queue_free()
+
+
+func test_shows_the_game_name_and_native_version() -> void:
+	assert_eq((_menu.get_node("Titles/GameTitle") as Label).text, "COUNTER-STEER")
+	var version: Label = _menu.get_node("%VersionLabel")
+	assert_has(version.text, "native %s" % NativeModule.version())
+	assert_has(version.text, "Godot 4.6")
+
+
+func test_offers_every_level() -> void:
+	var levels: VBoxContainer = _menu.get_node("%Levels")
+	assert_eq(levels.get_child_count(), Levels.ALL.size())
+	for key: String in Levels.ALL:
+		assert_not_null(levels.get_node_or_null(NodePath(key)), "a button for %s" % key)
+
+
+func test_a_gamepad_alone_picks_the_second_level() -> void:
+	var chosen: Array[String] = []
+	_menu.connect(&"ride_requested", func(level: String) -> void: chosen.append(level))
+	var levels: VBoxContainer = _menu.get_node("%Levels")
+	(levels.get_child(0) as Button).grab_focus()
+	await _press_button(JOY_BUTTON_DPAD_DOWN)
+	assert_eq(get_viewport().gui_get_focus_owner(), levels.get_child(1), "d-pad down moves focus")
+	await _press_button(JOY_BUTTON_A)
+	assert_eq(chosen, [levels.get_child(1).name as String] as Array[String])
+	assert_ne(get_tree().current_scene, _menu, "an embedded menu does not navigate")
+
+
+func _press_button(button: JoyButton) -> void:
+	for pressed: bool in [true, false]:
+		var event := InputEventJoypadButton.new()
+		event.button_index = button
+		event.pressed = pressed
+		Input.parse_input_event(event)
+		await wait_frames(2)
