@@ -55,9 +55,12 @@ func _process(_delta: float) -> void:
 
 
 func _follow() -> void:
+	# One native call per body, not per piece: some sixty pieces ride on nine bodies.
+	var bodies: Array[Transform3D] = []
+	for body in _simulation.get_body_count():
+		bodies.append(_simulation.get_body_transform(body))
 	for piece: Dictionary in _pieces:
-		var body_transform := _simulation.get_body_transform(piece.body)
-		(piece.node as Node3D).global_transform = body_transform * (piece.offset as Transform3D)
+		(piece.node as Node3D).global_transform = bodies[piece.body] * (piece.offset as Transform3D)
 
 
 func _build_wheels() -> void:

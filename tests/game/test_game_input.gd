@@ -55,7 +55,7 @@ func test_reset_puts_the_bike_back_at_the_spawn_point() -> void:
 	Input.action_press(&"throttle")
 	await wait_physics_frames(60)
 	Input.action_release(&"throttle")
-	await _tap(&"reset_bike")
+	await SimulatedInput.tap_action(&"reset_bike")
 	assert_almost_eq(_game.bike.get_center_of_mass(), start, Vector3(0.05, 0.05, 0.05))
 	assert_almost_eq(_game.bike.get_speed(), 0.0, 1e-6)
 
@@ -66,20 +66,20 @@ func test_lift_stands_a_fallen_bike_up() -> void:
 	await wait_physics_frames(300)
 	assert_true(_game.bike.is_crashed(), "nobody balancing: it fell")
 	Input.action_release(&"throttle")
-	await _tap(&"lift_bike")
+	await SimulatedInput.tap_action(&"lift_bike")
 	assert_false(_game.bike.is_crashed())
 	assert_almost_eq(_game.bike.get_lean(), 0.0, deg_to_rad(2.0))
 
 
 func test_spawn_buttons_cycle_through_the_spawn_points() -> void:
 	var spawns := _game.level.spawn_points()
-	await _tap(&"next_spawn")
+	await SimulatedInput.tap_action(&"next_spawn")
 	assert_eq(_game.spawn_index(), 1)
 	assert_almost_eq(
 		_horizontal(_game.bike.get_center_of_mass()), _horizontal(spawns[1].global_position), 0.5
 	)
-	await _tap(&"previous_spawn")
-	await _tap(&"previous_spawn")
+	await SimulatedInput.tap_action(&"previous_spawn")
+	await SimulatedInput.tap_action(&"previous_spawn")
 	assert_eq(_game.spawn_index(), spawns.size() - 1, "wraps around")
 
 
@@ -89,7 +89,7 @@ func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
 	var seen: Array[int] = []
 	var view: TrajectoryView = _game.bike.get_node("TrajectoryView")
 	for i in 3:
-		await _tap(&"cycle_controller")
+		await SimulatedInput.tap_action(&"cycle_controller")
 		await wait_physics_frames(45)
 		seen.append(_game.bike.controller)
 		if _game.bike.controller != 0:
@@ -108,7 +108,7 @@ func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
 
 func test_auto_accelerate_holds_the_chosen_speed() -> void:
 	Settings.set_value(&"auto_speed_kmh", 10)
-	await _tap(&"toggle_auto_accelerate")
+	await SimulatedInput.tap_action(&"toggle_auto_accelerate")
 	await wait_physics_frames(180)
 	assert_almost_eq(_game.bike.get_speed() * 3.6, 10.0, 1.5, "km/h without the throttle")
 
@@ -116,54 +116,36 @@ func test_auto_accelerate_holds_the_chosen_speed() -> void:
 func test_pause_stops_the_simulation_and_b_resumes() -> void:
 	Input.action_press(&"throttle")
 	await wait_physics_frames(30)
-	await _tap(&"pause")
+	await SimulatedInput.tap_action(&"pause")
 	assert_true(get_tree().paused)
 	var menu: PauseMenu = _game.get_node("PauseMenu")
 	assert_true(menu.visible)
 	var steps := _game.bike.get_step_count()
 	await wait_frames(30)
 	assert_eq(_game.bike.get_step_count(), steps, "no steps while paused")
-	await _press_button(JOY_BUTTON_B)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_B)
 	assert_false(get_tree().paused)
 	assert_false(menu.visible)
 
 
 func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
 	var before: bool = Settings.get_value(&"show_trajectories")
-	await _press_button(JOY_BUTTON_BACK)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_BACK)
 	assert_true(get_tree().paused, "Back pauses")
 	var menu: PauseMenu = _game.get_node("PauseMenu")
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%Resume"))
-	await _press_button(JOY_BUTTON_DPAD_DOWN)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%ShowTrajectories"))
-	await _press_button(JOY_BUTTON_A)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_eq(Settings.get_value(&"show_trajectories"), not before, "A toggled the trajectory view")
 	assert_eq(_game.bike.get_node("TrajectoryView").visible, not before)
-	await _press_button(JOY_BUTTON_DPAD_DOWN)
-	await _press_button(JOY_BUTTON_A)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_true(Settings.get_value(&"physical_model"))
 	assert_true(_game.bike.get_node("PhysicalBikeView").visible, "physical bodies shown")
 	assert_false(_game.bike.get_node("VisualBikeView").visible)
-	await _press_button(JOY_BUTTON_BACK)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_BACK)
 	assert_false(get_tree().paused, "Back resumes")
-
-
-func _tap(action: StringName) -> void:
-	for pressed: bool in [true, false]:
-		var event := InputEventAction.new()
-		event.action = action
-		event.pressed = pressed
-		Input.parse_input_event(event)
-	await wait_physics_frames(2)
-
-
-func _press_button(button: JoyButton) -> void:
-	for pressed: bool in [true, false]:
-		var event := InputEventJoypadButton.new()
-		event.button_index = button
-		event.pressed = pressed
-		Input.parse_input_event(event)
-		await wait_frames(2)
 
 
 func _frame_heading() -> Vector3:

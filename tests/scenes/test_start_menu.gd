@@ -36,17 +36,8 @@ func test_a_gamepad_alone_picks_the_second_level() -> void:
 	_menu.connect(&"ride_requested", func(level: String) -> void: chosen.append(level))
 	var levels: VBoxContainer = _menu.get_node("%Levels")
 	(levels.get_child(0) as Button).grab_focus()
-	await _press_button(JOY_BUTTON_DPAD_DOWN)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
 	assert_eq(get_viewport().gui_get_focus_owner(), levels.get_child(1), "d-pad down moves focus")
-	await _press_button(JOY_BUTTON_A)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_eq(chosen, [levels.get_child(1).name as String] as Array[String])
 	assert_ne(get_tree().current_scene, _menu, "an embedded menu does not navigate")
-
-
-func _press_button(button: JoyButton) -> void:
-	for pressed: bool in [true, false]:
-		var event := InputEventJoypadButton.new()
-		event.button_index = button
-		event.pressed = pressed
-		Input.parse_input_event(event)
-		await wait_frames(2)
