@@ -61,6 +61,14 @@ pub struct BikeSimulation {
     /// plan is taken over at a later step while the last best trajectory plays on.
     #[export(range = (0.0, 1000.0, 1.0, suffix = "ms"))]
     plan_wait_ms: f64,
+    /// Threads that simulate the optimizer's trajectories (0: one per core). The
+    /// experiment runs one bike per core with one thread each.
+    #[export(range = (0.0, 64.0))]
+    planning_threads: i32,
+    /// Seed of the optimizer's random draws: the same seed, start and inputs give the same
+    /// ride.
+    #[export]
+    planner_seed: i64,
     /// Hold the bike still where it was placed until the first throttle (and again after
     /// each reset): standing still, no steering can balance a bike, so the ride starts
     /// when the player does.
@@ -95,6 +103,8 @@ impl INode3D for BikeSimulation {
             lean_tolerance_deg: 5.0,
             rollout_substeps: 4,
             plan_wait_ms: 12.0,
+            planning_threads: 0,
+            planner_seed: 2015,
             wait_for_throttle: false,
             started: false,
             steps_since_reset: 0,
@@ -577,6 +587,8 @@ impl BikeSimulation {
             horizon: self.horizon.clamp(0.2, 3.0),
             lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
             rollout_substeps: self.rollout_substeps.clamp(1, 8) as usize,
+            threads: self.planning_threads.clamp(0, 64) as usize,
+            seed: self.planner_seed as u64,
             ..OptimizerConfig::default()
         }
     }

@@ -7,7 +7,8 @@ extends RefCounted
 
 
 ## Rides one attempt and returns `outcome` (Level.GOAL, FELL or TIMEOUT), `time` (s),
-## `distance` (m towards the goal) and `steps` (control steps simulated). The bike's
+## `distance` (m towards the goal), `steps` (control steps simulated) and `planning_ms`
+## (mean planning time per step; 0 for the arcade controller). The bike's
 ## `_physics_process` must be off so only this drives it.
 static func ride(
 	level: TestLevel, bike: BikeSimulation, seed_value: int, speed_kmh: float
@@ -18,15 +19,22 @@ static func ride(
 		bike.rebuild_terrain()
 	var dt := 1.0 / 30.0
 	var outcome := Level.RIDING
+	var planning_ms := 0.0
+	var plans := 0
 	while outcome == Level.RIDING:
 		bike.max_speed_kmh = speed_kmh
 		bike.set_drive(BikeDriver.AUTO_THROTTLE, 0.0)
 		bike.set_turn(0.0)
 		bike.advance(1)
+		var step_ms := bike.get_planning_ms()
+		if step_ms > 0.0:
+			planning_ms += step_ms
+			plans += 1
 		outcome = level.judge(bike, dt)
 	return {
 		outcome = outcome,
 		time = level.elapsed,
 		distance = level.distance(bike),
 		steps = bike.get_step_count(),
+		planning_ms = planning_ms / maxi(plans, 1),
 	}

@@ -1,0 +1,73 @@
+class_name ExperimentArgs
+extends RefCounted
+## The experiment worker's command line, checked: every value in range, or `error` says
+## which one is wrong.
+
+const MAX_TRAJECTORIES := 256
+
+var speed := 15.0
+var controller := "combined"
+var trajectories: Array[int] = [5]
+var base_seed := 1000
+var first := 0
+var count := 1
+var threads := 0
+var timing := false
+var steps := 150
+var error := ""
+
+
+static func parse(arguments: PackedStringArray) -> ExperimentArgs:
+	var args := ExperimentArgs.new()
+	for argument in arguments:
+		var parts := argument.trim_prefix("--").split("=", true, 1)
+		var value := parts[1] if parts.size() == 2 else ""
+		match parts[0]:
+			"speed":
+				args.speed = _number(args, "speed", value, 1.0, 90.0)
+			"controller":
+				if not ExperimentWorker.CONTROLLERS.has(value):
+					args._fail(
+						"--controller must be arcade, optimizer or combined, not '%s'" % value
+					)
+				args.controller = value
+			"trajectories":
+				args.trajectories.clear()
+				for item in value.split(","):
+					args.trajectories.append(
+						int(_number(args, "trajectories", item, 1, MAX_TRAJECTORIES))
+					)
+			"seed":
+				args.base_seed = int(_number(args, "seed", value, 0, 2_000_000_000))
+			"first":
+				args.first = int(_number(args, "first", value, 0, 10_000_000))
+			"count":
+				args.count = int(_number(args, "count", value, 1, 10_000_000))
+			"threads":
+				args.threads = int(_number(args, "threads", value, 0, 64))
+			"steps":
+				args.steps = int(_number(args, "steps", value, 1, 100_000))
+			"timing":
+				args.timing = true
+			_:
+				args._fail("unknown argument '%s'" % argument)
+	return args
+
+
+static func _number(
+	args: ExperimentArgs, name: String, text: String, low: float, high: float
+) -> float:
+	if not text.is_valid_float():
+		args._fail("--%s needs a number, not '%s'" % [name, text])
+		return low
+	var value := text.to_float()
+	if not (value >= low and value <= high):
+		args._fail("--%s must be within %s–%s, not %s" % [name, low, high, text])
+		return low
+	return value
+
+
+func _fail(message: String) -> void:
+	# The first problem is the one to fix first.
+	if error.is_empty():
+		error = message

@@ -1,0 +1,125 @@
+class_name ExperimentWorker
+extends Node
+## One worker of the headless experiment (tools/experiment.py starts it; see
+## docs/experiment.md). It rides a block of test-level attempts for one configuration on
+## the game's own test level and prints one `TRY {json}` line per attempt as soon as it
+## ends, so the driver can save it before the next begins. With `--timing` it instead
+## rides with each trajectory count in turn and prints one `TIMING {json}` line per count.
+##
+## Arguments (after `--`): --speed=KMH --controller=arcade|optimizer|combined
+## --trajectories=N[,N...] --seed=BASE --first=I --count=K --threads=T [--timing --steps=S]
+## Attempt i uses bump seed BASE + i and a planner seed drawn from it, so every controller
+## meets the same bumps at attempt i and a rerun of an attempt repeats it exactly.
+
+const LEVEL := preload("res://scenes/levels/test_level/test_level.tscn")
+const BIKE := preload("res://scenes/bike/bike.tscn")
+const CONTROLLERS := {"arcade": 0, "optimizer": 2, "combined": 3}
+## Exit codes the driver tells apart: bad arguments, and a level that would not load.
+const EXIT_USAGE := 2
+const EXIT_SETUP := 3
+
+var _level: TestLevel
+var _bike: BikeSimulation
+
+
+func _ready() -> void:
+	var args := ExperimentArgs.parse(OS.get_cmdline_user_args())
+	if not args.error.is_empty():
+		printerr("experiment worker: ", args.error)
+		get_tree().quit(EXIT_USAGE)
+		return
+	if not _build(args):
+		get_tree().quit(EXIT_SETUP)
+		return
+	if args.timing:
+		_measure_planning(args)
+	else:
+		_ride_attempts(args)
+	get_tree().quit(0)
+
+
+func _build(args: ExperimentArgs) -> bool:
+	_level = LEVEL.instantiate()
+	add_child(_level)
+	var problems := TerrainCheck.problems(_level)
+	if not problems.is_empty():
+		printerr("experiment worker: the test level has unusable shapes: ", problems)
+		return false
+	_bike = BIKE.instantiate()
+	_bike.terrain_root = NodePath("../%s" % _level.name)
+	_bike.transform = _level.spawn_points()[0].spawn_transform()
+	_bike.controller = CONTROLLERS[args.controller]
+	_bike.planning_threads = args.threads
+	# The game's own default, not this machine's saved settings.
+	_bike.motor_force = Settings.DEFAULTS[&"motor_force"]
+	# Wait for every plan: each step then uses a fresh plan, and a ride repeats exactly.
+	_bike.plan_wait_ms = 1000.0
+	add_child(_bike)
+	# Only TestRun drives the bike; nothing is drawn.
+	_bike.set_physics_process(false)
+	_bike.set_process(false)
+	_bike.visible = false
+	return true
+
+
+func _ride_attempts(args: ExperimentArgs) -> void:
+	_bike.trajectories = args.trajectories[0]
+	for attempt in range(args.first, args.first + args.count):
+		var bump_seed := args.base_seed + attempt
+		_bike.planner_seed = hash([bump_seed, "planner"])
+		var started := Time.get_ticks_usec()
+		var result := TestRun.ride(_level, _bike, bump_seed, args.speed)
+		(
+			result
+			. merge(
+				{
+					"speed_kmh": args.speed,
+					"controller": args.controller,
+					"trajectories": args.trajectories[0] if args.controller != "arcade" else 0,
+					"attempt": attempt,
+					"seed": bump_seed,
+					"wall_ms": (Time.get_ticks_usec() - started) / 1000.0,
+				}
+			)
+		)
+		print("TRY ", JSON.stringify(result))
+
+
+## Rides the level from its start with each trajectory count for `steps` control steps
+## (or until the attempt ends) and reports the planning time per step.
+func _measure_planning(args: ExperimentArgs) -> void:
+	for count in args.trajectories:
+		_bike.trajectories = count
+		_bike.planner_seed = args.base_seed
+		_bike.reset_to(_level.spawn_points()[0].spawn_transform())
+		if _level.begin_attempt(_bike, args.base_seed):
+			_bike.rebuild_terrain()
+		var samples: Array[float] = []
+		for step in args.steps:
+			_bike.max_speed_kmh = args.speed
+			_bike.set_drive(BikeDriver.AUTO_THROTTLE, 0.0)
+			_bike.set_turn(0.0)
+			_bike.advance(1)
+			# The first plans build the rollout worlds; they are not what a rider waits for.
+			if step >= 5 and _bike.get_planning_ms() > 0.0:
+				samples.append(_bike.get_planning_ms())
+			if _level.judge(_bike, 1.0 / 30.0) != Level.RIDING:
+				break
+		samples.sort()
+		var timing := {
+			"controller": args.controller,
+			"trajectories": count,
+			"threads": args.threads,
+			"samples": samples.size(),
+			"mean_ms": _mean(samples),
+			"median_ms": samples[samples.size() / 2] if not samples.is_empty() else 0.0,
+			"p95_ms": samples[int(samples.size() * 0.95)] if not samples.is_empty() else 0.0,
+		}
+		print("TIMING ", JSON.stringify(timing))
+
+
+static func _mean(values: Array[float]) -> float:
+	var total := 0.0
+	for value in values:
+		total += value
+	return total / maxi(values.size(), 1)

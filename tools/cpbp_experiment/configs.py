@@ -1,0 +1,78 @@
+"""Experiment configurations: a controller (with its trajectory count) at a speed."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+THESIS_SPEEDS = (10, 15, 20, 25)
+THESIS_CONTROLLERS = (
+    "arcade",
+    "optimizer-5",
+    "optimizer-10",
+    "optimizer-15",
+    "combined-5",
+    "combined-10",
+    "combined-15",
+)
+# Trajectory counts of the planning-time study (Figure 5.2 and beyond).
+TIMING_COUNTS = (5, 6, 8, 10, 15, 20, 32, 64, 128)
+
+
+@dataclass(frozen=True, order=True)
+class Controller:
+    """`arcade`, or a planner (`optimizer`, `combined`) with its trajectory count N."""
+
+    kind: str
+    trajectories: int = 0
+
+    @property
+    def label(self) -> str:
+        return self.kind if self.kind == "arcade" else f"{self.kind}-{self.trajectories}"
+
+    @staticmethod
+    def parse(label: str) -> "Controller":
+        kind, _, count = label.strip().partition("-")
+        if kind == "arcade" and not count:
+            return Controller("arcade")
+        if kind in ("optimizer", "combined") and count.isdigit() and 1 <= int(count) <= 256:
+            return Controller(kind, int(count))
+        raise ValueError(
+            f"unknown controller '{label}': use arcade, optimizer-N or combined-N (N in 1–256)"
+        )
+
+
+@dataclass(frozen=True, order=True)
+class Config:
+    speed_kmh: int
+    controller: Controller
+
+    @property
+    def label(self) -> str:
+        return f"{self.controller.label} @ {self.speed_kmh} km/h"
+
+
+def parse_speeds(text: str) -> list[int]:
+    speeds = []
+    for item in text.split(","):
+        if not item.strip().isdigit() or not 1 <= int(item) <= 90:
+            raise ValueError(f"speeds are whole km/h within 1–90, not '{item}'")
+        speeds.append(int(item))
+    return sorted(set(speeds))
+
+
+def parse_controllers(text: str) -> list[Controller]:
+    return sorted({Controller.parse(item) for item in text.split(",")}, key=display_order)
+
+
+def display_order(controller: Controller) -> tuple[int, int]:
+    """The thesis's order: arcade, then the optimizer, then combined, each by N."""
+    return (["arcade", "optimizer", "combined"].index(controller.kind), controller.trajectories)
+
+
+def parse_counts(text: str) -> list[int]:
+    counts = []
+    for item in text.split(","):
+        if not item.strip().isdigit() or not 1 <= int(item) <= 256:
+            raise ValueError(f"trajectory counts are within 1–256, not '{item}'")
+        counts.append(int(item))
+    return sorted(set(counts))

@@ -1,0 +1,147 @@
+"""The results file: one CSV row per finished attempt, appended and synced as each
+attempt ends, so a kill loses at most the attempts in progress, and read back on a rerun
+so the run resumes where it stopped."""
+
+from __future__ import annotations
+
+import csv
+import io
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from .configs import Config, Controller
+
+FIELDS = (
+    "speed_kmh",
+    "controller",
+    "trajectories",
+    "attempt",
+    "seed",
+    "outcome",
+    "time_s",
+    "distance_m",
+    "steps",
+    "planning_ms",
+    "wall_ms",
+)
+OUTCOMES = ("goal", "fell", "timeout")
+
+
+class ResultsError(Exception):
+    """The results file cannot be used as it is (the message says why and what to do)."""
+
+
+@dataclass(frozen=True)
+class Attempt:
+    config: Config
+    attempt: int
+    seed: int
+    outcome: str
+    time_s: float
+    distance_m: float
+    steps: int
+    planning_ms: float
+    wall_ms: float
+
+    @property
+    def key(self) -> tuple[Config, int]:
+        return (self.config, self.attempt)
+
+    def row(self) -> list[str]:
+        c = self.config
+        return [
+            str(c.speed_kmh),
+            c.controller.kind,
+            str(c.controller.trajectories),
+            str(self.attempt),
+            str(self.seed),
+            self.outcome,
+            f"{self.time_s:.4f}",
+            f"{self.distance_m:.3f}",
+            str(self.steps),
+            f"{self.planning_ms:.3f}",
+            f"{self.wall_ms:.1f}",
+        ]
+
+    @staticmethod
+    def from_row(row: dict[str, str]) -> "Attempt":
+        kind = row["controller"]
+        label = kind if kind == "arcade" else f"{kind}-{row['trajectories']}"
+        outcome = row["outcome"]
+        if outcome not in OUTCOMES:
+            raise ValueError(f"outcome '{outcome}' is not one of {', '.join(OUTCOMES)}")
+        return Attempt(
+            config=Config(int(row["speed_kmh"]), Controller.parse(label)),
+            attempt=int(row["attempt"]),
+            seed=int(row["seed"]),
+            outcome=outcome,
+            time_s=float(row["time_s"]),
+            distance_m=float(row["distance_m"]),
+            steps=int(row["steps"]),
+            planning_ms=float(row["planning_ms"]),
+            wall_ms=float(row["wall_ms"]),
+        )
+
+
+class ResultsFile:
+    def __init__(self, path: Path):
+        self.path = path
+
+    def load(self) -> list[Attempt]:
+        """Every saved attempt. A last line cut short by a kill is dropped from the file
+        (that attempt runs again); anything else unreadable is an error, never skipped."""
+        if not self.path.exists():
+            return []
+        text = self.path.read_text(encoding="utf-8")
+        if text and not text.endswith("\n"):
+            kept = text[: text.rfind("\n") + 1]
+            with open(self.path, "r+", encoding="utf-8") as f:
+                f.truncate(len(kept.encode("utf-8")))
+            text = kept
+        if not text:
+            return []
+        reader = csv.DictReader(io.StringIO(text))
+        if tuple(reader.fieldnames or ()) != FIELDS:
+            raise ResultsError(
+                f"{self.path} is not an experiment results file (its columns are "
+                f"{reader.fieldnames}); choose another --out"
+            )
+        attempts = []
+        seen = set()
+        for line, row in enumerate(reader, start=2):
+            try:
+                attempt = Attempt.from_row(row)
+            except (KeyError, TypeError, ValueError) as error:
+                raise ResultsError(f"{self.path}:{line}: unreadable row ({error})") from error
+            if attempt.key in seen:
+                raise ResultsError(f"{self.path}:{line}: {attempt.config.label} attempt "
+                                   f"{attempt.attempt} is in the file twice")
+            seen.add(attempt.key)
+            attempts.append(attempt)
+        return attempts
+
+    def append(self, attempt: Attempt) -> None:
+        """Adds one attempt and syncs it to disk before returning."""
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        new = not self.path.exists() or self.path.stat().st_size == 0
+        buffer = io.StringIO()
+        writer = csv.writer(buffer, lineterminator="\n")
+        if new:
+            writer.writerow(FIELDS)
+        writer.writerow(attempt.row())
+        with open(self.path, "a", encoding="utf-8") as f:
+            f.write(buffer.getvalue())
+            f.flush()
+            os.fsync(f.fileno())
+
+
+def check_seed(attempts: list[Attempt], base_seed: int, path: Path) -> None:
+    """Attempt i of a run used seed base + i; mixing runs of two seeds would count
+    different bumps as the same attempt."""
+    for attempt in attempts:
+        if attempt.seed - attempt.attempt != base_seed:
+            raise ResultsError(
+                f"{path} was made with --seed {attempt.seed - attempt.attempt}, not "
+                f"{base_seed}: rerun with that seed to resume, or choose another --out"
+            )

@@ -1,0 +1,301 @@
+"""Runs the missing attempts with Godot workers, several at once, and saves each attempt
+as it ends."""
+
+from __future__ import annotations
+
+import ctypes
+import json
+import math
+import os
+import queue
+import signal
+import subprocess
+import sys
+import threading
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .configs import Config
+from .results import Attempt, ResultsFile
+
+PROJECT_ROOT = Path(__file__).resolve().parents[2]
+WORKER_SCENE = "res://scenes/experiment/experiment_worker.tscn"
+# Attempts per worker process for a planner: long enough that starting Godot (about a
+# second) is a small share, short enough that every configuration advances together.
+PLANNER_BLOCK = 10
+# The arcade controller rides an attempt in milliseconds: give it long blocks.
+ARCADE_BLOCK = 500
+
+
+class WorkerError(Exception):
+    """A worker failed; the message carries its last words."""
+
+
+@dataclass
+class Block:
+    """Consecutive attempts of one configuration, for one worker process."""
+
+    config: Config
+    first: int
+    count: int
+
+    def attempts(self) -> range:
+        return range(self.first, self.first + self.count)
+
+
+def plan_blocks(configs: list[Config], tries: int, done: set[tuple[Config, int]]) -> list[Block]:
+    """The missing attempts as blocks, in rounds of PLANNER_BLOCK attempts over every
+    configuration, so a run stopped early still has every configuration at about the
+    same count. Arcade blocks come first: they take seconds in all."""
+    blocks = []
+    for config in configs:
+        if config.controller.kind == "arcade":
+            blocks += _blocks_of(config, range(tries), done, ARCADE_BLOCK)
+    for start in range(0, tries, PLANNER_BLOCK):
+        for config in configs:
+            if config.controller.kind != "arcade":
+                window = range(start, min(start + PLANNER_BLOCK, tries))
+                blocks += _blocks_of(config, window, done, PLANNER_BLOCK)
+    return blocks
+
+
+def _blocks_of(config: Config, window: range, done, size: int) -> list[Block]:
+    blocks: list[Block] = []
+    for attempt in window:
+        if (config, attempt) in done:
+            continue
+        last = blocks[-1] if blocks else None
+        if last and last.first + last.count == attempt and last.count < size:
+            last.count += 1
+        else:
+            blocks.append(Block(config, attempt, 1))
+    return blocks
+
+
+def godot_command(arguments: list[str]) -> list[str]:
+    return [
+        str(PROJECT_ROOT / "tools" / "godot"),
+        "--headless",
+        "--path",
+        str(PROJECT_ROOT),
+        WORKER_SCENE,
+        "--",
+        *arguments,
+    ]
+
+
+def _die_with_parent() -> None:
+    # A worker whose driver was killed stops too, instead of riding on unheard.
+    libc = ctypes.CDLL("libc.so.6", use_errno=True)
+    libc.prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+
+
+def start_worker(arguments: list[str], log: Path) -> subprocess.Popen:
+    log.parent.mkdir(parents=True, exist_ok=True)
+    with open(log, "a", encoding="utf-8") as stderr:
+        return subprocess.Popen(
+            godot_command(arguments),
+            stdout=subprocess.PIPE,
+            stderr=stderr,
+            text=True,
+            preexec_fn=_die_with_parent,
+        )
+
+
+def block_arguments(block: Block, base_seed: int, threads: int) -> list[str]:
+    controller = block.config.controller
+    return [
+        f"--speed={block.config.speed_kmh}",
+        f"--controller={controller.kind}",
+        f"--trajectories={max(controller.trajectories, 1)}",
+        f"--seed={base_seed}",
+        f"--first={block.first}",
+        f"--count={block.count}",
+        f"--threads={threads}",
+    ]
+
+
+@dataclass
+class Progress:
+    """Counts and an ETA from the measured cost of each configuration."""
+
+    total: int
+    jobs: int
+    done_before: int
+    started: float = field(default_factory=time.monotonic)
+    done: int = 0
+    cost_ms: dict = field(default_factory=dict)
+    remaining: dict = field(default_factory=dict)
+    last_print: float = 0.0
+
+    def record(self, attempt: Attempt) -> None:
+        self.done += 1
+        costs = self.cost_ms.setdefault(attempt.config, [])
+        costs.append(attempt.wall_ms)
+        self.remaining[attempt.config] = self.remaining.get(attempt.config, 1) - 1
+
+    def eta_s(self) -> float:
+        known = [c for v in self.cost_ms.values() for c in v]
+        if not known:
+            return math.nan
+        fallback = sum(known) / len(known)
+        work_ms = 0.0
+        for config, left in self.remaining.items():
+            costs = self.cost_ms.get(config)
+            work_ms += max(left, 0) * (sum(costs) / len(costs) if costs else fallback)
+        return work_ms / 1000.0 / self.jobs
+
+    def line(self, attempt: Attempt) -> str:
+        finished = self.done_before + self.done
+        share = 100.0 * finished / max(self.total, 1)
+        return (
+            f"[{finished}/{self.total} {share:5.1f} %] {attempt.config.label} "
+            f"#{attempt.attempt}: {attempt.outcome} after {attempt.time_s:.1f} s "
+            f"({attempt.wall_ms / 1000:.1f} s to simulate) · elapsed "
+            f"{_clock(time.monotonic() - self.started)} · ETA {_clock(self.eta_s())}"
+        )
+
+    def report(self, attempt: Attempt, force: bool = False) -> None:
+        now = time.monotonic()
+        # One line per attempt on a terminal; every 10 s in a log.
+        if force or sys.stderr.isatty() or now - self.last_print >= 10.0:
+            print(self.line(attempt), file=sys.stderr, flush=True)
+            self.last_print = now
+
+
+def _clock(seconds: float) -> str:
+    if math.isnan(seconds):
+        return "--:--:--"
+    seconds = int(seconds)
+    return f"{seconds // 3600}:{seconds // 60 % 60:02d}:{seconds % 60:02d}"
+
+
+def run_blocks(
+    blocks: list[Block],
+    results: ResultsFile,
+    progress: Progress,
+    base_seed: int,
+    jobs: int,
+    threads: int,
+    log: Path,
+) -> None:
+    """Keeps `jobs` workers busy until every block is done; saves each attempt as its
+    line arrives. Raises WorkerError when a worker fails (after saving what others
+    finished); the attempts it did not finish run again on the next run."""
+    pending = list(blocks)
+    for block in blocks:
+        for _ in block.attempts():
+            progress.remaining[block.config] = progress.remaining.get(block.config, 0) + 1
+    lines: queue.Queue = queue.Queue()
+    running: dict[int, tuple[subprocess.Popen, Block]] = {}
+    failure = None
+
+    def pump(worker_id: int, process: subprocess.Popen) -> None:
+        for text in process.stdout:
+            lines.put((worker_id, text))
+        lines.put((worker_id, None))
+
+    next_id = 0
+    try:
+        while pending or running:
+            while pending and len(running) < jobs and failure is None:
+                block = pending.pop(0)
+                process = start_worker(block_arguments(block, base_seed, threads), log)
+                running[next_id] = (process, block)
+                threading.Thread(target=pump, args=(next_id, process), daemon=True).start()
+                next_id += 1
+            if not running:
+                break
+            worker_id, text = lines.get()
+            process, block = running[worker_id]
+            if text is None:
+                code = process.wait()
+                del running[worker_id]
+                if code != 0 and failure is None:
+                    failure = WorkerError(
+                        f"a worker for {block.config.label} attempts {block.first}–"
+                        f"{block.first + block.count - 1} exited with code {code}; "
+                        f"see {log}:\n{_tail(log)}"
+                    )
+                continue
+            if text.startswith("TRY "):
+                attempt = _attempt_of(text[4:], block)
+                results.append(attempt)
+                progress.record(attempt)
+                progress.report(attempt, force=not pending and len(running) == 1)
+    finally:
+        for process, _ in running.values():
+            process.kill()
+    if failure:
+        raise failure
+
+
+def _attempt_of(payload: str, block: Block) -> Attempt:
+    data = json.loads(payload)
+    controller = block.config.controller
+    ok = (
+        data["controller"] == controller.kind
+        and int(data["trajectories"]) == controller.trajectories
+        and round(float(data["speed_kmh"])) == block.config.speed_kmh
+        and int(data["attempt"]) in block.attempts()
+    )
+    if not ok:
+        raise WorkerError(f"a worker for {block.config.label} reported another attempt: {payload}")
+    return Attempt(
+        config=block.config,
+        attempt=int(data["attempt"]),
+        seed=int(data["seed"]),
+        outcome=data["outcome"],
+        time_s=float(data["time"]),
+        distance_m=float(data["distance"]),
+        steps=int(data["steps"]),
+        planning_ms=float(data["planning_ms"]),
+        wall_ms=float(data["wall_ms"]),
+    )
+
+
+def _tail(log: Path, lines: int = 8) -> str:
+    try:
+        return "\n".join(log.read_text(encoding="utf-8", errors="replace").splitlines()[-lines:])
+    except OSError:
+        return "(no log)"
+
+
+def measure_planning(controller_kind: str, counts: list[int], steps: int, speed: int,
+                     seed: int, log: Path) -> list[dict]:
+    """The planning-time study: one worker, every core for the planner, as in the game."""
+    arguments = [
+        "--timing",
+        f"--controller={controller_kind}",
+        f"--trajectories={','.join(str(c) for c in counts)}",
+        f"--steps={steps}",
+        f"--speed={speed}",
+        f"--seed={seed}",
+        "--threads=0",
+    ]
+    process = start_worker(arguments, log)
+    rows = []
+    for text in process.stdout:
+        if text.startswith("TIMING "):
+            row = json.loads(text[7:])
+            print(f"  {controller_kind} N={row['trajectories']}: {row['mean_ms']:.1f} ms "
+                  f"per plan (median {row['median_ms']:.1f}, p95 {row['p95_ms']:.1f})",
+                  file=sys.stderr, flush=True)
+            rows.append(row)
+    if process.wait() != 0:
+        raise WorkerError(f"the timing worker exited with code {process.returncode}; "
+                          f"see {log}:\n{_tail(log)}")
+    return rows
+
+
+def cpu_description() -> str:
+    model = "unknown CPU"
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return f"{model}, {os.cpu_count()} cores"
