@@ -2,10 +2,10 @@
 # `make play` and `make test` work on a bare machine. See README.md.
 SHELL := bash
 .DEFAULT_GOAL := help
-.PHONY: help setup build play test bench export clean
+.PHONY: help setup build play test bench experiment export clean
 
 help: ## List the targets
-	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-7s %s\n", $$1, $$2}'
+	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-10s %s\n", $$1, $$2}'
 
 setup: ## Provision host tools, Godot 4.6, ODE and the Python tools (idempotent)
 	@tools/provision-host.sh
@@ -24,6 +24,9 @@ test: build ## Run every check: Rust fmt/clippy/tests, gdlint, GDScript suites, 
 
 bench: setup ## Print the performance figures (see docs/benchmarks.md)
 	@tools/cargo run --release --quiet -p cpbp-core --bin cpbp-bench
+
+experiment: build ## Reproduce the thesis's evaluation headless (docs/experiment.md; ARGS="--tries 50")
+	@tools/experiment all $(ARGS)
 
 export: build ## Export the Linux build into build/linux/
 	@tools/export.sh

@@ -26,6 +26,9 @@ WORKER_SCENE = "res://scenes/experiment/experiment_worker.tscn"
 PLANNER_BLOCK = 10
 # The arcade controller rides an attempt in milliseconds: give it long blocks.
 ARCADE_BLOCK = 500
+# A worker silent this long is stuck (the dearest attempt, combined N = 15 at 10 km/h,
+# costs about 20 s on one thread): it is stopped and the run fails rather than hangs.
+SILENCE_LIMIT_S = 600.0
 
 
 class WorkerError(Exception):
@@ -136,14 +139,25 @@ class Progress:
         self.remaining[attempt.config] = self.remaining.get(attempt.config, 1) - 1
 
     def eta_s(self) -> float:
-        known = [c for v in self.cost_ms.values() for c in v]
-        if not known:
-            return math.nan
-        fallback = sum(known) / len(known)
+        """Seconds left: each configuration's mean cost so far times its attempts left. A
+        planner not timed yet is guessed from the others' cost per trajectory, as the
+        cost grows with N; with none timed there is no estimate."""
+        per_trajectory = [
+            c / config.controller.trajectories
+            for config, costs in self.cost_ms.items()
+            if config.controller.kind != "arcade"
+            for c in costs
+        ]
         work_ms = 0.0
         for config, left in self.remaining.items():
             costs = self.cost_ms.get(config)
-            work_ms += max(left, 0) * (sum(costs) / len(costs) if costs else fallback)
+            if costs:
+                work_ms += max(left, 0) * sum(costs) / len(costs)
+            elif left > 0 and config.controller.kind != "arcade" and per_trajectory:
+                guess = sum(per_trajectory) / len(per_trajectory)
+                work_ms += left * guess * config.controller.trajectories
+            elif left > 0:
+                return math.nan
         return work_ms / 1000.0 / self.jobs
 
     def line(self, attempt: Attempt) -> str:
@@ -189,11 +203,14 @@ def run_blocks(
             progress.remaining[block.config] = progress.remaining.get(block.config, 0) + 1
     lines: queue.Queue = queue.Queue()
     running: dict[int, tuple[subprocess.Popen, Block]] = {}
+    reported: dict[int, int] = {}
+    heard: dict[int, float] = {}
     failure = None
 
     def pump(worker_id: int, process: subprocess.Popen) -> None:
-        for text in process.stdout:
-            lines.put((worker_id, text))
+        with process.stdout:
+            for text in process.stdout:
+                lines.put((worker_id, text))
         lines.put((worker_id, None))
 
     next_id = 0
@@ -203,23 +220,32 @@ def run_blocks(
                 block = pending.pop(0)
                 process = start_worker(block_arguments(block, base_seed, threads), log)
                 running[next_id] = (process, block)
+                reported[next_id] = 0
+                heard[next_id] = time.monotonic()
                 threading.Thread(target=pump, args=(next_id, process), daemon=True).start()
                 next_id += 1
             if not running:
                 break
-            worker_id, text = lines.get()
+            try:
+                worker_id, text = lines.get(timeout=5.0)
+            except queue.Empty:
+                failure = failure or _silent_worker(running, heard, log)
+                continue
             process, block = running[worker_id]
+            heard[worker_id] = time.monotonic()
             if text is None:
                 code = process.wait()
                 del running[worker_id]
-                if code != 0 and failure is None:
+                short = reported[worker_id] < block.count
+                if (code != 0 or short) and failure is None:
                     failure = WorkerError(
                         f"a worker for {block.config.label} attempts {block.first}–"
-                        f"{block.first + block.count - 1} exited with code {code}; "
-                        f"see {log}:\n{_tail(log)}"
+                        f"{block.first + block.count - 1} exited with code {code} after "
+                        f"{reported[worker_id]} of them; see {log}:\n{_tail(log)}"
                     )
                 continue
             if text.startswith("TRY "):
+                reported[worker_id] += 1
                 attempt = _attempt_of(text[4:], block)
                 results.append(attempt)
                 progress.record(attempt)
@@ -229,6 +255,17 @@ def run_blocks(
             process.kill()
     if failure:
         raise failure
+
+
+def _silent_worker(running, heard, log: Path) -> WorkerError | None:
+    for worker_id, (process, block) in running.items():
+        if time.monotonic() - heard[worker_id] > SILENCE_LIMIT_S:
+            process.kill()
+            return WorkerError(
+                f"a worker for {block.config.label} said nothing for {SILENCE_LIMIT_S:.0f} s "
+                f"and was stopped; see {log}:\n{_tail(log)}"
+            )
+    return None
 
 
 def _attempt_of(payload: str, block: Block) -> Attempt:

@@ -1,0 +1,55 @@
+extends TestCase
+## The experiment worker's command line: good arguments read, bad ones explained.
+
+
+func test_a_block_of_attempts_is_read() -> void:
+	var args := (
+		ExperimentArgs
+		. parse(
+			PackedStringArray(
+				[
+					"--speed=20",
+					"--controller=optimizer",
+					"--trajectories=10",
+					"--seed=7",
+					"--first=40",
+					"--count=10",
+					"--threads=1",
+				]
+			)
+		)
+	)
+	assert_eq(args.error, "")
+	assert_eq(args.speed, 20.0)
+	assert_eq(args.controller, "optimizer")
+	assert_eq(args.trajectories, [10] as Array[int])
+	assert_eq([args.base_seed, args.first, args.count, args.threads], [7, 40, 10, 1])
+	assert_false(args.timing)
+
+
+func test_the_timing_study_takes_a_list_of_counts() -> void:
+	var args := ExperimentArgs.parse(
+		PackedStringArray(["--timing", "--trajectories=5,6,128", "--steps=30"])
+	)
+	assert_eq(args.error, "")
+	assert_true(args.timing)
+	assert_eq(args.trajectories, [5, 6, 128] as Array[int])
+	assert_eq(args.steps, 30)
+
+
+func test_bad_values_are_explained() -> void:
+	var cases := {
+		"--speed=fast": "--speed needs a number",
+		"--speed=nan": "--speed needs a number",
+		"--speed=0": "--speed must be within",
+		"--controller=autopilot": "--controller must be",
+		"--trajectories=5,0": "--trajectories must be within",
+		"--count=-3": "--count must be within",
+		"--threads=65": "--threads must be within",
+		"--colour=red": "unknown argument",
+	}
+	for argument: String in cases:
+		var args := ExperimentArgs.parse(PackedStringArray([argument]))
+		assert_true(
+			args.error.begins_with(cases[argument]), "%s gave '%s'" % [argument, args.error]
+		)

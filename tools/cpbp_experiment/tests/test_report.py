@@ -1,0 +1,59 @@
+import tempfile
+import unittest
+from pathlib import Path
+
+from cpbp_experiment import report
+from cpbp_experiment.configs import Config, Controller
+from cpbp_experiment.results import Attempt
+
+ARCADE = Controller("arcade")
+COMBINED = Controller("combined", 5)
+
+
+def attempts(config: Config, goals: int, fell: int, timeouts: int = 0) -> list[Attempt]:
+    outcomes = ["goal"] * goals + ["fell"] * fell + ["timeout"] * timeouts
+    return [Attempt(config, i, 1000 + i, outcome, 9.0 if outcome == "goal" else 4.0, 36.0,
+                    270, 0.0 if config.controller == ARCADE else 14.0, 2000.0)
+            for i, outcome in enumerate(outcomes)]
+
+
+class ReportTest(unittest.TestCase):
+    def setUp(self):
+        self.attempts = (attempts(Config(10, ARCADE), 81, 180, 2)
+                         + attempts(Config(10, COMBINED), 15, 133)
+                         + attempts(Config(25, COMBINED), 29, 0))
+        self.summaries = report.summarise(self.attempts)
+
+    def test_counts_and_wilson_intervals_in_the_table(self):
+        table = report.success_table(self.summaries)
+        self.assertIn("**30.8 %** (25.5–36.6) 81/263", table)  # Newcombe's 81/263
+        self.assertIn("**10.1 %** (6.2–16.0) 15/148", table)
+        self.assertIn("**100.0 %** (88.3–100.0) 29/29", table)
+        self.assertIn("| arcade | **30.8 %** (25.5–36.6) 81/263 | – |", table)
+
+    def test_outcomes_widths_and_costs(self):
+        outcomes = report.outcome_table(self.summaries)
+        self.assertIn("| arcade | 10 km/h | 263 | 81 | 180 | 2 | 11.1 pp | 9.00 s | 2.00 s |",
+                      outcomes)
+        costs = report.cost_table(self.summaries, self.attempts)
+        self.assertIn("| combined-5 | 177 | 2.00 s |", costs)
+        self.assertIn("14.0 ms |", costs)
+
+    def test_charts_are_written(self):
+        with tempfile.TemporaryDirectory() as directory:
+            success = Path(directory) / "success.png"
+            report.success_chart(self.summaries, success)
+            timing = [{"controller": k, "trajectories": n, "mean_ms": 2.0 * n,
+                       "median_ms": 2.0 * n, "p95_ms": 2.5 * n}
+                      for k in ("optimizer", "combined") for n in (5, 10, 20)]
+            planning = Path(directory) / "planning.png"
+            report.planning_chart(timing, "test machine", planning)
+            for path in (success, planning):
+                self.assertEqual(path.read_bytes()[:4], b"\x89PNG")
+            table = report.timing_table(timing)
+            self.assertIn("| 20 | 40.0 / 50.0 | 40.0 / 50.0 | 25 Hz | 25 Hz | no |", table)
+            self.assertIn("| 10 | 20.0 / 25.0 | 20.0 / 25.0 | 50 Hz | 50 Hz | yes |", table)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,44 @@
+import unittest
+
+from cpbp_experiment.stats import wilson_interval
+
+
+class WilsonIntervalTest(unittest.TestCase):
+    def test_matches_newcombes_published_values(self):
+        # Newcombe (1998), "Two-sided confidence intervals for the single proportion",
+        # Statistics in Medicine 17, Table I, method 3 (score interval without continuity
+        # correction), to four decimals.
+        known = {
+            (81, 263): (0.2553, 0.3662),
+            (15, 148): (0.0624, 0.1605),
+            (0, 20): (0.0000, 0.1611),
+            (1, 29): (0.0061, 0.1718),
+            (29, 29): (0.8830, 1.0000),
+        }
+        for (successes, trials), (low, high) in known.items():
+            with self.subTest(successes=successes, trials=trials):
+                got_low, got_high = wilson_interval(successes, trials)
+                self.assertAlmostEqual(got_low, low, places=4)
+                self.assertAlmostEqual(got_high, high, places=4)
+
+    def test_stays_within_zero_and_one_and_holds_the_estimate(self):
+        for trials in (1, 7, 200, 500):
+            for successes in range(0, trials + 1, max(1, trials // 10)):
+                low, high = wilson_interval(successes, trials)
+                self.assertTrue(0.0 <= low <= successes / trials <= high <= 1.0)
+
+    def test_narrows_with_more_trials(self):
+        widths = [wilson_interval(n // 2, n) for n in (20, 200, 2000)]
+        spans = [high - low for low, high in widths]
+        self.assertGreater(spans[0], spans[1])
+        self.assertGreater(spans[1], spans[2])
+
+    def test_refuses_impossible_counts(self):
+        for successes, trials in ((1, 0), (-1, 5), (6, 5)):
+            with self.subTest(successes=successes, trials=trials):
+                with self.assertRaises(ValueError):
+                    wilson_interval(successes, trials)
+
+
+if __name__ == "__main__":
+    unittest.main()

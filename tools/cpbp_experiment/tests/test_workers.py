@@ -1,0 +1,66 @@
+import json
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+from unittest import mock
+
+from cpbp_experiment import runner
+from cpbp_experiment.configs import Config, Controller
+from cpbp_experiment.results import ResultsFile
+from cpbp_experiment.runner import Block, Progress, WorkerError, run_blocks
+
+CONFIG = Config(15, Controller("combined", 5))
+
+
+def fake_worker(script: str):
+    """Stands in for Godot: a Python process that prints what `script` prints."""
+    return lambda arguments: [sys.executable, "-c", script, *arguments]
+
+
+def try_line(attempt: int) -> str:
+    return "TRY " + json.dumps({
+        "controller": "combined", "trajectories": 5, "speed_kmh": 15.0, "attempt": attempt,
+        "seed": 1000 + attempt, "outcome": "goal", "time": 9.1, "distance": 36.0,
+        "steps": 273, "planning_ms": 13.0, "wall_ms": 10.0,
+    })
+
+
+class RunBlocksTest(unittest.TestCase):
+    def setUp(self):
+        self.directory = tempfile.TemporaryDirectory()
+        self.out = Path(self.directory.name)
+        self.results = ResultsFile(self.out / "results.csv")
+
+    def tearDown(self):
+        self.directory.cleanup()
+
+    def run_with(self, script: str, blocks: list[Block]) -> None:
+        progress = Progress(total=10, jobs=2, done_before=0)
+        with mock.patch.object(runner, "godot_command", fake_worker(script)), \
+                mock.patch("sys.stderr"):
+            run_blocks(blocks, self.results, progress, 1000, 2, 1, self.out / "workers.log")
+
+    def test_every_reported_attempt_is_saved(self):
+        script = (f"print({try_line(0)!r}); print('noise'); print({try_line(1)!r})")
+        self.run_with(script, [Block(CONFIG, 0, 2)])
+        self.assertEqual([a.attempt for a in self.results.load()], [0, 1])
+
+    def test_a_failing_worker_stops_the_run_and_its_words_are_shown(self):
+        script = (f"import sys; print({try_line(0)!r}); "
+                  "print('ERROR: level broken', file=sys.stderr); sys.exit(3)")
+        with self.assertRaisesRegex(WorkerError, "(?s)exited with code 3.*level broken"):
+            self.run_with(script, [Block(CONFIG, 0, 2)])
+        self.assertEqual([a.attempt for a in self.results.load()], [0], "what it did is kept")
+
+    def test_a_worker_that_ends_early_is_a_failure(self):
+        with self.assertRaisesRegex(WorkerError, "after 1 of them"):
+            self.run_with(f"print({try_line(0)!r})", [Block(CONFIG, 0, 2)])
+
+    def test_a_report_for_another_attempt_is_refused(self):
+        with self.assertRaisesRegex(WorkerError, "reported another attempt"):
+            self.run_with(f"print({try_line(7)!r})", [Block(CONFIG, 0, 2)])
+
+
+if __name__ == "__main__":
+    unittest.main()
