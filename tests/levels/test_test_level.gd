@@ -51,6 +51,22 @@ func test_combined_with_5_trajectories_reaches_the_goal_in_9_of_10_attempts() ->
 	assert_gt(reached, 8, "attempts that reached the goal: %s" % ", ".join(outcomes))
 
 
+func test_an_attempt_repeats_exactly_whatever_was_ridden_before() -> void:
+	# The experiment rides many attempts in one process; a rerun of one on its own (after
+	# a resume) must give the same result.
+	for controller: int in [0, 3]:
+		_bike.controller = controller
+		_bike.trajectories = 5
+		_bike.planner_seed = 11
+		var first := TestRun.ride(_level, _bike, 5, 25.0)
+		TestRun.ride(_level, _bike, 6, 25.0)
+		_bike.planner_seed = 11
+		var again := TestRun.ride(_level, _bike, 5, 25.0)
+		# All but the planning time, which is the machine's.
+		for key: String in ["outcome", "time", "distance", "steps"]:
+			assert_eq(again[key], first[key], "controller %d: %s" % [controller, key])
+
+
 func test_an_attempt_without_a_rider_ends_in_a_fall_or_timeout() -> void:
 	# Manual mode with the bar left alone: nobody balances, the bike falls.
 	_bike.controller = 1

@@ -157,10 +157,13 @@ impl Simulation {
         events
     }
 
-    /// Puts the bike at rest at `placement` (and makes that the spawn point).
+    /// Puts the bike at rest at `placement` (and makes that the spawn point). The ride
+    /// from there repeats exactly whatever was simulated before.
     pub fn reset_to(&mut self, placement: Placement) {
         self.spawn = placement;
         self.bike.reset(&mut self.world, &placement);
+        self.world.reset_motors();
+        self.world.reset_random_seed();
         self.controls = Controls::default();
         self.crash.reset();
         self.crashed = None;

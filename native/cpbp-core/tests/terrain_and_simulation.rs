@@ -296,10 +296,45 @@ fn lifting_stands_a_fallen_bike_up_where_it_lies() {
         sim.bike().lean(sim.world(), DVec3::Y).abs() < 1e-6,
         "lifted upright"
     );
-    // Standing still it is an inverted pendulum: check it soon, before it topples again.
+    // Standing still it is an inverted pendulum that QuickStep's noise starts tipping at
+    // once (about 1–2° by 0.3 s, depending on the random sequence): check it soon, with
+    // room for that, before it topples again.
     settle(&mut sim, 0.3);
     let standing_at = DVec3::from_array(sim.world().body_position(frame));
     assert!((standing_at.x - lying_at.x).abs() < 0.6 && (standing_at.z - lying_at.z).abs() < 0.6);
-    assert!(sim.bike().lean(sim.world(), DVec3::Y).abs() < 0.02);
+    let lean = sim.bike().lean(sim.world(), DVec3::Y);
+    assert!(lean.abs() < 0.05, "lean {lean} rad 0.3 s after the lift");
     assert_eq!(sim.bike().wheel_contacts(sim.world()), (true, true));
+}
+
+/// Throttle on and the bar swinging, one state per control step.
+fn ride_from_spawn(sim: &mut Simulation, steps: usize) -> Vec<cpbp_core::ode::WorldState> {
+    (0..steps)
+        .map(|i| {
+            let mut controls = Controls::default();
+            controls.set(cpbp_core::bike::index::REAR_WHEEL, 10.0);
+            controls.set(cpbp_core::bike::index::STEER, 0.4 * (i as f64 * 0.2).sin());
+            sim.set_controls(controls);
+            sim.step();
+            sim.world().snapshot()
+        })
+        .collect()
+}
+
+#[test]
+fn a_ride_after_a_reset_repeats_whatever_was_ridden_before() {
+    // QuickStep draws from a per-thread random sequence; the experiment rides many
+    // attempts in one process and each must repeat exactly when rerun on its own.
+    let spawn = spawn_at(0.0);
+    let mut sim = Simulation::new(SimulationConfig::default(), flat(), spawn);
+    sim.reset_to(spawn);
+    let fresh = sim.world().snapshot();
+    let first = ride_from_spawn(&mut sim, 60);
+    ride_from_spawn(&mut sim, 45);
+    sim.reset_to(spawn);
+    // Planners read the state before the first step: it must be the fresh one, motors too.
+    assert_eq!(sim.world().snapshot(), fresh);
+    let again = ride_from_spawn(&mut sim, 60);
+    let differs = (0..first.len()).find(|&i| first[i] != again[i]);
+    assert_eq!(differs, None, "the replay differs from this step on");
 }

@@ -136,6 +136,16 @@ impl World {
         }
     }
 
+    /// Puts every motor back as built: no target velocity, no force, and Euler motors'
+    /// cached angles at zero. Otherwise a ride started afresh would inherit the last
+    /// ride's motor settings through its snapshots, and a planner reading the cached
+    /// angles before the first step would see the old ride's pose.
+    pub fn reset_motors(&mut self) {
+        for joint in 0..self.joints.len() {
+            self.set_motor_state(JointId(joint), &MotorState::default());
+        }
+    }
+
     /// Angle (radians) of a hinge, or of one Euler-motor axis as of the last step.
     pub fn joint_angle(&self, joint: JointId, axis: usize) -> f64 {
         let (id, kind) = self.joints[joint.0];

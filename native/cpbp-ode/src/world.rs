@@ -415,6 +415,13 @@ impl World {
         Ok(())
     }
 
+    /// Restarts the calling thread's QuickStep random sequence, as at thread start, so a
+    /// ride started afresh does not depend on the rides stepped on this thread before.
+    pub fn reset_random_seed(&mut self) {
+        // SAFETY: sets the calling thread's seed (thread-local in our ODE build).
+        unsafe { ffi::dRandSetSeed(0) };
+    }
+
     /// Advances the world by `dt` seconds: collision, contact joints, QuickStep.
     pub fn step(&mut self, dt: f64) {
         ensure_thread_data();
