@@ -52,12 +52,7 @@ class Config:
 
 
 def parse_speeds(text: str) -> list[int]:
-    speeds = []
-    for item in text.split(","):
-        if not item.strip().isdigit() or not 1 <= int(item) <= 90:
-            raise ValueError(f"speeds are whole km/h within 1–90, not '{item}'")
-        speeds.append(int(item))
-    return sorted(set(speeds))
+    return _whole_numbers(text, 1, 90, "speeds are whole km/h")
 
 
 def parse_controllers(text: str) -> list[Controller]:
@@ -70,9 +65,14 @@ def display_order(controller: Controller) -> tuple[int, int]:
 
 
 def parse_counts(text: str) -> list[int]:
-    counts = []
+    return _whole_numbers(text, 1, 256, "trajectory counts are whole numbers")
+
+
+def _whole_numbers(text: str, low: int, high: int, what: str) -> list[int]:
+    """A comma-separated list of whole numbers within low–high, sorted, each once."""
+    numbers = set()
     for item in text.split(","):
-        if not item.strip().isdigit() or not 1 <= int(item) <= 256:
-            raise ValueError(f"trajectory counts are within 1–256, not '{item}'")
-        counts.append(int(item))
-    return sorted(set(counts))
+        if not item.strip().isdigit() or not low <= int(item) <= high:
+            raise ValueError(f"{what} within {low}–{high}, not '{item}'")
+        numbers.add(int(item))
+    return sorted(numbers)
