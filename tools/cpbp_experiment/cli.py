@@ -128,6 +128,12 @@ def write_report(out: Path) -> None:
             "## Success rate (reached the goal), 95 % Wilson score intervals", "",
             report.success_table(summaries), "", f"![success rates]({SUCCESS_CHART})", "",
             "## Outcomes and interval widths", "", report.outcome_table(summaries), "",
+            "## Paired comparisons", "",
+            "Attempt *i* of every controller meets the same bumps, so the attempts pair up. "
+            "*only A*: A reached the goal and B did not. The exact two-sided McNemar test "
+            "asks whether such a split could be chance; **bold** is p < 0.05, not "
+            "corrected for the number of comparisons.", "",
+            report.paired_table(attempts), "",
             "## Cost of an attempt (one planning thread per worker)", "",
             report.cost_table(summaries, attempts), "",
         ]

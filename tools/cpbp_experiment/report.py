@@ -11,7 +11,7 @@ from pathlib import Path
 
 from .configs import Config, Controller, display_order
 from .results import Attempt
-from .stats import mean, wilson_interval
+from .stats import mcnemar_exact, mean, wilson_interval
 
 # The game steps its controller at 30 Hz: a plan must take at most 33 ms to keep up.
 CONTROL_RATE_HZ = 30.0
@@ -126,6 +126,40 @@ def cost_table(summaries: dict[Config, Summary], attempts: list[Attempt]) -> str
             f"{wall / max(simulated, 1e-9):.2f} s | "
             + (f"{planning:.1f} ms |" if controller.kind != "arcade" else "– |")
         )
+    return "\n".join(lines)
+
+
+def paired_table(attempts: list[Attempt]) -> str:
+    """Each planner against arcade, and combined against the optimizer at the same N, on
+    the attempts both rode (the same bumps), with the exact McNemar test."""
+    outcome = {(a.config, a.attempt): a.outcome == "goal" for a in attempts}
+    configs = {a.config for a in attempts}
+    controllers = sorted({c.controller for c in configs}, key=display_order)
+    pairs = [(c, Controller("arcade")) for c in controllers if c.kind != "arcade"]
+    pairs += [(c, Controller("optimizer", c.trajectories)) for c in controllers
+              if c.kind == "combined"]
+    lines = [
+        "| speed | A | B | pairs | both goal | only A | only B | neither | McNemar p |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    for speed in sorted({c.speed_kmh for c in configs}):
+        for first, second in pairs:
+            a_config, b_config = Config(speed, first), Config(speed, second)
+            shared = sorted({i for (c, i) in outcome if c == a_config}
+                            & {i for (c, i) in outcome if c == b_config})
+            if not shared:
+                continue
+            a_goal = [outcome[(a_config, i)] for i in shared]
+            b_goal = [outcome[(b_config, i)] for i in shared]
+            both = sum(x and y for x, y in zip(a_goal, b_goal))
+            only_a = sum(x and not y for x, y in zip(a_goal, b_goal))
+            only_b = sum(y and not x for x, y in zip(a_goal, b_goal))
+            p = mcnemar_exact(only_a, only_b)
+            lines.append(
+                f"| {speed} km/h | {first.label} | {second.label} | {len(shared)} | {both} | "
+                f"{only_a} | {only_b} | {len(shared) - both - only_a - only_b} | "
+                + (f"**{p:.2g}**" if p < 0.05 else f"{p:.2g}") + " |"
+            )
     return "\n".join(lines)
 
 

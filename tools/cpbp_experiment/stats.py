@@ -28,3 +28,17 @@ def wilson_interval(successes: int, trials: int, z: float = Z_95) -> tuple[float
 
 def mean(values: list[float]) -> float:
     return sum(values) / len(values) if values else math.nan
+
+
+def mcnemar_exact(only_first: int, only_second: int) -> float:
+    """Two-sided exact McNemar test for paired successes: the chance of a split at least
+    this uneven between the discordant pairs (one succeeded, the other not) if both
+    succeed equally often. Every controller meets the same bumps at attempt i, so the
+    attempts pair up and this is sharper than comparing two intervals."""
+    if only_first < 0 or only_second < 0:
+        raise ValueError("pair counts cannot be negative")
+    discordant = only_first + only_second
+    if discordant == 0:
+        return 1.0
+    tail = sum(math.comb(discordant, k) for k in range(min(only_first, only_second) + 1))
+    return min(1.0, 2.0 * tail / 2.0**discordant)

@@ -39,6 +39,13 @@ class ReportTest(unittest.TestCase):
         self.assertIn("| combined-5 | 177 | 2.00 s |", costs)
         self.assertIn("14.0 ms |", costs)
 
+    def test_paired_comparison_counts_the_same_attempts(self):
+        paired = report.paired_table(self.attempts)
+        # Attempts 0–147 of both at 10 km/h: combined reached the goal on 0–14, arcade
+        # on 0–80, so arcade alone on 15–80 and neither on 81–147.
+        self.assertIn("| 10 km/h | combined-5 | arcade | 148 | 15 | 0 | 66 | 67 | **", paired)
+        self.assertNotIn("25 km/h", paired, "no arcade attempts at 25 km/h to pair with")
+
     def test_charts_are_written(self):
         with tempfile.TemporaryDirectory() as directory:
             success = Path(directory) / "success.png"

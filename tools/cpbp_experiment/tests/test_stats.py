@@ -1,6 +1,6 @@
 import unittest
 
-from cpbp_experiment.stats import wilson_interval
+from cpbp_experiment.stats import mcnemar_exact, wilson_interval
 
 
 class WilsonIntervalTest(unittest.TestCase):
@@ -38,6 +38,23 @@ class WilsonIntervalTest(unittest.TestCase):
             with self.subTest(successes=successes, trials=trials):
                 with self.assertRaises(ValueError):
                     wilson_interval(successes, trials)
+
+
+class McNemarTest(unittest.TestCase):
+    def test_matches_the_binomial_tail(self):
+        # 1 against 6 discordant pairs: P(X ≤ 1 | n = 7, ½) = 8/128, two-sided 0.125.
+        self.assertAlmostEqual(mcnemar_exact(1, 6), 0.125)
+        self.assertAlmostEqual(mcnemar_exact(6, 1), 0.125)
+        # 0 against 10: 2 · 2⁻¹⁰.
+        self.assertAlmostEqual(mcnemar_exact(0, 10), 2 / 1024)
+        # Agresti, Categorical Data Analysis (2002), §10.1.4: 86 against 150 discordant
+        # pairs gives an exact two-sided P of about 3.8e-5 (z = 4.17 asymptotically).
+        self.assertLess(mcnemar_exact(86, 150), 5e-5)
+        self.assertGreater(mcnemar_exact(86, 150), 2e-5)
+
+    def test_an_even_split_or_no_discordant_pair_shows_nothing(self):
+        self.assertEqual(mcnemar_exact(0, 0), 1.0)
+        self.assertEqual(mcnemar_exact(5, 5), 1.0)
 
 
 if __name__ == "__main__":
