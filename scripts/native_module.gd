@@ -31,6 +31,21 @@ static func ode_is_suitable() -> bool:
 	return is_loaded() and bool(ClassDB.class_call_static(INFO_CLASS, &"ode_is_suitable"))
 
 
+## What this build is and runs on: the native module's platform (compiler, ODE, the C
+## library, CPU model and its math path) and the engine's version and build. The experiment
+## records it with every result, and `--native-info` prints it. Empty when not loaded.
+static func platform() -> Dictionary:
+	if not is_loaded():
+		return {}
+	var native: Dictionary = ClassDB.class_call_static(INFO_CLASS, &"platform")
+	var engine := Engine.get_version_info()
+	var description := native.duplicate()
+	description["godot"] = engine.string
+	description["godot_hash"] = engine.hash
+	description["godot_build"] = engine.build
+	return description
+
+
 ## One line for title screens and bug reports.
 static func describe() -> String:
 	if not is_loaded():

@@ -9,8 +9,10 @@ if [ -n "${GODOT:-}" ]; then
   log "using GODOT=$GODOT; no private root needed"
   exit 0
 fi
+# The root's engine and C library decide how rides come out: compare them with the lock
+# (a warning here, an error in CI) every time, not only when the root is built.
 if [ -f "$GODOT_ROOT/.complete" ]; then
-  exit 0
+  exec "$(dirname "$0")/godot-root-lock.sh"
 fi
 
 command -v debootstrap >/dev/null || die "debootstrap is missing; run tools/provision-host.sh first"
@@ -26,3 +28,6 @@ if [ "$(id -u)" -ne 0 ]; then as_root chown -R "$(id -u):$(id -g)" "$partial"; f
 touch "$partial/.complete"
 mv "$partial" "$GODOT_ROOT"
 log "Godot root ready"
+# Debian's mirror serves only its current versions, so the lock cannot be installed from
+# it; what can be done is to notice when the mirror moved on.
+exec "$(dirname "$0")/godot-root-lock.sh"

@@ -30,7 +30,7 @@ step "rustfmt"              tools/cargo fmt --all --check
 step "clippy"               tools/cargo clippy --workspace --all-targets --quiet -- -D warnings
 step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot
 # The controllers' ride tests simulate minutes of planning: fast only in a release build.
-step "controller rides (release)" tools/cargo test --release -p cpbp-core --test optimizer --test anytime
+step "controller rides (release)" tools/cargo test --release -p cpbp-core --test optimizer --test anytime --test reproducible
 # The experiment's statistics, results file and scheduling (no Godot needed).
 step "experiment unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest discover -s tools/cpbp_experiment/tests -t tools
 step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdlint"
@@ -39,6 +39,9 @@ step "test runner self-test" tools/test-runner-selftest.sh
 step "GDScript suites"      godot_suites
 # Quick mode with real workers: a run killed part-way resumes with nothing lost or doubled.
 step "experiment quick run" env PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_quick_run
+# An attempt repeats exactly (fresh or after other rides, 1 or 2 threads); platforms do not
+# mix unasked; verify catches a tampered row.
+step "experiment reproducibility" env PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_reproducible
 screenshots() {
   local game=res://scenes/game/game.tscn levels=res://scenes/levels
   tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/start-menu.png \

@@ -13,6 +13,8 @@ var first := 0
 var count := 1
 var threads := 0
 var timing := false
+var platform_only := false
+var warm_up := ""
 var steps := 150
 var error := ""
 
@@ -49,6 +51,12 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 				args.steps = int(_number(args, "steps", value, 1, 100_000))
 			"timing":
 				args.timing = true
+			"platform":
+				args.platform_only = true
+			"warm-up":
+				if not ExperimentWorker.CONTROLLERS.has(value):
+					args._fail("--warm-up must be arcade, optimizer or combined, not '%s'" % value)
+				args.warm_up = value
 			_:
 				args._fail("unknown argument '%s'" % argument)
 	return args

@@ -8,8 +8,13 @@ extends Node
 ##
 ## Arguments (after `--`): --speed=KMH --controller=arcade|optimizer|combined
 ## --trajectories=N[,N...] --seed=BASE --first=I --count=K --threads=T [--timing --steps=S]
+## [--warm-up=CONTROLLER] [--platform]
 ## Attempt i uses bump seed BASE + i and a planner seed drawn from it, so every controller
 ## meets the same bumps at attempt i and a rerun of an attempt repeats it exactly.
+## Before any attempt it prints one `PLATFORM {json}` line (NativeModule.platform()), what
+## the results depend on beyond the code; `--platform` prints only that and quits.
+## `--warm-up` first rides one attempt with another controller, unreported, to check that
+## an attempt does not depend on what the worker rode before it.
 
 const LEVEL := preload("res://scenes/levels/test_level/test_level.tscn")
 const BIKE := preload("res://scenes/bike/bike.tscn")
@@ -28,9 +33,15 @@ func _ready() -> void:
 		printerr("experiment worker: ", args.error)
 		get_tree().quit(EXIT_USAGE)
 		return
+	print("PLATFORM ", JSON.stringify(NativeModule.platform()))
+	if args.platform_only:
+		get_tree().quit(0)
+		return
 	if not _build(args):
 		get_tree().quit(EXIT_SETUP)
 		return
+	if not args.warm_up.is_empty():
+		_warm_up(args)
 	if args.timing:
 		_measure_planning(args)
 	else:
@@ -52,8 +63,8 @@ func _build(args: ExperimentArgs) -> bool:
 	_bike.planning_threads = args.threads
 	# The game's own default, not this machine's saved settings.
 	_bike.motor_force = Settings.DEFAULTS[&"motor_force"]
-	# Wait for every plan: each step then uses a fresh plan, and a ride repeats exactly.
-	_bike.plan_wait_ms = 1000.0
+	# Wait for every plan: no step uses a late plan, and a ride repeats exactly.
+	_bike.wait_for_every_plan = true
 	add_child(_bike)
 	# Only TestRun drives the bike; nothing is drawn.
 	_bike.set_physics_process(false)
@@ -66,7 +77,7 @@ func _ride_attempts(args: ExperimentArgs) -> void:
 	_bike.trajectories = args.trajectories[0]
 	for attempt in range(args.first, args.first + args.count):
 		var bump_seed := args.base_seed + attempt
-		_bike.planner_seed = hash([bump_seed, "planner"])
+		_bike.planner_seed = planner_seed_of(bump_seed)
 		var started := Time.get_ticks_usec()
 		var result := TestRun.ride(_level, _bike, bump_seed, args.speed)
 		(
@@ -78,11 +89,26 @@ func _ride_attempts(args: ExperimentArgs) -> void:
 					"trajectories": args.trajectories[0] if args.controller != "arcade" else 0,
 					"attempt": attempt,
 					"seed": bump_seed,
+					"planner_seed": _bike.planner_seed,
 					"wall_ms": (Time.get_ticks_usec() - started) / 1000.0,
 				}
 			)
 		)
 		print("TRY ", JSON.stringify(result))
+
+
+## The planner's seed for the attempt with bump seed `bump_seed`.
+static func planner_seed_of(bump_seed: int) -> int:
+	return hash([bump_seed, "planner"])
+
+
+## Rides one attempt (bump seed BASE − 1) with the warm-up controller, reporting nothing.
+func _warm_up(args: ExperimentArgs) -> void:
+	var controller := _bike.controller
+	_bike.controller = CONTROLLERS[args.warm_up]
+	_bike.planner_seed = planner_seed_of(args.base_seed - 1)
+	TestRun.ride(_level, _bike, args.base_seed - 1, args.speed)
+	_bike.controller = controller
 
 
 ## Rides the level from its start with each trajectory count for `steps` control steps

@@ -77,6 +77,9 @@ func _build_choices() -> void:
 ## or unsuitable. Used to check an exported build and for bug reports.
 func _print_native_info_and_quit() -> void:
 	print(NativeModule.describe())
+	var platform := NativeModule.platform()
+	for key: String in platform:
+		print("  %s: %s" % [key, platform[key]])
 	# Quitting before the first frame has run makes the release template's containers
 	# report spurious signal errors while they are torn down.
 	await get_tree().process_frame

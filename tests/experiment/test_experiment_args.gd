@@ -37,6 +37,13 @@ func test_the_timing_study_takes_a_list_of_counts() -> void:
 	assert_eq(args.steps, 30)
 
 
+func test_the_platform_and_a_warm_up_ride_can_be_asked_for() -> void:
+	var args := ExperimentArgs.parse(PackedStringArray(["--platform", "--warm-up=arcade"]))
+	assert_eq(args.error, "")
+	assert_true(args.platform_only)
+	assert_eq(args.warm_up, "arcade")
+
+
 func test_bad_values_are_explained() -> void:
 	var cases := {
 		"--speed=fast": "--speed needs a number",
@@ -46,6 +53,7 @@ func test_bad_values_are_explained() -> void:
 		"--trajectories=5,0": "--trajectories must be within",
 		"--count=-3": "--count must be within",
 		"--threads=65": "--threads must be within",
+		"--warm-up=autopilot": "--warm-up must be",
 		"--colour=red": "unknown argument",
 	}
 	for argument: String in cases:

@@ -18,7 +18,7 @@ func before_each() -> void:
 	add_child(_bike)
 	_bike.set_physics_process(false)
 	# Wait for every plan, so the run repeats exactly for its seeds.
-	_bike.plan_wait_ms = 1000.0
+	_bike.wait_for_every_plan = true
 
 
 func after_each() -> void:
@@ -65,6 +65,7 @@ func test_an_attempt_repeats_exactly_whatever_was_ridden_before() -> void:
 		# All but the planning time, which is the machine's.
 		for key: String in ["outcome", "time", "distance", "steps"]:
 			assert_eq(again[key], first[key], "controller %d: %s" % [controller, key])
+		assert_eq(first.late_plans, 0, "controller %d: every step had its plan" % controller)
 
 
 func test_an_attempt_without_a_rider_ends_in_a_fall_or_timeout() -> void:

@@ -96,6 +96,23 @@ func test_the_optimizer_settings_shape_its_plans() -> void:
 	assert_false(_bike.is_crashed())
 
 
+func test_late_plans_are_counted_and_none_come_when_waiting_for_every_plan() -> void:
+	var start := Transform3D(Basis(), Vector3(0, 0.02, 0))
+	await _spawn(start)
+	_bike.set_physics_process(false)
+	_bike.controller = 3
+	_bike.trajectories = 8
+	_bike.plan_wait_ms = 0.0
+	_bike.set_drive(1.0, 0.0)
+	_bike.advance(20)
+	assert_gt(_bike.get_late_plan_count(), 10, "not waiting at all, plans come late")
+	_bike.reset_to(start)
+	assert_eq(_bike.get_late_plan_count(), 0, "a new ride counts anew")
+	_bike.wait_for_every_plan = true
+	_bike.advance(20)
+	assert_eq(_bike.get_late_plan_count(), 0, "every step waited for its plan")
+
+
 func _spawn(where: Transform3D) -> void:
 	_bike = BikeSimulation.new()
 	_bike.transform = where

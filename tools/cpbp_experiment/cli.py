@@ -9,10 +9,13 @@ from datetime import date
 from pathlib import Path
 
 from . import report
-from .configs import (THESIS_CONTROLLERS, THESIS_SPEEDS, TIMING_COUNTS, Config, parse_controllers,
-                      parse_counts, parse_speeds)
+from .configs import (THESIS_CONTROLLERS, THESIS_SPEEDS, TIMING_COUNTS, Config, parse_attempts,
+                      parse_controllers, parse_counts, parse_speeds)
+from .fingerprint import FingerprintError, PlatformStore, fingerprint, identity, refusal
 from .results import ResultsError, ResultsFile, check_seed
-from .runner import Progress, WorkerError, cpu_description, measure_planning, plan_blocks, run_blocks
+from .runner import (PROJECT_ROOT, Platform, Progress, WorkerError, cpu_description,
+                     measure_planning, plan_blocks, run_blocks, worker_platform)
+from .verify import choose, parse_rows, verify
 
 RESULTS = "results.csv"
 TIMING = "timing.csv"
@@ -20,10 +23,19 @@ REPORT = "report.md"
 SUCCESS_CHART = "success.png"
 PLANNING_CHART = "planning.png"
 WORKER_LOG = "workers.log"
+PLATFORMS = "platforms.json"
 
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    # verify checks only the configurations named; everything else rides them all.
+    args.chosen_configs = None
+    if args.speeds is not None or args.controllers is not None:
+        args.chosen_configs = True
+    args.speeds = args.speeds or list(THESIS_SPEEDS)
+    args.controllers = args.controllers or parse_controllers(",".join(THESIS_CONTROLLERS))
+    if args.chosen_configs:
+        args.chosen_configs = {Config(s, c) for s in args.speeds for c in args.controllers}
     out = Path(args.out)
     try:
         if args.command in ("timing", "all") and (args.command == "timing" or
@@ -33,7 +45,12 @@ def main(argv: list[str] | None = None) -> int:
             run(args, out)
         if args.command in ("run", "report", "all"):
             write_report(out)
-    except (ResultsError, WorkerError, ValueError) as error:
+        if args.command == "platform":
+            for key, value in sorted(current_platform(out, record=False)[1].items()):
+                print(f"{key}: {value}")
+        if args.command == "verify":
+            return check_rows(args, out)
+    except (ResultsError, WorkerError, FingerprintError, ValueError) as error:
         print(f"experiment: {error}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
@@ -50,18 +67,20 @@ def _parser() -> argparse.ArgumentParser:
         "game's own test level. Results are appended to OUT/results.csv as each attempt "
         "ends; rerunning the same command resumes.",
     )
-    parser.add_argument("command", choices=("all", "run", "timing", "report"), nargs="?",
+    parser.add_argument("command", choices=("all", "run", "timing", "report", "verify",
+                                            "platform"), nargs="?",
                         default="all", help="all (default): timing if not measured yet, "
-                        "run, report")
+                        "run, report; verify: re-ride saved rows and compare; platform: "
+                        "print this machine's fingerprint")
     parser.add_argument("--out", default="build/experiment",
                         help="directory of results.csv, timing.csv and the report")
     parser.add_argument("--tries", type=_whole(1, 100_000), default=500,
                         help="attempts per configuration (default 500, as the thesis)")
     parser.add_argument("--speeds", type=parse_speeds,
-                        default=list(THESIS_SPEEDS), help="km/h, comma-separated "
+                        default=None, help="km/h, comma-separated "
                         "(default 10,15,20,25)")
     parser.add_argument("--controllers", type=parse_controllers,
-                        default=parse_controllers(",".join(THESIS_CONTROLLERS)),
+                        default=None,
                         help="comma-separated: arcade, optimizer-N, combined-N (default "
                         "arcade and both planners with N = 5, 10, 15)")
     parser.add_argument("--seed", type=_whole(0, 1_000_000_000), default=1000,
@@ -75,6 +94,14 @@ def _parser() -> argparse.ArgumentParser:
                         help="trajectory counts of the timing study")
     parser.add_argument("--steps", type=_whole(10, 100_000), default=150,
                         help="control steps timed per trajectory count (default 150)")
+    parser.add_argument("--allow-mixed", action="store_true",
+                        help="append to results made on another platform (the report "
+                        "notes the mix)")
+    parser.add_argument("--rows", type=parse_rows, default=None,
+                        help="verify: line numbers of results.csv, e.g. 2-11,40")
+    parser.add_argument("--attempts", type=lambda t: set(parse_attempts(t)), default=None,
+                        help="verify: attempt numbers, e.g. 0-19, of the --speeds and "
+                        "--controllers given (default: every row)")
     return parser
 
 
@@ -87,10 +114,27 @@ def _whole(low: int, high: int):
     return parse
 
 
+def current_platform(out: Path, record: bool = True) -> tuple[Platform, dict]:
+    """This machine's platform, as a worker and the checkout describe it; `record` adds it
+    to OUT/platforms.json for the rows about to be written."""
+    worker = worker_platform(out / WORKER_LOG)
+    description = fingerprint(PROJECT_ROOT, worker)
+    name = PlatformStore(out / PLATFORMS).add(description) if record else identity(description)
+    return Platform(name, worker), description
+
+
 def run(args: argparse.Namespace, out: Path) -> None:
     results = ResultsFile(out / RESULTS)
     saved = results.load()
     check_seed(saved, args.seed, results.path)
+    store = PlatformStore(out / PLATFORMS)
+    known = store.load()
+    platform, description = current_platform(out)
+    mix = refusal({a.platform for a in saved}, description, known, results.path)
+    if mix and not args.allow_mixed:
+        raise ResultsError(mix)
+    if results.legacy:
+        results.upgrade(saved)
     configs = [Config(s, c) for s in args.speeds for c in args.controllers]
     done = {a.key for a in saved}
     blocks = plan_blocks(configs, args.tries, done)
@@ -101,7 +145,33 @@ def run(args: argparse.Namespace, out: Path) -> None:
           f"already in {results.path}, {missing} to run with {args.jobs} workers "
           f"({threads or 'all'} planning thread(s) each)", file=sys.stderr, flush=True)
     progress = Progress(total=total, jobs=args.jobs, done_before=total - missing)
-    run_blocks(blocks, results, progress, args.seed, args.jobs, threads, out / WORKER_LOG)
+    run_blocks(blocks, results, progress, args.seed, args.jobs, threads, out / WORKER_LOG,
+               platform)
+
+
+def check_rows(args: argparse.Namespace, out: Path) -> int:
+    """Re-rides the chosen rows; 0 when every one repeats exactly."""
+    saved = ResultsFile(out / RESULTS).load()
+    if not saved:
+        raise ResultsError(f"{out / RESULTS} has no rows to verify")
+    chosen = choose(saved, args.rows, args.attempts, args.chosen_configs)
+    if not chosen:
+        raise ResultsError("no saved row matches the rows asked for")
+    platform, description = current_platform(out, record=False)
+    mix = refusal({a.platform for a in chosen}, description, PlatformStore(out / PLATFORMS)
+                  .load(), out / RESULTS)
+    if mix:
+        details = mix.splitlines()[1:-1]
+        print("\n".join(["experiment: note: the rows checked were made on another platform; "
+                         "a difference may come from that:", *details]), file=sys.stderr)
+    base_seed = saved[0].seed - saved[0].attempt
+    jobs = args.jobs
+    threads = args.threads if args.threads is not None else (1 if jobs > 1 else 0)
+    print(f"experiment: re-riding {len(chosen)} rows with {jobs} workers", file=sys.stderr,
+          flush=True)
+    verdict = verify(chosen, base_seed, jobs, threads, out / WORKER_LOG, platform)
+    print("\n".join(verdict.lines()))
+    return 0 if not verdict.differing else 1
 
 
 def timing(args: argparse.Namespace, out: Path) -> None:
@@ -118,6 +188,7 @@ def timing(args: argparse.Namespace, out: Path) -> None:
 
 def write_report(out: Path) -> None:
     attempts = ResultsFile(out / RESULTS).load()
+    known = PlatformStore(out / PLATFORMS).load()
     sections = ["# Experiment report", "",
                 "Generated by `tools/experiment report` from `results.csv` and `timing.csv`; "
                 "see docs/results.md for the discussion.", ""]
@@ -136,6 +207,8 @@ def write_report(out: Path) -> None:
             report.paired_table(attempts), "",
             "## Cost of an attempt (one planning thread per worker)", "",
             report.cost_table(summaries, attempts), "",
+            "## Platforms and late plans", "",
+            report.platform_notes(attempts, known), "",
         ]
     if (out / TIMING).exists():
         rows = report.read_timing(out / TIMING)

@@ -76,3 +76,17 @@ def _whole_numbers(text: str, low: int, high: int, what: str) -> list[int]:
             raise ValueError(f"{what} within {low}–{high}, not '{item}'")
         numbers.add(int(item))
     return sorted(numbers)
+
+
+def parse_attempts(text: str, low: int = 0) -> list[int]:
+    """Whole numbers and ranges, comma-separated: `0-19,25` (at least `low`)."""
+    numbers = set()
+    for item in text.split(","):
+        first, _, last = item.strip().partition("-")
+        if not first.isdigit() or not (last or first).isdigit():
+            raise ValueError(f"expected numbers or ranges like 0-19, not '{item}'")
+        start, end = int(first), int(last or first)
+        if start < low or end < start or end - start > 1_000_000:
+            raise ValueError(f"'{item}' is not a range from {low} up")
+        numbers.update(range(start, end + 1))
+    return sorted(numbers)

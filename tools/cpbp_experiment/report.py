@@ -163,6 +163,38 @@ def paired_table(attempts: list[Attempt]) -> str:
     return "\n".join(lines)
 
 
+PLATFORM_COLUMNS = ("godot", "c_library", "cpu_model", "math_path", "code", "commit")
+
+
+def platform_notes(attempts: list[Attempt], known: dict[str, dict]) -> str:
+    """Which platforms the rows were made on (a mix is stated: rows of two platforms need
+    not repeat each other's rides) and any row that used a late plan."""
+    counts: dict[str, int] = defaultdict(int)
+    for attempt in attempts:
+        counts[attempt.platform] += 1
+    lines = []
+    if len(counts) > 1:
+        lines += [f"**The rows come from {len(counts)} platforms**, so a ride of one need not "
+                  "repeat exactly on another (docs/experiment.md, \"Reproducibility\").", ""]
+    lines += ["| platform | rows | " + " | ".join(PLATFORM_COLUMNS) + " |",
+              "|---" * (len(PLATFORM_COLUMNS) + 2) + "|"]
+    for name, count in sorted(counts.items(), key=lambda item: -item[1]):
+        description = known.get(name, {})
+        cells = [description.get(c, "not recorded") for c in PLATFORM_COLUMNS]
+        lines.append(f"| {name} | {count} | " + " | ".join(cells) + " |")
+    late = [a for a in attempts if a.late_plans]
+    unknown = sum(1 for a in attempts if a.late_plans is None)
+    lines.append("")
+    if late:
+        lines.append(f"**{len(late)} rows drove a step without its plan** and may not repeat: "
+                     + ", ".join(f"{a.config.label} #{a.attempt}" for a in late[:20]))
+    else:
+        lines.append("No recorded row drove a step without its plan.")
+    if unknown:
+        lines.append(f"{unknown} rows predate the record of late plans.")
+    return "\n".join(lines)
+
+
 def success_chart(summaries: dict[Config, Summary], path: Path) -> None:
     import matplotlib
 

@@ -11,8 +11,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .configs import Config, Controller
+from .fingerprint import UNRECORDED
 
-FIELDS = (
+# The columns of a results file made before the platform was recorded with every row.
+LEGACY_FIELDS = (
     "speed_kmh",
     "controller",
     "trajectories",
@@ -25,6 +27,10 @@ FIELDS = (
     "planning_ms",
     "wall_ms",
 )
+# `planner_seed` is the planner's seed for the attempt, `late_plans` the steps driven
+# without that step's plan (0 for a row that repeats exactly), `platform` the identity of
+# the fingerprint in platforms.json it was made on.
+FIELDS = LEGACY_FIELDS + ("planner_seed", "late_plans", "platform")
 OUTCOMES = ("goal", "fell", "timeout")
 
 
@@ -43,6 +49,10 @@ class Attempt:
     steps: int
     planning_ms: float
     wall_ms: float
+    # Not recorded (None, UNRECORDED) in rows of legacy files.
+    planner_seed: int | None = None
+    late_plans: int | None = None
+    platform: str = UNRECORDED
 
     @property
     def key(self) -> tuple[Config, int]:
@@ -62,7 +72,14 @@ class Attempt:
             str(self.steps),
             f"{self.planning_ms:.3f}",
             f"{self.wall_ms:.1f}",
+            "" if self.planner_seed is None else str(self.planner_seed),
+            "" if self.late_plans is None else str(self.late_plans),
+            self.platform,
         ]
+
+    def outcome_fields(self) -> list[str]:
+        """What a re-ride must reproduce exactly, as the file spells it."""
+        return self.row()[5:9]
 
     @staticmethod
     def from_row(row: dict[str, str]) -> "Attempt":
@@ -81,12 +98,17 @@ class Attempt:
             steps=int(row["steps"]),
             planning_ms=float(row["planning_ms"]),
             wall_ms=float(row["wall_ms"]),
+            planner_seed=int(row["planner_seed"]) if row.get("planner_seed") else None,
+            late_plans=int(row["late_plans"]) if row.get("late_plans") else None,
+            platform=row.get("platform") or UNRECORDED,
         )
 
 
 class ResultsFile:
     def __init__(self, path: Path):
         self.path = path
+        # Read in the legacy columns: rows are added only after `upgrade`.
+        self.legacy = False
 
     def load(self) -> list[Attempt]:
         """Every saved attempt. A last line cut short by a kill is dropped from the file
@@ -102,7 +124,8 @@ class ResultsFile:
         if not text:
             return []
         reader = csv.DictReader(io.StringIO(text))
-        if tuple(reader.fieldnames or ()) != FIELDS:
+        self.legacy = tuple(reader.fieldnames or ()) == LEGACY_FIELDS
+        if tuple(reader.fieldnames or ()) != FIELDS and not self.legacy:
             raise ResultsError(
                 f"{self.path} is not an experiment results file (its columns are "
                 f"{reader.fieldnames}); choose another --out"
@@ -121,8 +144,25 @@ class ResultsFile:
             attempts.append(attempt)
         return attempts
 
+    def upgrade(self, attempts: list[Attempt]) -> None:
+        """Rewrites a legacy file in today's columns (its rows' platform unrecorded), via a
+        temporary file renamed over it, so a kill leaves the old file or the new one."""
+        buffer = io.StringIO()
+        writer = csv.writer(buffer, lineterminator="\n")
+        writer.writerow(FIELDS)
+        writer.writerows(a.row() for a in attempts)
+        temporary = self.path.with_suffix(".csv.tmp")
+        with open(temporary, "w", encoding="utf-8") as f:
+            f.write(buffer.getvalue())
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(temporary, self.path)
+        self.legacy = False
+
     def append(self, attempt: Attempt) -> None:
         """Adds one attempt and syncs it to disk before returning."""
+        if self.legacy:
+            raise ResultsError(f"{self.path} has the legacy columns: upgrade it first")
         self.path.parent.mkdir(parents=True, exist_ok=True)
         new = not self.path.exists() or self.path.stat().st_size == 0
         buffer = io.StringIO()

@@ -185,6 +185,25 @@ def _clock(seconds: float) -> str:
     return f"{seconds // 3600}:{seconds // 60 % 60:02d}:{seconds % 60:02d}"
 
 
+def worker_platform(log: Path) -> dict:
+    """What a worker reports of the engine, the native module and the machine."""
+    process = start_worker(["--platform"], log)
+    output, _ = process.communicate(timeout=120)
+    for text in output.splitlines():
+        if text.startswith("PLATFORM "):
+            return json.loads(text[9:])
+    raise WorkerError(f"a worker did not describe its platform (exit code "
+                      f"{process.returncode}); see {log}:\n{_tail(log)}")
+
+
+@dataclass(frozen=True)
+class Platform:
+    """The run's platform: its identity for the rows, and what every worker must report."""
+
+    identity: str
+    worker: dict
+
+
 def run_blocks(
     blocks: list[Block],
     results: ResultsFile,
@@ -193,10 +212,12 @@ def run_blocks(
     jobs: int,
     threads: int,
     log: Path,
+    platform: Platform,
 ) -> None:
     """Keeps `jobs` workers busy until every block is done; saves each attempt as its
-    line arrives. Raises WorkerError when a worker fails (after saving what others
-    finished); the attempts it did not finish run again on the next run."""
+    line arrives. Raises WorkerError when a worker fails or reports another platform
+    (after saving what others finished); the attempts it did not finish run again on
+    the next run."""
     pending = list(blocks)
     for block in blocks:
         for _ in block.attempts():
@@ -244,9 +265,13 @@ def run_blocks(
                         f"{reported[worker_id]} of them; see {log}:\n{_tail(log)}"
                     )
                 continue
-            if text.startswith("TRY "):
+            if text.startswith("PLATFORM ") and json.loads(text[9:]) != platform.worker:
+                process.kill()
+                failure = failure or WorkerError(
+                    f"a worker reported another platform than the run's: {text[9:].strip()}")
+            elif text.startswith("TRY "):
                 reported[worker_id] += 1
-                attempt = _attempt_of(text[4:], block)
+                attempt = _attempt_of(text[4:], block, platform.identity)
                 results.append(attempt)
                 progress.record(attempt)
                 progress.report(attempt, force=not pending and len(running) == 1)
@@ -268,7 +293,7 @@ def _silent_worker(running, heard, log: Path) -> WorkerError | None:
     return None
 
 
-def _attempt_of(payload: str, block: Block) -> Attempt:
+def _attempt_of(payload: str, block: Block, platform: str) -> Attempt:
     data = json.loads(payload)
     controller = block.config.controller
     ok = (
@@ -289,6 +314,9 @@ def _attempt_of(payload: str, block: Block) -> Attempt:
         steps=int(data["steps"]),
         planning_ms=float(data["planning_ms"]),
         wall_ms=float(data["wall_ms"]),
+        planner_seed=int(data["planner_seed"]),
+        late_plans=int(data["late_plans"]),
+        platform=platform,
     )
 
 

@@ -7,5 +7,5 @@ pub mod control;
 pub mod simulation;
 pub mod terrain;
 
-pub use build_info::{build_info, BuildInfo};
+pub use build_info::{build_info, platform, BuildInfo, Platform};
 pub use cpbp_ode as ode;

@@ -5,7 +5,7 @@ mod common;
 
 use std::time::Duration;
 
-use cpbp_core::control::{AnytimeOptimizer, OptimizerConfig, OptimizerMode};
+use cpbp_core::control::{AnytimeOptimizer, OptimizerConfig, OptimizerMode, PlanWait};
 use cpbp_core::simulation::Simulation;
 
 fn combined(particles: usize) -> OptimizerConfig {
@@ -16,7 +16,7 @@ fn combined(particles: usize) -> OptimizerConfig {
     }
 }
 
-/// Rides `seconds` straight at `kmh`, handing plans over with at most `max_wait`.
+/// Rides `seconds` straight at `kmh`, handing plans over as `anytime.wait` says.
 fn ride(
     sim: &mut Simulation,
     anytime: &mut AnytimeOptimizer,
@@ -37,7 +37,7 @@ fn ride(
 fn waiting_for_each_plan_rides_like_planning_in_line() {
     let mut sim = common::flat_ride();
     let config = combined(15);
-    let mut anytime = AnytimeOptimizer::new(&sim, Duration::from_secs(60));
+    let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::EveryPlan);
     ride(&mut sim, &mut anytime, &config, 20.0, 15.0);
     assert_eq!(sim.crashed(), None);
     // Only the very first step has no plan (the arcade controller drives it).
@@ -67,7 +67,7 @@ fn a_planner_that_cannot_keep_up_never_stalls_the_game_or_drops_the_bike() {
     // find no plan for their step and replay the last plan open loop or fall back.
     let mut sim = common::flat_ride();
     let config = combined(8);
-    let mut anytime = AnytimeOptimizer::new(&sim, Duration::ZERO);
+    let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::AtMost(Duration::ZERO));
     ride(&mut sim, &mut anytime, &config, 10.0, 20.0);
     assert_eq!(sim.crashed(), None);
     assert!(anytime.stats.late > 0, "{:?}", anytime.stats);
@@ -81,7 +81,7 @@ fn a_planner_that_cannot_keep_up_never_stalls_the_game_or_drops_the_bike() {
 fn plans_made_before_a_reset_are_never_applied_after_it() {
     let mut sim = common::flat_ride();
     let config = combined(5);
-    let mut anytime = AnytimeOptimizer::new(&sim, Duration::from_secs(60));
+    let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::EveryPlan);
     ride(&mut sim, &mut anytime, &config, 2.0, 15.0);
     assert!(anytime.plan().is_some());
     anytime.reset();

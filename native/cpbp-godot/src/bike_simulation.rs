@@ -7,7 +7,7 @@ use cpbp_core::bike::{
     from_quat, manual_controls, Controls, CrashCause, DriveInput, Part, Shape, CONTROL_DIM,
 };
 use cpbp_core::control::{
-    AnytimeOptimizer, ArcadeController, OptimizerConfig, OptimizerMode, TurnIntent,
+    AnytimeOptimizer, ArcadeController, OptimizerConfig, OptimizerMode, PlanWait, TurnIntent,
 };
 use cpbp_core::simulation::{Simulation, SimulationConfig, StepEvents};
 use cpbp_core::terrain::Terrain;
@@ -61,6 +61,11 @@ pub struct BikeSimulation {
     /// plan is taken over at a later step while the last best trajectory plays on.
     #[export(range = (0.0, 1000.0, 1.0, suffix = "ms"))]
     plan_wait_ms: f64,
+    /// Wait at every control step until its plan comes, however long that takes (headless
+    /// tests and experiments): no step uses a late plan, so a ride repeats exactly for its
+    /// seed on a loaded machine too. Off in the game, where a slow plan must not stall.
+    #[export]
+    wait_for_every_plan: bool,
     /// Threads that simulate the optimizer's trajectories (0: one per core). The
     /// experiment runs one bike per core with one thread each.
     #[export(range = (0.0, 64.0))]
@@ -76,6 +81,7 @@ pub struct BikeSimulation {
     wait_for_throttle: bool,
     started: bool,
     steps_since_reset: u64,
+    late_plans_since_reset: u64,
     sim: Option<Simulation>,
     accumulator: f64,
     previous_poses: Vec<(DVec3, DQuat)>,
@@ -103,11 +109,13 @@ impl INode3D for BikeSimulation {
             lean_tolerance_deg: 5.0,
             rollout_substeps: 4,
             plan_wait_ms: 12.0,
+            wait_for_every_plan: false,
             planning_threads: 0,
             planner_seed: 2015,
             wait_for_throttle: false,
             started: false,
             steps_since_reset: 0,
+            late_plans_since_reset: 0,
             sim: None,
             accumulator: 0.0,
             previous_poses: Vec::new(),
@@ -245,6 +253,7 @@ impl BikeSimulation {
         self.forget_plans();
         self.started = false;
         self.steps_since_reset = 0;
+        self.late_plans_since_reset = 0;
         self.accumulator = 0.0;
         self.remember_poses();
     }
@@ -268,6 +277,13 @@ impl BikeSimulation {
     #[func]
     fn get_step_count(&self) -> i64 {
         self.steps_since_reset as i64
+    }
+
+    /// Control steps since the bike was last placed at which the optimizer drove without a
+    /// plan for that step (a late plan, or none): 0 for a ride that repeats exactly.
+    #[func]
+    fn get_late_plan_count(&self) -> i64 {
+        self.late_plans_since_reset as i64
     }
 
     /// Stands a fallen bike up where it lies.
@@ -549,14 +565,22 @@ impl BikeSimulation {
             (None, 2 | 3) => {
                 let optimizer = self
                     .optimizer
-                    .get_or_insert_with(|| AnytimeOptimizer::new(sim, Duration::ZERO));
-                optimizer.max_wait =
-                    Duration::from_secs_f64(self.plan_wait_ms.clamp(0.0, 1000.0) / 1000.0);
+                    .get_or_insert_with(|| AnytimeOptimizer::new(sim, PlanWait::EveryPlan));
+                optimizer.wait = if self.wait_for_every_plan {
+                    PlanWait::EveryPlan
+                } else {
+                    PlanWait::AtMost(Duration::from_secs_f64(
+                        self.plan_wait_ms.clamp(0.0, 1000.0) / 1000.0,
+                    ))
+                };
                 // Plans made while another controller drove are for states long gone.
                 if !self.planning {
                     optimizer.reset();
                 }
-                optimizer.controls(sim, desired_lean, &self.drive, &config)
+                let late_before = optimizer.stats.late;
+                let controls = optimizer.controls(sim, desired_lean, &self.drive, &config);
+                self.late_plans_since_reset += optimizer.stats.late - late_before;
+                controls
             }
             (None, _) => {
                 let dt = sim.config().control_dt;

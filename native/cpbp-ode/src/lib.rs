@@ -12,7 +12,7 @@ mod state;
 mod world;
 
 pub use joints::{JointId, MotorState};
-pub use runtime::{configuration, ensure_thread_data, Configuration};
+pub use runtime::{c_library_version, configuration, ensure_thread_data, Configuration};
 pub use shared_data::{HeightFieldData, TriMeshData};
 pub use state::{BodyState, StateMismatch, WorldState};
 pub use world::{BodyId, GeomId, Mass, SurfaceParams, World};

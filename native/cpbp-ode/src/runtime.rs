@@ -69,6 +69,24 @@ pub fn configuration() -> Configuration {
     }
 }
 
+/// Version of the C library this process runs with (its `libm` computes `exp`, `sin` and
+/// friends, so it is part of what makes a ride repeat), e.g. "glibc 2.43".
+pub fn c_library_version() -> String {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    {
+        extern "C" {
+            fn gnu_get_libc_version() -> *const std::ffi::c_char;
+        }
+        // SAFETY: glibc returns a pointer to a static NUL-terminated string.
+        let version = unsafe { CStr::from_ptr(gnu_get_libc_version()) };
+        format!("glibc {}", version.to_string_lossy())
+    }
+    #[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+    {
+        String::from("unknown C library")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -78,6 +96,12 @@ mod tests {
         let config = configuration();
         assert!(config.double_precision(), "{}", config.raw);
         assert!(config.thread_local_collision(), "{}", config.raw);
+    }
+
+    #[test]
+    fn the_c_library_names_its_version() {
+        let version = c_library_version();
+        assert!(version.starts_with("glibc 2."), "{version}");
     }
 
     #[test]

@@ -37,7 +37,7 @@ pub struct WorldState {
     pub bodies: Vec<BodyState>,
     /// Motor settings of every joint, in joint order (zeros for unmotorised joints).
     pub motors: Vec<MotorState>,
-    /// ODE's random seed (QuickStep's constraint reordering), thread-local in our build.
+    /// The world's QuickStep random seed (it reorders constraint rows each step).
     pub random_seed: u64,
 }
 

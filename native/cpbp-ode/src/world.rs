@@ -106,6 +106,10 @@ pub struct World {
     /// Shared collision data the geoms read; released only after `Drop` destroyed the space.
     shared_meshes: Vec<Arc<TriMeshData>>,
     shared_heights: Vec<Arc<HeightFieldData>>,
+    /// QuickStep's random sequence (it reorders constraint rows) for this world. ODE keeps
+    /// one seed per thread; each step swaps this world's seed in and out, so a world's
+    /// steps depend on its own history only, not on what else its thread has stepped.
+    random_seed: u64,
 }
 
 /// Collision categories: bodies collide with static terrain only, never with each other
@@ -150,6 +154,7 @@ impl World {
                 tyres: Vec::new(),
                 shared_meshes: Vec::new(),
                 shared_heights: Vec::new(),
+                random_seed: 0,
             }
         }
     }
@@ -376,12 +381,10 @@ impl World {
         let motors = (0..self.joints.len())
             .map(|j| self.motor_state(crate::JointId(j)))
             .collect();
-        // SAFETY: reads the calling thread's seed (thread-local in our ODE build).
-        let random_seed = unsafe { ffi::dRandGetSeed() } as u64;
         WorldState {
             bodies,
             motors,
-            random_seed,
+            random_seed: self.random_seed,
         }
     }
 
@@ -410,16 +413,13 @@ impl World {
                 ffi::dBodySetAngularVel(body, w[0], w[1], w[2]);
             }
         }
-        // SAFETY: sets the calling thread's seed, which the next step on this thread uses.
-        unsafe { ffi::dRandSetSeed(state.random_seed as _) };
+        self.random_seed = state.random_seed;
         Ok(())
     }
 
-    /// Restarts the calling thread's QuickStep random sequence, as at thread start, so a
-    /// ride started afresh does not depend on the rides stepped on this thread before.
+    /// Restarts this world's QuickStep random sequence, as a new world starts it.
     pub fn reset_random_seed(&mut self) {
-        // SAFETY: sets the calling thread's seed (thread-local in our ODE build).
-        unsafe { ffi::dRandSetSeed(0) };
+        self.random_seed = 0;
     }
 
     /// Advances the world by `dt` seconds: collision, contact joints, QuickStep.
@@ -442,7 +442,11 @@ impl World {
                 (&mut context as *mut CollideContext).cast::<c_void>(),
                 Some(near_callback),
             );
+            // The seed is thread-local in our ODE build: nothing else runs on this thread
+            // between setting it and reading it back.
+            ffi::dRandSetSeed(self.random_seed as _);
             ffi::dWorldQuickStep(self.world, dt);
+            self.random_seed = ffi::dRandGetSeed() as u64;
             ffi::dJointGroupEmpty(self.contacts);
         }
     }

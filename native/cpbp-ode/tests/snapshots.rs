@@ -1,5 +1,6 @@
 //! Snapshot/restore must let a rollout branch from any state and reproduce what the
-//! original world does, bit for bit.
+//! original world does, bit for bit, and a world must step the same whatever else its
+//! thread steps (each world carries its own QuickStep random sequence).
 
 use cpbp_ode::{Mass, World, WorldState};
 
@@ -95,4 +96,19 @@ fn a_snapshot_of_another_shape_is_refused() {
     let error = small.restore(&tumbling_pile().snapshot()).unwrap_err();
     assert_eq!(error.expected_bodies, 1);
     assert_eq!(error.found_bodies, 8);
+}
+
+#[test]
+fn worlds_stepped_in_turn_on_one_thread_each_repeat_their_lone_ride() {
+    let alone = run(&mut tumbling_pile(), 200);
+    let (mut first, mut second) = (tumbling_pile(), tumbling_pile());
+    run(&mut second, 13); // a head start, so the two sequences differ
+    let interleaved: Vec<WorldState> = (0..200)
+        .map(|_| {
+            second.step(DT);
+            first.step(DT);
+            first.snapshot()
+        })
+        .collect();
+    assert_eq!(interleaved, alone);
 }

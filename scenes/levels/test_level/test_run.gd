@@ -8,7 +8,8 @@ extends RefCounted
 
 ## Rides one attempt and returns `outcome` (Level.GOAL, FELL or TIMEOUT), `time` (s),
 ## `distance` (m towards the goal), `steps` (control steps simulated) and `planning_ms`
-## (mean planning time per step; 0 for the arcade controller). The bike's
+## (mean planning time per step; 0 for the arcade controller) and `late_plans` (steps the
+## optimizer drove without that step's plan: 0 when the ride repeats exactly). The bike's
 ## `_physics_process` must be off so only this drives it.
 static func ride(
 	level: TestLevel, bike: BikeSimulation, seed_value: int, speed_kmh: float
@@ -37,4 +38,5 @@ static func ride(
 		distance = level.distance(bike),
 		steps = bike.get_step_count(),
 		planning_ms = planning_ms / maxi(plans, 1),
+		late_plans = bike.get_late_plan_count(),
 	}

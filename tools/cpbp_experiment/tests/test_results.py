@@ -3,7 +3,9 @@ import unittest
 from pathlib import Path
 
 from cpbp_experiment.configs import Config, Controller
-from cpbp_experiment.results import Attempt, ResultsError, ResultsFile, check_seed
+from cpbp_experiment.fingerprint import UNRECORDED
+from cpbp_experiment.results import (FIELDS, LEGACY_FIELDS, Attempt, ResultsError, ResultsFile,
+                                     check_seed)
 
 
 def attempt(index: int, controller: str = "combined-5", speed: int = 15, seed: int = 1000,
@@ -50,6 +52,20 @@ class ResultsFileTest(unittest.TestCase):
             f.write("15,combined,5,1,1001,exploded,1,2,3,4,5\n")
         with self.assertRaisesRegex(ResultsError, ":3: unreadable row"):
             self.results.load()
+
+    def test_a_legacy_file_reads_with_its_platform_unrecorded_and_upgrades(self):
+        legacy = attempt(0)
+        self.path.write_text(",".join(LEGACY_FIELDS) + "\n" + ",".join(legacy.row()[:11]) + "\n")
+        loaded = self.results.load()
+        self.assertTrue(self.results.legacy)
+        self.assertEqual(loaded, [legacy])
+        self.assertEqual((loaded[0].platform, loaded[0].late_plans), (UNRECORDED, None))
+        with self.assertRaisesRegex(ResultsError, "legacy columns"):
+            self.results.append(attempt(1))
+        self.results.upgrade(loaded)
+        self.results.append(attempt(1))
+        self.assertEqual(self.results.load(), [legacy, attempt(1)])
+        self.assertTrue(self.path.read_text().startswith(",".join(FIELDS) + "\n"))
 
     def test_another_csv_is_refused(self):
         self.path.write_text("name,score\nada,3\n")

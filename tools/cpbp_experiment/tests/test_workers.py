@@ -8,9 +8,11 @@ from unittest import mock
 from cpbp_experiment import runner
 from cpbp_experiment.configs import Config, Controller
 from cpbp_experiment.results import ResultsFile
-from cpbp_experiment.runner import Block, Progress, WorkerError, run_blocks
+from cpbp_experiment.runner import Block, Platform, Progress, WorkerError, run_blocks
 
 CONFIG = Config(15, Controller("combined", 5))
+WORKER_PLATFORM = {"c_library": "glibc 2.43", "math_path": "fma"}
+PLATFORM = Platform("abc123", WORKER_PLATFORM)
 
 
 def fake_worker(script: str):
@@ -22,8 +24,13 @@ def try_line(attempt: int) -> str:
     return "TRY " + json.dumps({
         "controller": "combined", "trajectories": 5, "speed_kmh": 15.0, "attempt": attempt,
         "seed": 1000 + attempt, "outcome": "goal", "time": 9.1, "distance": 36.0,
-        "steps": 273, "planning_ms": 13.0, "wall_ms": 10.0,
+        "steps": 273, "planning_ms": 13.0, "wall_ms": 10.0, "planner_seed": 77,
+        "late_plans": 0,
     })
+
+
+def platform_line(description: dict) -> str:
+    return "PLATFORM " + json.dumps(description)
 
 
 class RunBlocksTest(unittest.TestCase):
@@ -39,12 +46,23 @@ class RunBlocksTest(unittest.TestCase):
         progress = Progress(total=10, jobs=2, done_before=0)
         with mock.patch.object(runner, "godot_command", fake_worker(script)), \
                 mock.patch("sys.stderr"):
-            run_blocks(blocks, self.results, progress, 1000, 2, 1, self.out / "workers.log")
+            run_blocks(blocks, self.results, progress, 1000, 2, 1, self.out / "workers.log",
+                       PLATFORM)
 
-    def test_every_reported_attempt_is_saved(self):
-        script = (f"print({try_line(0)!r}); print('noise'); print({try_line(1)!r})")
+    def test_every_reported_attempt_is_saved_with_its_seed_and_platform(self):
+        script = (f"print({platform_line(WORKER_PLATFORM)!r}); print({try_line(0)!r}); "
+                  f"print('noise'); print({try_line(1)!r})")
         self.run_with(script, [Block(CONFIG, 0, 2)])
-        self.assertEqual([a.attempt for a in self.results.load()], [0, 1])
+        saved = self.results.load()
+        self.assertEqual([a.attempt for a in saved], [0, 1])
+        self.assertEqual({(a.platform, a.planner_seed, a.late_plans) for a in saved},
+                         {("abc123", 77, 0)})
+
+    def test_a_worker_on_another_platform_stops_the_run(self):
+        other = dict(WORKER_PLATFORM, math_path="baseline")
+        with self.assertRaisesRegex(WorkerError, "another platform"):
+            self.run_with(f"print({platform_line(other)!r}); print({try_line(0)!r})",
+                          [Block(CONFIG, 0, 1)])
 
     def test_a_failing_worker_stops_the_run_and_its_words_are_shown(self):
         script = (f"import sys; print({try_line(0)!r}); "

@@ -5,7 +5,9 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use cpbp_core::bike::{Controls, DriveInput, Placement};
-use cpbp_core::control::{AnytimeOptimizer, BikeOptimizer, OptimizerConfig, OptimizerMode};
+use cpbp_core::control::{
+    AnytimeOptimizer, BikeOptimizer, OptimizerConfig, OptimizerMode, PlanWait,
+};
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
@@ -143,7 +145,7 @@ fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
         brake: 0.0,
         max_speed: 15.0 / 3.6,
     };
-    let mut anytime = AnytimeOptimizer::new(&sim, Duration::from_millis(10));
+    let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::AtMost(Duration::from_millis(10)));
     let period = Duration::from_secs_f64(1.0 / 30.0);
     let mut boundary = Instant::now();
     let (mut planning, mut plans, mut last_plan_step) = (0.0, 0, None);

@@ -69,6 +69,18 @@ impl HandoverStats {
     }
 }
 
+/// How long the game thread waits at a control-step boundary for the plan of the step
+/// about to run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlanWait {
+    /// At most this long; a later plan is taken over at a later step while the last best
+    /// trajectory plays on (the game: a slow plan must not stall the frame).
+    AtMost(Duration),
+    /// Until the plan comes: every step uses a fresh plan, so a ride repeats exactly
+    /// whatever the machine's speed or load (headless tests and experiments).
+    EveryPlan,
+}
+
 /// The planning thread and the game thread's side of the hand-over.
 pub struct AnytimeOptimizer {
     requests: Option<Sender<Request>>,
@@ -78,16 +90,19 @@ pub struct AnytimeOptimizer {
     plan: Option<Plan>,
     arcade: ArcadeController,
     step: u64,
+    /// Control steps since the last reset: the first has no plan by design (nothing was
+    /// planned for it), which is not a late plan.
+    steps_since_reset: u64,
     epoch: u64,
     reset_pending: bool,
-    /// Longest the game thread waits at a boundary for a plan before falling back.
-    pub max_wait: Duration,
+    /// How long the game thread waits at a boundary for a plan before falling back.
+    pub wait: PlanWait,
     pub stats: HandoverStats,
 }
 
 impl AnytimeOptimizer {
     /// Starts a planning thread with its own replica of `sim`.
-    pub fn new(sim: &Simulation, max_wait: Duration) -> Self {
+    pub fn new(sim: &Simulation, wait: PlanWait) -> Self {
         let (request_tx, request_rx) = channel::<Request>();
         let (reply_tx, reply_rx) = channel::<Plan>();
         let replica = sim.replica();
@@ -103,9 +118,10 @@ impl AnytimeOptimizer {
             plan: None,
             arcade: ArcadeController::default(),
             step: 0,
+            steps_since_reset: 0,
             epoch: 0,
             reset_pending: true,
-            max_wait,
+            wait,
             stats: HandoverStats::default(),
         }
     }
@@ -116,6 +132,7 @@ impl AnytimeOptimizer {
         self.arcade.reset();
         self.reset_pending = true;
         self.epoch += 1;
+        self.steps_since_reset = 0;
     }
 
     /// The most recent plan taken over (for statistics and drawing).
@@ -159,16 +176,25 @@ impl AnytimeOptimizer {
             }
         }
         self.step += 1;
+        self.steps_since_reset += 1;
         controls
     }
 
-    /// At a boundary: wait (at most `max_wait`) for the plan of the step about to run.
+    /// At a boundary: wait (as `wait` says) for the plan of the step about to run.
     fn take_plan(&mut self) {
         let started = Instant::now();
         let mut fresh = false;
         while self.outstanding {
-            let left = self.max_wait.saturating_sub(started.elapsed());
-            match self.replies.recv_timeout(left) {
+            let reply = match self.wait {
+                PlanWait::AtMost(limit) => self
+                    .replies
+                    .recv_timeout(limit.saturating_sub(started.elapsed())),
+                PlanWait::EveryPlan => self
+                    .replies
+                    .recv()
+                    .map_err(|_| RecvTimeoutError::Disconnected),
+            };
+            match reply {
                 Ok(plan) => {
                     self.outstanding = false;
                     if plan.epoch == self.epoch && plan.step <= self.step {
@@ -188,7 +214,7 @@ impl AnytimeOptimizer {
         stats.max_wait_ms = stats.max_wait_ms.max(waited);
         stats.total_wait_ms += waited;
         stats.boundaries += 1;
-        stats.late += u64::from(!fresh && self.step > 0);
+        stats.late += u64::from(!fresh && self.steps_since_reset > 0);
     }
 }
 

@@ -7,7 +7,7 @@ pub mod cpbp;
 mod lean;
 mod optimizer;
 
-pub use anytime::{AnytimeOptimizer, HandoverStats, Plan};
+pub use anytime::{AnytimeOptimizer, HandoverStats, Plan, PlanWait};
 pub use arcade::{desired_lean_from_stick, eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
 pub use bike_rollout::{bike_priors, BikeRollout, LeanGoal};
 pub use lean::{
