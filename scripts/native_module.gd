@@ -26,6 +26,21 @@ static func ode_configuration() -> String:
 	return str(ClassDB.class_call_static(INFO_CLASS, &"ode_configuration"))
 
 
+## The controllers players pick, by name, in menu order (empty when not loaded): the one
+## list, `ControllerKind::ALL` in the native core.
+static func controller_names() -> PackedStringArray:
+	if not is_loaded():
+		return PackedStringArray()
+	return ClassDB.class_call_static(&"BikeSimulation", &"controller_names")
+
+
+## What menus show for controller `name`.
+static func controller_label(name: String) -> String:
+	if not is_loaded():
+		return name
+	return str(ClassDB.class_call_static(&"BikeSimulation", &"controller_label", name))
+
+
 ## True when ODE is double precision with thread-local collision data.
 static func ode_is_suitable() -> bool:
 	return is_loaded() and bool(ClassDB.class_call_static(INFO_CLASS, &"ode_is_suitable"))

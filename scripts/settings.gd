@@ -16,7 +16,7 @@ const AUTO_SPEEDS: Array[int] = [10, 15, 20, 25]
 const DEFAULTS := {
 	&"level": "test_level",
 	&"trajectories": 15,
-	&"controller": 3,
+	&"controller": "combined",
 	&"show_trajectories": true,
 	&"physical_model": false,
 	&"motor_force": 0.6,
@@ -25,6 +25,8 @@ const DEFAULTS := {
 	&"auto_accelerate": false,
 }
 const SECTION := "game"
+## Settings files saved before controllers were named hold BikeSimulation's old integers.
+const LEGACY_CONTROLLERS: Array[String] = ["arcade", "manual", "optimizer", "combined"]
 
 var settings_path := "user://settings.cfg"
 var records_path := "user://records.cfg"
@@ -43,6 +45,8 @@ func reload() -> void:
 	var config := ConfigStore.load_or_empty(settings_path)
 	for key: StringName in DEFAULTS:
 		var value: Variant = config.get_value(SECTION, key, DEFAULTS[key])
+		if key == &"controller":
+			value = _controller_name(value)
 		if typeof(value) == typeof(DEFAULTS[key]):
 			_values[key] = value
 		elif typeof(DEFAULTS[key]) == TYPE_FLOAT and typeof(value) == TYPE_INT:
@@ -50,6 +54,17 @@ func reload() -> void:
 		else:
 			push_warning("settings: ignoring %s = %s (wrong type)" % [key, value])
 	_records = ConfigStore.load_or_empty(records_path)
+
+
+## A saved controller as a name players can pick: old integers become names, anything
+## else unknown the default.
+static func _controller_name(saved: Variant) -> String:
+	if typeof(saved) == TYPE_INT and saved >= 0 and saved < LEGACY_CONTROLLERS.size():
+		saved = LEGACY_CONTROLLERS[saved]
+	if typeof(saved) == TYPE_STRING and NativeModule.controller_names().has(saved):
+		return saved
+	push_warning("settings: controller %s is not one players pick; using the default" % saved)
+	return DEFAULTS[&"controller"]
 
 
 ## The value of setting `key`.
@@ -67,6 +82,9 @@ func set_value(key: StringName, value: Variant) -> void:
 		push_error(
 			"settings: %s must be %s, not %s" % [key, type_string(typeof(DEFAULTS[key])), value]
 		)
+		return
+	if key == &"controller" and not NativeModule.controller_names().has(value):
+		push_error("settings: no controller is called '%s'" % value)
 		return
 	if _values[key] == value:
 		return

@@ -30,7 +30,7 @@ step "rustfmt"              tools/cargo fmt --all --check
 step "clippy"               tools/cargo clippy --workspace --all-targets --quiet -- -D warnings
 step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot
 # The controllers' ride tests simulate minutes of planning: fast only in a release build.
-step "controller rides (release)" tools/cargo test --release -p cpbp-core --test optimizer --test anytime --test reproducible
+step "controller rides (release)" tools/cargo test --release -p cpbp-core --test optimizer --test anytime --test reproducible --test ride
 # The experiment's statistics, results file and scheduling (no Godot needed).
 step "experiment unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest discover -s tools/cpbp_experiment/tests -t tools
 step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdlint"

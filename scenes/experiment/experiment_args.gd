@@ -28,10 +28,8 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 			"speed":
 				args.speed = _number(args, "speed", value, 1.0, 90.0)
 			"controller":
-				if not ExperimentWorker.CONTROLLERS.has(value):
-					args._fail(
-						"--controller must be arcade, optimizer or combined, not '%s'" % value
-					)
+				if not BikeSimulation.controller_names().has(value):
+					args._fail("--controller must be one of %s, not '%s'" % [_choices(), value])
 				args.controller = value
 			"trajectories":
 				args.trajectories.clear()
@@ -54,8 +52,8 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 			"platform":
 				args.platform_only = true
 			"warm-up":
-				if not ExperimentWorker.CONTROLLERS.has(value):
-					args._fail("--warm-up must be arcade, optimizer or combined, not '%s'" % value)
+				if not BikeSimulation.controller_names().has(value):
+					args._fail("--warm-up must be one of %s, not '%s'" % [_choices(), value])
 				args.warm_up = value
 			_:
 				args._fail("unknown argument '%s'" % argument)
@@ -73,6 +71,10 @@ static func _number(
 		args._fail("--%s must be within %s–%s, not %s" % [name, low, high, text])
 		return low
 	return value
+
+
+static func _choices() -> String:
+	return ", ".join(BikeSimulation.controller_names())
 
 
 func _fail(message: String) -> void:

@@ -18,7 +18,6 @@ extends Node
 
 const LEVEL := preload("res://scenes/levels/test_level/test_level.tscn")
 const BIKE := preload("res://scenes/bike/bike.tscn")
-const CONTROLLERS := {"arcade": 0, "optimizer": 2, "combined": 3}
 ## Exit codes the driver tells apart: bad arguments, and a level that would not load.
 const EXIT_USAGE := 2
 const EXIT_SETUP := 3
@@ -59,7 +58,7 @@ func _build(args: ExperimentArgs) -> bool:
 	_bike = BIKE.instantiate()
 	_bike.terrain_root = NodePath("../%s" % _level.name)
 	_bike.transform = _level.spawn_points()[0].spawn_transform()
-	_bike.controller = CONTROLLERS[args.controller]
+	_bike.controller = args.controller
 	_bike.planning_threads = args.threads
 	# The game's own default, not this machine's saved settings.
 	_bike.motor_force = Settings.DEFAULTS[&"motor_force"]
@@ -105,7 +104,7 @@ static func planner_seed_of(bump_seed: int) -> int:
 ## Rides one attempt (bump seed BASE − 1) with the warm-up controller, reporting nothing.
 func _warm_up(args: ExperimentArgs) -> void:
 	var controller := _bike.controller
-	_bike.controller = CONTROLLERS[args.warm_up]
+	_bike.controller = args.warm_up
 	_bike.planner_seed = planner_seed_of(args.base_seed - 1)
 	TestRun.ride(_level, _bike, args.base_seed - 1, args.speed)
 	_bike.controller = controller

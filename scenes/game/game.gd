@@ -5,9 +5,6 @@ extends Node3D
 ## lift, spawn points, controller, trajectories, pause). The level comes from the
 ## settings unless `level_path` names one.
 
-## BikeSimulation.controller values in the order Start cycles them.
-const CONTROLLER_CYCLE: Array[int] = [2, 3, 0]
-const CONTROLLER_NAMES := {0: "arcade", 1: "manual", 2: "optimizer", 3: "combined"}
 const BIKE := preload("res://scenes/bike/bike.tscn")
 const START_MENU := "res://scenes/ui/start_menu.tscn"
 ## Seconds a result stays on screen before an automatic level starts the next attempt.
@@ -95,8 +92,9 @@ func _unhandled_input(event: InputEvent) -> void:
 	elif event.is_action_pressed(&"previous_spawn"):
 		cycle_spawn(-1)
 	elif event.is_action_pressed(&"cycle_controller"):
-		var current := CONTROLLER_CYCLE.find(int(Settings.get_value(&"controller")))
-		Settings.set_value(&"controller", CONTROLLER_CYCLE[(current + 1) % CONTROLLER_CYCLE.size()])
+		var cycle := BikeSimulation.controller_names()
+		var current := cycle.find(Settings.get_value(&"controller"))
+		Settings.set_value(&"controller", cycle[(current + 1) % cycle.size()])
 		_hud.announce("Controller: %s" % controller_name())
 	elif event.is_action_pressed(&"toggle_trajectories"):
 		Settings.set_value(&"show_trajectories", not Settings.get_value(&"show_trajectories"))
@@ -139,7 +137,7 @@ func spawn_index() -> int:
 
 ## Name of the controller in use.
 func controller_name() -> String:
-	return CONTROLLER_NAMES.get(bike.controller, "?")
+	return bike.controller
 
 
 ## Leaves for the start menu.

@@ -46,7 +46,7 @@ func _process(delta: float) -> void:
 		% [rad_to_deg(bike.get_lean()), rad_to_deg(bike.get_desired_lean())]
 	)
 	var controller := _game.controller_name()
-	if bike.controller in [2, 3]:
+	if BikeSimulation.controller_plans(bike.controller):
 		controller += (
 			"  ·  %d trajectories  ·  planning %.1f ms"
 			% [bike.trajectories, bike.get_planning_ms()]

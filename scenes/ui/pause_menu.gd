@@ -6,10 +6,6 @@ extends CanvasLayer
 ## the settings at once. Works with a gamepad alone (d-pad/stick to move, A to choose,
 ## B or Back to resume).
 
-const CONTROLLERS: Array[int] = [2, 3, 0]
-const CONTROLLER_LABELS: Array[String] = [
-	"Optimizer (C-PBP)", "Combined (C-PBP + arcade)", "Arcade (PD)"
-]
 const CONTROLS := """Gamepad / keyboard
 RT / W, ↑        throttle
 LT / S, ↓        brake
@@ -42,8 +38,8 @@ var _syncing := false
 func _ready() -> void:
 	visible = false
 	_controls.text = CONTROLS
-	for label in CONTROLLER_LABELS:
-		_controller.add_item(label)
+	for name in NativeModule.controller_names():
+		_controller.add_item(NativeModule.controller_label(name))
 	for count in Settings.TRAJECTORY_CHOICES:
 		_trajectory_count.add_item("%d trajectories" % count)
 	for speed in Settings.AUTO_SPEEDS:
@@ -55,7 +51,9 @@ func _ready() -> void:
 	_physical.toggled.connect(_save.bind(&"physical_model"))
 	_motor_force.value_changed.connect(_save.bind(&"motor_force"))
 	_max_speed.value_changed.connect(_save.bind(&"max_speed_kmh"))
-	_controller.item_selected.connect(func(i: int) -> void: _save(CONTROLLERS[i], &"controller"))
+	_controller.item_selected.connect(
+		func(i: int) -> void: _save(NativeModule.controller_names()[i], &"controller")
+	)
 	_trajectory_count.item_selected.connect(
 		func(i: int) -> void: _save(Settings.TRAJECTORY_CHOICES[i], &"trajectories")
 	)
@@ -95,7 +93,9 @@ func _sync() -> void:
 	_physical.button_pressed = Settings.get_value(&"physical_model")
 	_motor_force.value = Settings.get_value(&"motor_force")
 	_max_speed.value = Settings.get_value(&"max_speed_kmh")
-	_controller.selected = maxi(CONTROLLERS.find(Settings.get_value(&"controller")), 0)
+	_controller.selected = maxi(
+		NativeModule.controller_names().find(Settings.get_value(&"controller")), 0
+	)
 	_trajectory_count.selected = maxi(
 		Settings.TRAJECTORY_CHOICES.find(Settings.get_value(&"trajectories")), 0
 	)

@@ -50,11 +50,13 @@ func _build_choices() -> void:
 		button.add_theme_font_size_override(&"font_size", 26)
 		button.pressed.connect(func() -> void: ride_requested.emit(key))
 		_levels.add_child(button)
-	for label in PauseMenu.CONTROLLER_LABELS:
-		_controller.add_item(label)
-	_controller.selected = maxi(PauseMenu.CONTROLLERS.find(Settings.get_value(&"controller")), 0)
+	for name in NativeModule.controller_names():
+		_controller.add_item(NativeModule.controller_label(name))
+	_controller.selected = maxi(
+		NativeModule.controller_names().find(Settings.get_value(&"controller")), 0
+	)
 	_controller.item_selected.connect(
-		func(i: int) -> void: Settings.set_value(&"controller", PauseMenu.CONTROLLERS[i])
+		func(i: int) -> void: Settings.set_value(&"controller", NativeModule.controller_names()[i])
 	)
 	for count in Settings.TRAJECTORY_CHOICES:
 		_trajectories.add_item("%d trajectories" % count)

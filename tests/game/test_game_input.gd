@@ -11,7 +11,7 @@ var _game: Game
 
 func before_each() -> void:
 	SettingsSandbox.enter()
-	Settings.set_value(&"controller", 0)
+	Settings.set_value(&"controller", "arcade")
 	_game = GAME.instantiate()
 	_game.level_path = TRACK
 	add_child(_game)
@@ -61,7 +61,7 @@ func test_reset_puts_the_bike_back_at_the_spawn_point() -> void:
 
 
 func test_lift_stands_a_fallen_bike_up() -> void:
-	_game.bike.controller = 1
+	_game.bike.controller = "manual"
 	Input.action_press(&"throttle")
 	await wait_physics_frames(300)
 	assert_true(_game.bike.is_crashed(), "nobody balancing: it fell")
@@ -86,24 +86,26 @@ func test_spawn_buttons_cycle_through_the_spawn_points() -> void:
 func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
 	Settings.set_value(&"trajectories", 5)
 	Input.action_press(&"throttle", 0.5)
-	var seen: Array[int] = []
+	var seen: Array[String] = []
 	var view: TrajectoryView = _game.bike.get_node("TrajectoryView")
 	for i in 3:
 		await SimulatedInput.tap_action(&"cycle_controller")
 		await wait_physics_frames(45)
 		seen.append(_game.bike.controller)
-		if _game.bike.controller != 0:
+		if _game.bike.controller != "arcade":
 			var paths := _game.bike.get_trajectory_paths()
 			assert_eq(paths.size(), 5, "one path per trajectory")
 			await get_tree().process_frame
 			assert_eq(view.drawn_count(), paths.size(), "every trajectory is drawn")
-	assert_eq(seen, [2, 3, 0] as Array[int], "optimizer → combined → arcade")
+	assert_eq(
+		seen, ["optimizer", "combined", "arcade"] as Array[String], "optimizer → combined → arcade"
+	)
 	await get_tree().process_frame
 	assert_eq(view.drawn_count(), 0, "no trajectories while the arcade controller drives")
 	assert_false(_game.bike.is_crashed(), "switching controllers while riding keeps it up")
 	var saved := ConfigFile.new()
 	assert_eq(saved.load(SettingsSandbox.SETTINGS), OK)
-	assert_eq(saved.get_value("game", "controller"), 0)
+	assert_eq(saved.get_value("game", "controller"), "arcade", "saved by name")
 
 
 func test_auto_accelerate_holds_the_chosen_speed() -> void:

@@ -37,6 +37,24 @@ func test_a_broken_file_is_kept_aside_and_defaults_used() -> void:
 	)
 
 
+func test_the_controller_is_saved_by_name_and_old_numbers_migrate() -> void:
+	Settings.set_value(&"controller", "optimizer")
+	Settings.reload()
+	assert_eq(Settings.get_value(&"controller"), "optimizer")
+	expect_error("no controller is called")
+	Settings.set_value(&"controller", "autopilot")
+	assert_eq(Settings.get_value(&"controller"), "optimizer", "an unknown name is refused")
+	# Files from before controllers had names hold BikeSimulation's old numbers.
+	for old: int in 4:
+		var config := ConfigFile.new()
+		config.set_value(Settings.SECTION, "controller", old)
+		config.save(SettingsSandbox.SETTINGS)
+		Settings.reload()
+		# 1 was manual, which players do not pick: the default (with a warning).
+		var migrated: String = ["arcade", "combined", "optimizer", "combined"][old]
+		assert_eq(Settings.get_value(&"controller"), migrated, "old value %d" % old)
+
+
 func test_only_a_faster_lap_is_a_new_best() -> void:
 	assert_eq(Settings.best_lap("track"), INF)
 	assert_true(Settings.record_lap("track", 61.5))

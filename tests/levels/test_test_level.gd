@@ -38,7 +38,7 @@ func test_the_same_seed_lays_the_same_bumps() -> void:
 
 
 func test_combined_with_5_trajectories_reaches_the_goal_in_9_of_10_attempts() -> void:
-	_bike.controller = 3
+	_bike.controller = "combined"
 	_bike.trajectories = 5
 	var reached := 0
 	var outcomes: Array[String] = []
@@ -54,7 +54,7 @@ func test_combined_with_5_trajectories_reaches_the_goal_in_9_of_10_attempts() ->
 func test_an_attempt_repeats_exactly_whatever_was_ridden_before() -> void:
 	# The experiment rides many attempts in one process; a rerun of one on its own (after
 	# a resume) must give the same result.
-	for controller: int in [0, 3]:
+	for controller: String in ["arcade", "combined"]:
 		_bike.controller = controller
 		_bike.trajectories = 5
 		_bike.planner_seed = 11
@@ -64,13 +64,13 @@ func test_an_attempt_repeats_exactly_whatever_was_ridden_before() -> void:
 		var again := TestRun.ride(_level, _bike, 5, 25.0)
 		# All but the planning time, which is the machine's.
 		for key: String in ["outcome", "time", "distance", "steps"]:
-			assert_eq(again[key], first[key], "controller %d: %s" % [controller, key])
-		assert_eq(first.late_plans, 0, "controller %d: every step had its plan" % controller)
+			assert_eq(again[key], first[key], "%s: %s" % [controller, key])
+		assert_eq(first.late_plans, 0, "%s: every step had its plan" % controller)
 
 
 func test_an_attempt_without_a_rider_ends_in_a_fall_or_timeout() -> void:
 	# Manual mode with the bar left alone: nobody balances, the bike falls.
-	_bike.controller = 1
+	_bike.controller = "manual"
 	var result := TestRun.ride(_level, _bike, 1, 15.0)
 	assert_eq(result.outcome, Level.FELL)
 	assert_lt(result.time, 25.0)

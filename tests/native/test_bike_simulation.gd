@@ -77,7 +77,7 @@ func test_bad_input_is_rejected_or_clamped_without_a_crash() -> void:
 
 func test_the_optimizer_settings_shape_its_plans() -> void:
 	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
-	_bike.controller = 3
+	_bike.controller = "combined"
 	_bike.trajectories = 4
 	_bike.horizon = 0.6
 	_bike.plan_wait_ms = 1000.0
@@ -100,7 +100,7 @@ func test_late_plans_are_counted_and_none_come_when_waiting_for_every_plan() -> 
 	var start := Transform3D(Basis(), Vector3(0, 0.02, 0))
 	await _spawn(start)
 	_bike.set_physics_process(false)
-	_bike.controller = 3
+	_bike.controller = "combined"
 	_bike.trajectories = 8
 	_bike.plan_wait_ms = 0.0
 	_bike.set_drive(1.0, 0.0)
@@ -111,6 +111,23 @@ func test_late_plans_are_counted_and_none_come_when_waiting_for_every_plan() -> 
 	_bike.wait_for_every_plan = true
 	_bike.advance(20)
 	assert_eq(_bike.get_late_plan_count(), 0, "every step waited for its plan")
+
+
+func test_the_controller_is_a_name_from_the_one_list() -> void:
+	var bike := BikeSimulation.new()
+	assert_eq(
+		BikeSimulation.controller_names(), PackedStringArray(["optimizer", "combined", "arcade"])
+	)
+	assert_eq(bike.controller, "arcade", "the default")
+	for name: String in Array(BikeSimulation.controller_names()) + ["manual"]:
+		bike.controller = name
+		assert_eq(bike.controller, name, "the property keeps the registry's name")
+		assert_eq(bike.get_controller_name(), name)
+		assert_ne(BikeSimulation.controller_label(name), "")
+	assert_true(BikeSimulation.controller_plans("combined"))
+	assert_false(BikeSimulation.controller_plans("arcade"))
+	assert_eq(BikeSimulation.controller_label("autopilot"), "")
+	bike.free()
 
 
 func _spawn(where: Transform3D) -> void:

@@ -4,6 +4,7 @@
 pub mod bike;
 mod build_info;
 pub mod control;
+pub mod ride;
 pub mod simulation;
 pub mod terrain;
 

@@ -1,21 +1,22 @@
-//! `BikeSimulation`: the ODE bike and rider in a Godot scene.
+//! `BikeSimulation`: the ODE bike and rider in a Godot scene, as glue over the core's
+//! `Ride` (exports, signals, terrain import, pose interpolation); its read-only functions
+//! are in bike_queries.rs.
 
 use std::sync::Arc;
 use std::time::Duration;
 
-use cpbp_core::bike::{
-    from_quat, manual_controls, Controls, CrashCause, DriveInput, Part, Shape, CONTROL_DIM,
-};
-use cpbp_core::control::{
-    AnytimeOptimizer, ArcadeController, OptimizerConfig, OptimizerMode, PlanWait, TurnIntent,
-};
+use cpbp_core::bike::{Controls, CrashCause, DriveInput, Part, CONTROL_DIM};
+use cpbp_core::control::{OptimizerConfig, PlanWait};
+use cpbp_core::ride::{ControllerKind, Intent, PlannerSettings, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig, StepEvents};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
 use godot::classes::{INode3D, Node3D};
 use godot::prelude::*;
 
-use crate::convert::{basis, placement, transform, vector3};
+use crate::bike_queries::pose_of;
+use crate::controller_choice::BikeController;
+use crate::convert::placement;
 use crate::terrain_import;
 
 /// Simulates the bike and its rider with ODE on the level's static collision shapes.
@@ -38,11 +39,12 @@ pub struct BikeSimulation {
     /// ODE steps per control step (more: stiffer joints, slower).
     #[export(range = (1.0, 16.0))]
     substeps: i32,
-    /// Who balances and steers: `arcade` (the PD controller of the thesis, §4.3.2),
-    /// `manual` (nobody: the bar follows `set_steer_rate`, for inspecting the physics),
-    /// `optimizer` (C-PBP) or `combined` (C-PBP warm-started with the arcade controller).
-    #[export(enum = (Arcade = 0, Manual = 1, Optimizer = 2, Combined = 3))]
-    controller: i32,
+    /// Who balances and steers, by name: `arcade` (the PD controller of the thesis,
+    /// §4.3.2), `manual` (nobody: the bar follows `set_steer_rate`, for inspecting the
+    /// physics), `optimizer` (C-PBP) or `combined` (C-PBP warm-started with the arcade
+    /// controller). `controller_names()` lists those players pick.
+    #[export]
+    pub(crate) controller: BikeController,
     /// Trajectories the optimizer simulates each control step (N).
     #[export(range = (1.0, 256.0))]
     trajectories: i32,
@@ -79,19 +81,11 @@ pub struct BikeSimulation {
     /// when the player does.
     #[export]
     wait_for_throttle: bool,
-    started: bool,
-    steps_since_reset: u64,
-    late_plans_since_reset: u64,
-    sim: Option<Simulation>,
-    accumulator: f64,
-    previous_poses: Vec<(DVec3, DQuat)>,
-    drive: DriveInput,
-    steer_rate: f64,
-    turn: f64,
-    arcade: ArcadeController,
-    optimizer: Option<AnytimeOptimizer>,
-    planning: bool,
-    raw_controls: Option<Controls>,
+    pub(crate) ride: Option<Ride>,
+    /// The player's intent as set so far (also before the ride is built).
+    intent: Intent,
+    pub(crate) accumulator: f64,
+    pub(crate) previous_poses: Vec<(DVec3, DQuat)>,
     base: Base<Node3D>,
 }
 
@@ -103,7 +97,7 @@ impl INode3D for BikeSimulation {
             max_speed_kmh: 25.0,
             motor_force: 1.0,
             substeps: 4,
-            controller: 0,
+            controller: BikeController::arcade,
             trajectories: 15,
             horizon: 1.2,
             lean_tolerance_deg: 5.0,
@@ -113,19 +107,10 @@ impl INode3D for BikeSimulation {
             planning_threads: 0,
             planner_seed: 2015,
             wait_for_throttle: false,
-            started: false,
-            steps_since_reset: 0,
-            late_plans_since_reset: 0,
-            sim: None,
+            ride: None,
+            intent: Intent::default(),
             accumulator: 0.0,
             previous_poses: Vec::new(),
-            drive: DriveInput::default(),
-            steer_rate: 0.0,
-            turn: 0.0,
-            arcade: ArcadeController::default(),
-            optimizer: None,
-            planning: false,
-            raw_controls: None,
             base,
         }
     }
@@ -144,20 +129,26 @@ impl INode3D for BikeSimulation {
             substeps: self.substeps.clamp(1, 16) as usize,
             ..SimulationConfig::default()
         };
-        self.sim = Some(Simulation::new(config, terrain, spawn));
+        let mut ride = Ride::new(
+            Simulation::new(config, terrain, spawn),
+            self.controller_kind(),
+        );
+        ride.set_intent(self.intent);
+        self.ride = Some(ride);
+        self.sync_settings();
         self.remember_poses();
     }
 
     fn physics_process(&mut self, delta: f64) {
-        let Some(dt) = self.sim.as_ref().map(|s| s.config().control_dt) else {
+        self.sync_settings();
+        let Some(ride) = &mut self.ride else {
             return;
         };
+        let dt = ride.sim().config().control_dt;
         // Fixed control steps whatever the tick rate; at most 4 per tick, so a stall does
         // not snowball into a burst of steps.
         self.accumulator = (self.accumulator + delta).min(4.0 * dt);
-        self.started |=
-            !self.wait_for_throttle || self.drive.throttle > 0.0 || self.raw_controls.is_some();
-        if !self.started {
+        if !ride.try_start() {
             self.accumulator = 0.0;
             return;
         }
@@ -187,38 +178,35 @@ impl BikeSimulation {
             godot_warn!("BikeSimulation.set_drive: non-finite input ({throttle}, {brake}) treated as released");
         }
         let force = self.motor_force.clamp(0.1, 1.0);
-        self.drive = DriveInput {
+        self.intent.drive = DriveInput {
             throttle: throttle * force,
             brake: brake * force,
             max_speed: self.max_speed_kmh / 3.6,
         }
         .sanitized();
-        self.raw_controls = None;
+        self.apply_intent();
     }
 
     /// The player's turn command in [−1, 1], positive right: it sets the curvature of the
     /// path, and the lean the controller aims for follows from it and the speed (eq. 4.4).
     #[func]
     fn set_turn(&mut self, command: f64) {
-        self.turn = finite_input(command, 1.0, "set_turn");
-        self.raw_controls = None;
+        self.intent.turn = finite_input(command, 1.0, "set_turn");
+        self.apply_intent();
     }
 
     /// The lean (rad, positive right) the controller aims for now.
     #[func]
     fn get_desired_lean(&self) -> f64 {
-        self.sim.as_ref().map_or(0.0, |s| {
-            let speed = s.bike().forward_speed(s.world(), s.up());
-            TurnIntent::default().lean_for(self.turn, speed, s.config().gravity.length())
-        })
+        self.ride.as_ref().map_or(0.0, Ride::desired_lean)
     }
 
     /// Steering rate (rad/s, positive left) while driving without a controller; 0 lets the
     /// bar spring back to centre.
     #[func]
     fn set_steer_rate(&mut self, rate: f64) {
-        self.steer_rate = finite_input(rate, 4.0, "set_steer_rate");
-        self.raw_controls = None;
+        self.intent.steer_rate = finite_input(rate, 4.0, "set_steer_rate");
+        self.apply_intent();
     }
 
     /// Sets all 18 controls directly (13 joint velocities, 5 force tunings); values are
@@ -236,7 +224,9 @@ impl BikeSimulation {
         if changed > 0 {
             godot_warn!("BikeSimulation.set_controls: {changed} value(s) were out of range or not numbers and were clamped");
         }
-        self.raw_controls = Some(controls);
+        if let Some(ride) = &mut self.ride {
+            ride.set_raw_controls(controls);
+        }
         true
     }
 
@@ -247,13 +237,9 @@ impl BikeSimulation {
             godot_error!("BikeSimulation.reset_to: the transform mirrors or flattens the bike");
             return;
         };
-        if let Some(sim) = &mut self.sim {
-            sim.reset_to(placement);
+        if let Some(ride) = &mut self.ride {
+            ride.reset_to(placement);
         }
-        self.forget_plans();
-        self.started = false;
-        self.steps_since_reset = 0;
-        self.late_plans_since_reset = 0;
         self.accumulator = 0.0;
         self.remember_poses();
     }
@@ -267,7 +253,10 @@ impl BikeSimulation {
             godot_error!("BikeSimulation.advance: {steps} steps is out of range (0–100000)");
             return;
         }
-        self.started = true;
+        self.sync_settings();
+        if let Some(ride) = &mut self.ride {
+            ride.start();
+        }
         for _ in 0..steps {
             self.advance_one();
         }
@@ -276,23 +265,22 @@ impl BikeSimulation {
     /// Control steps simulated since the bike was built or last placed.
     #[func]
     fn get_step_count(&self) -> i64 {
-        self.steps_since_reset as i64
+        self.ride.as_ref().map_or(0, |r| r.steps() as i64)
     }
 
     /// Control steps since the bike was last placed at which the optimizer drove without a
     /// plan for that step (a late plan, or none): 0 for a ride that repeats exactly.
     #[func]
     fn get_late_plan_count(&self) -> i64 {
-        self.late_plans_since_reset as i64
+        self.ride.as_ref().map_or(0, |r| r.late_plans() as i64)
     }
 
     /// Stands a fallen bike up where it lies.
     #[func]
     fn lift_upright(&mut self) {
-        if let Some(sim) = &mut self.sim {
-            sim.lift_upright();
+        if let Some(ride) = &mut self.ride {
+            ride.lift_upright();
         }
-        self.forget_plans();
         self.remember_poses();
     }
 
@@ -302,334 +290,73 @@ impl BikeSimulation {
         let Some(terrain) = self.import_terrain() else {
             return false;
         };
-        match &mut self.sim {
-            Some(sim) => sim.set_terrain(terrain),
+        match &mut self.ride {
+            Some(ride) => ride.set_terrain(terrain),
             None => return false,
         }
-        // The planning thread's replica has the old terrain.
-        self.optimizer = None;
         true
-    }
-
-    /// Name of the active controller: "arcade", "manual", "optimizer" or "combined".
-    #[func]
-    fn get_controller_name(&self) -> GString {
-        GString::from(
-            ["arcade", "manual", "optimizer", "combined"][self.controller.clamp(0, 3) as usize],
-        )
-    }
-
-    /// Milliseconds the planning thread took for the last plan taken over (0 when the
-    /// optimizer is not driving).
-    #[func]
-    fn get_planning_ms(&self) -> f64 {
-        self.current_plan().map_or(0.0, |p| p.planning_ms)
-    }
-
-    /// Total cost of the best trajectory of the last plan taken over.
-    #[func]
-    fn get_best_cost(&self) -> f64 {
-        self.current_plan().map_or(0.0, |p| p.best_cost)
-    }
-
-    /// Resampling steps in the last plan taken over.
-    #[func]
-    fn get_resample_count(&self) -> i64 {
-        self.current_plan().map_or(0, |p| p.resamples as i64)
-    }
-
-    /// Hand-over statistics of the planning thread: `last_wait_ms`, `mean_wait_ms`,
-    /// `max_wait_ms` (the game thread's waits at control-step boundaries), `boundaries`
-    /// and `late` (boundaries with no plan for their step).
-    #[func]
-    fn get_handover_stats(&self) -> Dictionary<Variant, Variant> {
-        let mut d: Dictionary<Variant, Variant> = Dictionary::new();
-        let stats = self.optimizer.as_ref().map(|o| o.stats).unwrap_or_default();
-        d.set(
-            &"last_wait_ms".to_variant(),
-            &stats.last_wait_ms.to_variant(),
-        );
-        d.set(
-            &"mean_wait_ms".to_variant(),
-            &stats.mean_wait_ms().to_variant(),
-        );
-        d.set(&"max_wait_ms".to_variant(), &stats.max_wait_ms.to_variant());
-        d.set(
-            &"boundaries".to_variant(),
-            &(stats.boundaries as i64).to_variant(),
-        );
-        d.set(&"late".to_variant(), &(stats.late as i64).to_variant());
-        d
-    }
-
-    /// The last plan's trajectories as centre-of-mass paths (one point per planning
-    /// step), for drawing: `get_best_trajectory` and `get_warm_trajectory` index it.
-    #[func]
-    fn get_trajectory_paths(&self) -> Array<PackedVector3Array> {
-        let mut paths = Array::new();
-        for path in self.current_plan().map_or(&[][..], |p| &p.paths[..]) {
-            let points: PackedVector3Array = path.iter().map(|p| vector3(*p)).collect();
-            paths.push(&points);
-        }
-        paths
-    }
-
-    /// Index of the best trajectory in `get_trajectory_paths` (−1 without a plan).
-    #[func]
-    fn get_best_trajectory(&self) -> i64 {
-        self.current_plan().map_or(-1, |p| p.best as i64)
-    }
-
-    /// Index of the refined (optimizer) or arcade (combined) trajectory, −1 if none.
-    #[func]
-    fn get_warm_trajectory(&self) -> i64 {
-        self.current_plan()
-            .and_then(|p| p.warm)
-            .map_or(-1, |w| w as i64)
-    }
-
-    /// True while the bike stands waiting for the first throttle (`wait_for_throttle`).
-    #[func]
-    fn is_waiting_for_throttle(&self) -> bool {
-        self.sim.is_some() && !self.started && self.wait_for_throttle
-    }
-
-    /// True once the simulation runs (the terrain was read and the bike built).
-    #[func]
-    fn is_running(&self) -> bool {
-        self.sim.is_some()
-    }
-
-    /// Forward speed in m/s.
-    #[func]
-    fn get_speed(&self) -> f64 {
-        self.sim
-            .as_ref()
-            .map_or(0.0, |s| s.bike().forward_speed(s.world(), s.up()))
-    }
-
-    /// Lean angle in radians, positive to the right.
-    #[func]
-    fn get_lean(&self) -> f64 {
-        self.sim
-            .as_ref()
-            .map_or(0.0, |s| s.bike().lean(s.world(), s.up()))
-    }
-
-    /// Steering angle in radians, positive to the left.
-    #[func]
-    fn get_steering_angle(&self) -> f64 {
-        self.sim
-            .as_ref()
-            .map_or(0.0, |s| s.bike().steering(s.world()).0)
-    }
-
-    #[func]
-    fn is_rear_wheel_grounded(&self) -> bool {
-        self.sim
-            .as_ref()
-            .is_some_and(|s| s.bike().wheel_contacts(s.world()).0)
-    }
-
-    #[func]
-    fn is_front_wheel_grounded(&self) -> bool {
-        self.sim
-            .as_ref()
-            .is_some_and(|s| s.bike().wheel_contacts(s.world()).1)
-    }
-
-    /// True after a crash, until the next reset or lift.
-    #[func]
-    fn is_crashed(&self) -> bool {
-        self.sim.as_ref().is_some_and(|s| s.crashed().is_some())
-    }
-
-    /// Centre of mass of bike and rider.
-    #[func]
-    fn get_center_of_mass(&self) -> Vector3 {
-        self.sim.as_ref().map_or(Vector3::ZERO, |s| {
-            vector3(s.bike().center_of_mass(s.world()))
-        })
-    }
-
-    /// Number of rigid bodies (9).
-    #[func]
-    fn get_body_count(&self) -> i64 {
-        Part::ALL.len() as i64
-    }
-
-    /// Name of body `index` (`rear_wheel`, `frame`, `torso`, …).
-    #[func]
-    fn get_body_name(&self, index: i64) -> GString {
-        part(index).map_or(GString::new(), |p| GString::from(p.name()))
-    }
-
-    /// Global transform of body `index`, interpolated between the last two steps.
-    #[func]
-    fn get_body_transform(&self, index: i64) -> Transform3D {
-        let (Some(sim), Some(part)) = (&self.sim, part(index)) else {
-            return Transform3D::IDENTITY;
-        };
-        let body = sim.bike().body(part);
-        let now = (
-            dvec3_of(sim.world().body_position(body)),
-            from_quat(sim.world().body_quaternion(body)),
-        );
-        let (before_position, before_rotation) = self
-            .previous_poses
-            .get(part as usize)
-            .copied()
-            .unwrap_or(now);
-        let alpha = (self.accumulator / sim.config().control_dt).clamp(0.0, 1.0);
-        transform(
-            before_position.lerp(now.0, alpha),
-            before_rotation.slerp(now.1, alpha),
-        )
-    }
-
-    /// The collision shapes, for drawing the physical model: one Dictionary per shape with
-    /// `body` (index), `kind` ("sphere", "box", "capsule"), `radius`, `length` (capsule,
-    /// without caps, along local z), `size` (box) and `offset` (Transform3D in the body).
-    #[func]
-    fn get_shapes(&self) -> Array<Dictionary<Variant, Variant>> {
-        let mut shapes = Array::new();
-        let Some(sim) = &self.sim else { return shapes };
-        for s in sim.bike().shapes() {
-            let mut d: Dictionary<Variant, Variant> = Dictionary::new();
-            d.set(&"body".to_variant(), &(s.part as i64).to_variant());
-            d.set(
-                &"offset".to_variant(),
-                &Transform3D::new(basis(s.rotation), vector3(s.offset)).to_variant(),
-            );
-            match s.shape {
-                Shape::Sphere { radius } => {
-                    d.set(&"kind".to_variant(), &"sphere".to_variant());
-                    d.set(&"radius".to_variant(), &radius.to_variant());
-                }
-                Shape::Cuboid { size } => {
-                    d.set(&"kind".to_variant(), &"box".to_variant());
-                    d.set(&"size".to_variant(), &vector3(size).to_variant());
-                }
-                Shape::Capsule { radius, length } => {
-                    d.set(&"kind".to_variant(), &"capsule".to_variant());
-                    d.set(&"radius".to_variant(), &radius.to_variant());
-                    d.set(&"length".to_variant(), &length.to_variant());
-                }
-            }
-            shapes.push(&d);
-        }
-        shapes
     }
 }
 
 impl BikeSimulation {
     fn import_terrain(&mut self) -> Option<Arc<Terrain>> {
-        let root_path = self.terrain_root.clone();
-        let Some(root) = self.base().get_node_or_null(&root_path) else {
-            godot_error!("BikeSimulation: terrain root '{root_path}' not found");
-            return None;
-        };
-        let (pieces, errors) = terrain_import::collect(&root);
-        for error in &errors {
-            godot_error!("BikeSimulation: terrain shape skipped: {error}");
-        }
-        match Terrain::new(pieces) {
-            Ok(terrain) => Some(Arc::new(terrain)),
-            Err(error) => {
-                godot_error!("BikeSimulation: broken level geometry: {error}");
-                None
-            }
-        }
+        terrain_import::terrain_under(&self.base(), &self.terrain_root.clone())
     }
 
     fn advance_one(&mut self) {
-        if self.sim.is_none() {
+        if self.ride.is_none() {
             return;
         }
         self.remember_poses();
-        let events = self.step_once();
-        self.steps_since_reset += 1;
+        let events = self.ride.as_mut().map(Ride::step).unwrap_or_default();
         self.emit(events);
     }
 
-    fn step_once(&mut self) -> StepEvents {
-        let desired_lean = self.get_desired_lean();
-        let config = self.optimizer_config();
-        let Some(sim) = &mut self.sim else {
-            return StepEvents::default();
+    /// The exports, as the ride's settings: GDScript may change them at any time.
+    fn sync_settings(&mut self) {
+        let kind = self.controller_kind();
+        let planner = PlannerSettings {
+            optimizer: OptimizerConfig {
+                particles: self.trajectories.clamp(1, 256) as usize,
+                horizon: self.horizon.clamp(0.2, 3.0),
+                lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
+                rollout_substeps: self.rollout_substeps.clamp(1, 8) as usize,
+                threads: self.planning_threads.clamp(0, 64) as usize,
+                seed: self.planner_seed as u64,
+                ..OptimizerConfig::default()
+            },
+            wait: if self.wait_for_every_plan {
+                PlanWait::EveryPlan
+            } else {
+                PlanWait::AtMost(Duration::from_secs_f64(
+                    self.plan_wait_ms.clamp(0.0, 1000.0) / 1000.0,
+                ))
+            },
         };
-        let planning = self.raw_controls.is_none() && matches!(self.controller, 2 | 3);
-        let controls = match (self.raw_controls, self.controller) {
-            (Some(controls), _) => controls,
-            (None, 1) => manual_controls(sim.bike(), sim.world(), &self.drive, self.steer_rate),
-            (None, 2 | 3) => {
-                let optimizer = self
-                    .optimizer
-                    .get_or_insert_with(|| AnytimeOptimizer::new(sim, PlanWait::EveryPlan));
-                optimizer.wait = if self.wait_for_every_plan {
-                    PlanWait::EveryPlan
-                } else {
-                    PlanWait::AtMost(Duration::from_secs_f64(
-                        self.plan_wait_ms.clamp(0.0, 1000.0) / 1000.0,
-                    ))
-                };
-                // Plans made while another controller drove are for states long gone.
-                if !self.planning {
-                    optimizer.reset();
-                }
-                let late_before = optimizer.stats.late;
-                let controls = optimizer.controls(sim, desired_lean, &self.drive, &config);
-                self.late_plans_since_reset += optimizer.stats.late - late_before;
-                controls
-            }
-            (None, _) => {
-                let dt = sim.config().control_dt;
-                self.arcade.controls(
-                    sim.bike(),
-                    sim.world(),
-                    desired_lean,
-                    &self.drive,
-                    sim.up(),
-                    dt,
-                )
-            }
-        };
-        self.planning = planning;
-        sim.set_controls(controls);
-        sim.step()
-    }
-
-    fn optimizer_config(&self) -> OptimizerConfig {
-        let mode = if self.controller == 2 {
-            OptimizerMode::Optimizer
-        } else {
-            OptimizerMode::Combined
-        };
-        OptimizerConfig {
-            mode,
-            particles: self.trajectories.clamp(1, 256) as usize,
-            horizon: self.horizon.clamp(0.2, 3.0),
-            lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
-            rollout_substeps: self.rollout_substeps.clamp(1, 8) as usize,
-            threads: self.planning_threads.clamp(0, 64) as usize,
-            seed: self.planner_seed as u64,
-            ..OptimizerConfig::default()
+        if let Some(ride) = &mut self.ride {
+            ride.set_controller(kind);
+            ride.planner = planner;
+            ride.wait_for_throttle = self.wait_for_throttle;
         }
     }
 
-    /// The plan in use, while the optimizer drives.
-    fn current_plan(&self) -> Option<&cpbp_core::control::Plan> {
-        if !self.planning {
-            return None;
-        }
-        self.optimizer.as_ref().and_then(|o| o.plan())
+    pub(crate) fn sim(&self) -> Option<&Simulation> {
+        self.ride.as_ref().map(Ride::sim)
     }
 
-    fn forget_plans(&mut self) {
-        self.arcade.reset();
-        if let Some(optimizer) = &mut self.optimizer {
-            optimizer.reset();
+    pub(crate) fn controller_kind(&self) -> ControllerKind {
+        self.controller.into()
+    }
+
+    fn apply_intent(&mut self) {
+        if let Some(ride) = &mut self.ride {
+            ride.set_intent(self.intent);
         }
+    }
+
+    /// The plan in use, while a planner drives.
+    pub(crate) fn current_plan(&self) -> Option<&cpbp_core::control::Plan> {
+        self.ride.as_ref().and_then(Ride::plan)
     }
 
     fn emit(&mut self, events: StepEvents) {
@@ -644,7 +371,6 @@ impl BikeSimulation {
             self.signals().landed().emit();
         }
         if let Some(reason) = events.recovered_from {
-            self.forget_plans();
             godot_warn!("BikeSimulation: the physics blew up ({reason})");
             self.signals()
                 .recovered()
@@ -654,17 +380,8 @@ impl BikeSimulation {
     }
 
     fn remember_poses(&mut self) {
-        let Some(sim) = &self.sim else { return };
-        self.previous_poses = Part::ALL
-            .iter()
-            .map(|p| {
-                let body = sim.bike().body(*p);
-                (
-                    dvec3_of(sim.world().body_position(body)),
-                    from_quat(sim.world().body_quaternion(body)),
-                )
-            })
-            .collect();
+        let Some(sim) = self.sim() else { return };
+        self.previous_poses = Part::ALL.iter().map(|p| pose_of(sim, *p)).collect();
     }
 }
 
@@ -676,14 +393,4 @@ fn finite_input(value: f64, bound: f64, function: &str) -> f64 {
         godot_warn!("BikeSimulation.{function}: non-finite input {value} treated as 0");
         0.0
     }
-}
-
-fn part(index: i64) -> Option<Part> {
-    usize::try_from(index)
-        .ok()
-        .and_then(|i| Part::ALL.get(i).copied())
-}
-
-fn dvec3_of(v: [f64; 3]) -> DVec3 {
-    DVec3::from_array(v)
 }

@@ -1,6 +1,8 @@
 //! Counter-Steer's GDExtension entry point: the Godot classes that wrap `cpbp-core`.
 
+mod bike_queries;
 mod bike_simulation;
+mod controller_choice;
 mod convert;
 mod native_info;
 mod ode_world;

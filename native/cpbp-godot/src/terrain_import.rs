@@ -1,8 +1,10 @@
 //! Reads a level's static collision shapes (CollisionShape3D under StaticBody3D) into the
 //! core's terrain description, with their global transforms baked in.
 
+use std::sync::Arc;
+
 use cpbp_core::bike::Placement;
-use cpbp_core::terrain::{TerrainPiece, TerrainShape};
+use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
 use glam::{DQuat, DVec3};
 use godot::classes::{
     BoxShape3D, CapsuleShape3D, CollisionShape3D, ConcavePolygonShape3D, ConvexPolygonShape3D,
@@ -12,6 +14,26 @@ use godot::classes::{
 use godot::prelude::*;
 
 use crate::convert::{decompose, dvec3};
+
+/// The terrain of the static shapes under `root_path` (relative to `node`), with every
+/// problem reported as an error; None when there is no usable terrain.
+pub fn terrain_under(node: &Node3D, root_path: &NodePath) -> Option<Arc<Terrain>> {
+    let Some(root) = node.get_node_or_null(root_path) else {
+        godot_error!("BikeSimulation: terrain root '{root_path}' not found");
+        return None;
+    };
+    let (pieces, errors) = collect(&root);
+    for error in &errors {
+        godot_error!("BikeSimulation: terrain shape skipped: {error}");
+    }
+    match Terrain::new(pieces) {
+        Ok(terrain) => Some(Arc::new(terrain)),
+        Err(error) => {
+            godot_error!("BikeSimulation: broken level geometry: {error}");
+            None
+        }
+    }
+}
 
 /// All usable pieces under `root`, and one message per shape that could not be used.
 pub fn collect(root: &Gd<Node>) -> (Vec<TerrainPiece>, Vec<String>) {

@@ -1,7 +1,8 @@
 """Reproducible rides, end to end with real Godot workers (a `make test` step, after the
 build): an attempt repeats exactly whatever the worker rode before and on one or two
 planning threads; a run refuses to mix platforms; `verify` re-rides rows and catches one
-that was tampered with."""
+that was tampered with; and a sample of the committed evaluation re-rides exactly, so a
+change that alters how the bike rides cannot pass unnoticed."""
 
 import csv
 import json
@@ -11,7 +12,7 @@ import unittest
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from cpbp_experiment.runner import PROJECT_ROOT, godot_command
+from cpbp_experiment.runner import PROJECT_ROOT, godot_command, worker_platform
 
 QUICK = ["--tries", "2", "--speeds", "25", "--controllers", "arcade,combined-5", "--jobs", "2",
          "--seed", "700"]
@@ -98,6 +99,21 @@ class ReproducibleRidesTest(unittest.TestCase):
             self.assertEqual(mixed.returncode, 0, mixed.stderr)
             self.assertEqual(len(read(results)), 6)
             self.assertIn("The rows come from 2 platforms", (out / "report.md").read_text())
+
+    def test_a_sample_of_the_committed_evaluation_re_rides_exactly(self):
+        controllers = "arcade,combined-5"
+        with tempfile.TemporaryDirectory() as directory:
+            platform = worker_platform(Path(directory) / "workers.log")
+        # The committed rows were made where glibc's libm takes its FMA paths; elsewhere
+        # optimizer rows need not repeat (docs/experiment.md, "Reproducibility").
+        if platform["math_path"] == "fma":
+            controllers += ",optimizer-5"
+        checked = experiment("verify", "--out", str(PROJECT_ROOT / "docs" / "experiment"),
+                             "--attempts", "0-2", "--speeds", "25", "--controllers",
+                             controllers)
+        self.assertEqual(checked.returncode, 0, checked.stdout + checked.stderr)
+        rows = 9 if "optimizer" in controllers else 6
+        self.assertIn(f"{rows} of {rows} rows re-ride exactly", checked.stdout)
 
     def _pretend_rows_came_from_another_c_library(self, out: Path, rows: list[dict]) -> None:
         platforms = json.loads((out / "platforms.json").read_text())

@@ -1,0 +1,130 @@
+//! One shape for every controller (in the spirit of MuJoCo MPC's `Planner` interface): each
+//! turns the ride's state and the player's intent into the controls of the next step, and
+//! forgets what it remembered when the ride jumps. The registry names them.
+
+use std::time::Duration;
+
+use crate::bike::{Controls, DriveInput};
+use crate::control::{HandoverStats, OptimizerConfig, OptimizerMode, Plan, PlanWait};
+use crate::simulation::Simulation;
+
+/// What the player asks for; room for more inputs (the rider's weight) as they come.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Intent {
+    /// Throttle and brake.
+    pub drive: DriveInput,
+    /// Turn command in [−1, 1], positive right: the path's curvature, from which the lean
+    /// the controllers aim for follows with the speed (eq. 4.4).
+    pub turn: f64,
+    /// Steering rate (rad/s, positive left) for the manual controller; 0 lets the bar
+    /// spring back to centre.
+    pub steer_rate: f64,
+}
+
+/// What a controller sees of the ride at a control step.
+pub struct RideState<'a> {
+    pub sim: &'a Simulation,
+    /// The lean (rad, positive right) the turn command asks for at this speed.
+    pub desired_lean: f64,
+    /// How the planners plan (ignored by the others).
+    pub planner: &'a PlannerSettings,
+}
+
+/// A controller: arcade, manual, the planners, and those to come.
+pub trait Controller: Send {
+    /// Controls for the next control step; called once per step, before the step.
+    fn controls(&mut self, state: &RideState<'_>, intent: &Intent) -> Controls;
+    /// Forgets plans and memory: the ride was placed anew, lifted, or another controller
+    /// drove in between, so what it remembers is for a state long gone.
+    fn reset(&mut self);
+    /// The plan driving the bike now (planners only).
+    fn plan(&self) -> Option<&Plan> {
+        None
+    }
+    /// How the planning thread's hand-overs went (planners only).
+    fn handover(&self) -> Option<HandoverStats> {
+        None
+    }
+}
+
+/// Every controller there is, by its stable name; the menus, the HUD, settings files and
+/// the experiment all read this one list.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum ControllerKind {
+    /// The PD controller on the steering of the thesis (§4.3.2).
+    Arcade,
+    /// Nobody balances: the bar follows the steering rate input (for inspecting physics).
+    Manual,
+    /// C-PBP alone (§4.3).
+    Optimizer,
+    /// C-PBP warm-started with the arcade controller's trajectory.
+    Combined,
+}
+
+impl ControllerKind {
+    /// In the order the menus list them and the game cycles through them.
+    pub const ALL: [ControllerKind; 4] =
+        [Self::Optimizer, Self::Combined, Self::Arcade, Self::Manual];
+
+    /// The name settings files, the experiment's CSV and the command line use.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Arcade => "arcade",
+            Self::Manual => "manual",
+            Self::Optimizer => "optimizer",
+            Self::Combined => "combined",
+        }
+    }
+
+    /// What menus show.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Arcade => "Arcade (PD)",
+            Self::Manual => "Manual (nobody balances)",
+            Self::Optimizer => "Optimizer (C-PBP)",
+            Self::Combined => "Combined (C-PBP + arcade)",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|k| k.name() == name)
+    }
+
+    /// Whether players pick it (menus, the game's cycle); manual is for tests and tools.
+    pub fn offered(self) -> bool {
+        self != Self::Manual
+    }
+
+    /// Whether it plans with trajectories (and so has plans to draw and time).
+    pub fn plans(self) -> bool {
+        matches!(self, Self::Optimizer | Self::Combined)
+    }
+
+    /// A new controller of this kind for `sim`.
+    pub fn build(self, sim: &Simulation, planner: &PlannerSettings) -> Box<dyn Controller> {
+        use super::drivers::{ArcadeDriver, ManualDriver, PlannerDriver};
+        match self {
+            Self::Arcade => Box::<ArcadeDriver>::default(),
+            Self::Manual => Box::new(ManualDriver),
+            Self::Optimizer => Box::new(PlannerDriver::new(sim, OptimizerMode::Optimizer, planner)),
+            Self::Combined => Box::new(PlannerDriver::new(sim, OptimizerMode::Combined, planner)),
+        }
+    }
+}
+
+/// How the planners plan: the optimizer's settings and how long the ride waits for a plan.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannerSettings {
+    pub optimizer: OptimizerConfig,
+    pub wait: PlanWait,
+}
+
+impl Default for PlannerSettings {
+    /// The game's: the optimizer's defaults, waiting at most 12 ms at a control step.
+    fn default() -> Self {
+        Self {
+            optimizer: OptimizerConfig::default(),
+            wait: PlanWait::AtMost(Duration::from_millis(12)),
+        }
+    }
+}

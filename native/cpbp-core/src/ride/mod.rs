@@ -1,0 +1,215 @@
+//! A ride: the master simulation, the controller that drives it and the player's intent,
+//! stepped one control period at a time. The game's `BikeSimulation` node, the headless
+//! experiment, the benchmarks and the tests all ride through this, so the rules (the start
+//! gate, when plans are forgotten, what counts as a late plan) exist once.
+
+mod controller;
+mod drivers;
+
+pub use controller::{Controller, ControllerKind, Intent, PlannerSettings, RideState};
+
+use std::sync::Arc;
+
+use crate::bike::{Controls, Placement};
+use crate::control::{HandoverStats, Plan, TurnIntent};
+use crate::simulation::{Simulation, StepEvents};
+use crate::terrain::Terrain;
+
+pub struct Ride {
+    sim: Simulation,
+    kind: ControllerKind,
+    /// Controllers built so far, kept so switching back does not rebuild a planner's
+    /// thread and worlds; each is reset before it drives again.
+    built: Vec<(ControllerKind, Box<dyn Controller>)>,
+    /// Who drove the last step (None: raw controls, or nobody yet).
+    last_driver: Option<ControllerKind>,
+    intent: Intent,
+    raw_controls: Option<Controls>,
+    turn: TurnIntent,
+    pub planner: PlannerSettings,
+    /// Hold the bike where it was placed until the first throttle: standing still, no
+    /// steering can balance a bike, so the ride starts when the player does.
+    pub wait_for_throttle: bool,
+    started: bool,
+    steps: u64,
+    late_plans: u64,
+}
+
+impl Ride {
+    /// A ride of `sim` driven by a `kind` controller, with the game's planner settings.
+    pub fn new(sim: Simulation, kind: ControllerKind) -> Self {
+        Self {
+            sim,
+            kind,
+            built: Vec::new(),
+            last_driver: None,
+            intent: Intent::default(),
+            raw_controls: None,
+            turn: TurnIntent::default(),
+            planner: PlannerSettings::default(),
+            wait_for_throttle: false,
+            started: false,
+            steps: 0,
+            late_plans: 0,
+        }
+    }
+
+    pub fn sim(&self) -> &Simulation {
+        &self.sim
+    }
+
+    pub fn controller(&self) -> ControllerKind {
+        self.kind
+    }
+
+    /// Who drives from the next step on.
+    pub fn set_controller(&mut self, kind: ControllerKind) {
+        self.kind = kind;
+    }
+
+    pub fn intent(&self) -> &Intent {
+        &self.intent
+    }
+
+    /// The player's intent from the next step on; the controller drives again.
+    pub fn set_intent(&mut self, intent: Intent) {
+        self.intent = intent;
+        self.raw_controls = None;
+    }
+
+    /// All controls set directly until the next intent (tools and tests).
+    pub fn set_raw_controls(&mut self, controls: Controls) {
+        self.raw_controls = Some(controls);
+    }
+
+    /// The lean (rad, positive right) the turn command asks for at the current speed.
+    pub fn desired_lean(&self) -> f64 {
+        let s = &self.sim;
+        let speed = s.bike().forward_speed(s.world(), s.up());
+        self.turn
+            .lean_for(self.intent.turn, speed, s.config().gravity.length())
+    }
+
+    /// Opens the start gate when the ride may start (no waiting asked for, a throttle, or
+    /// raw controls); true once it is open.
+    pub fn try_start(&mut self) -> bool {
+        self.started |= !self.wait_for_throttle
+            || self.intent.drive.throttle > 0.0
+            || self.raw_controls.is_some();
+        self.started
+    }
+
+    /// Opens the start gate whatever the input (headless runs step explicitly).
+    pub fn start(&mut self) {
+        self.started = true;
+    }
+
+    /// True while the bike stands waiting for the first throttle.
+    pub fn is_waiting_for_throttle(&self) -> bool {
+        !self.started && self.wait_for_throttle
+    }
+
+    /// Control steps since the ride was built or last placed.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// Steps since the ride was last placed at which a planner drove without the plan for
+    /// that step (late, or none): 0 for a ride that repeats exactly.
+    pub fn late_plans(&self) -> u64 {
+        self.late_plans
+    }
+
+    /// The plan driving the bike, while a planner drives.
+    pub fn plan(&self) -> Option<&Plan> {
+        let driver = self.last_driver.filter(|k| k.plans())?;
+        self.built_controller(driver)?.plan()
+    }
+
+    /// Hand-over statistics of the active planner (None for the others, or before it ran).
+    pub fn handover(&self) -> Option<HandoverStats> {
+        self.built_controller(self.kind)?.handover()
+    }
+
+    /// Simulates one control step with the active controller (or the raw controls).
+    pub fn step(&mut self) -> StepEvents {
+        let desired_lean = self.desired_lean();
+        let controls = match self.raw_controls {
+            Some(controls) => {
+                self.last_driver = None;
+                controls
+            }
+            None => self.controls_of_active(desired_lean),
+        };
+        self.sim.set_controls(controls);
+        let events = self.sim.step();
+        self.steps += 1;
+        if events.recovered_from.is_some() {
+            self.forget_plans();
+        }
+        events
+    }
+
+    /// Puts the bike at rest at `placement`, which becomes the spawn point: a new ride.
+    pub fn reset_to(&mut self, placement: Placement) {
+        self.sim.reset_to(placement);
+        self.forget_plans();
+        self.started = false;
+        self.steps = 0;
+        self.late_plans = 0;
+    }
+
+    /// Stands a fallen bike up where it lies.
+    pub fn lift_upright(&mut self) {
+        self.sim.lift_upright();
+        self.forget_plans();
+    }
+
+    /// Swaps the terrain (a level changed), keeping the ride's state. The planners' worlds
+    /// have the old terrain, so they are built anew when next they drive.
+    pub fn set_terrain(&mut self, terrain: Arc<Terrain>) {
+        self.sim.set_terrain(terrain);
+        self.built.retain(|(kind, _)| !kind.plans());
+    }
+
+    fn controls_of_active(&mut self, desired_lean: f64) -> Controls {
+        let kind = self.kind;
+        if !self.built.iter().any(|(k, _)| *k == kind) {
+            let controller = kind.build(&self.sim, &self.planner);
+            self.built.push((kind, controller));
+        }
+        let fresh_driver = self.last_driver != Some(kind);
+        let state = RideState {
+            sim: &self.sim,
+            desired_lean,
+            planner: &self.planner,
+        };
+        let (_, controller) = self
+            .built
+            .iter_mut()
+            .find(|(k, _)| *k == kind)
+            .expect("built above");
+        // What it remembers is from before another controller (or raw controls) drove.
+        if fresh_driver {
+            controller.reset();
+        }
+        let late_before = controller.handover().map_or(0, |h| h.late);
+        let controls = controller.controls(&state, &self.intent);
+        self.late_plans += controller.handover().map_or(0, |h| h.late) - late_before;
+        self.last_driver = Some(kind);
+        controls
+    }
+
+    fn built_controller(&self, kind: ControllerKind) -> Option<&dyn Controller> {
+        self.built
+            .iter()
+            .find(|(k, _)| *k == kind)
+            .map(|(_, c)| c.as_ref())
+    }
+
+    fn forget_plans(&mut self) {
+        for (_, controller) in &mut self.built {
+            controller.reset();
+        }
+    }
+}

@@ -1,0 +1,252 @@
+//! `BikeSimulation`'s read-only side for GDScript: the controller registry, the plans and
+//! hand-over statistics, the ride's state, and the bodies and shapes the views draw.
+
+use cpbp_core::bike::{from_quat, Part, Shape};
+use cpbp_core::ride::{ControllerKind, Ride};
+use cpbp_core::simulation::Simulation;
+use glam::{DQuat, DVec3};
+use godot::prelude::*;
+
+use crate::bike_simulation::BikeSimulation;
+use crate::controller_choice;
+use crate::convert::{basis, transform, vector3};
+
+#[godot_api(secondary)]
+impl BikeSimulation {
+    /// The controllers players pick, by name, in the order menus list them and the game
+    /// cycles through them (the one list: `cpbp_core::ride::ControllerKind::ALL`).
+    #[func]
+    fn controller_names() -> PackedStringArray {
+        controller_choice::offered_names()
+    }
+
+    /// What menus show for controller `name` (empty for an unknown name).
+    #[func]
+    fn controller_label(name: GString) -> GString {
+        controller_choice::kind_named(&name).map_or(GString::new(), |k| GString::from(k.label()))
+    }
+
+    /// Whether controller `name` plans with trajectories (optimizer, combined).
+    #[func]
+    fn controller_plans(name: GString) -> bool {
+        controller_choice::kind_named(&name).is_some_and(ControllerKind::plans)
+    }
+
+    /// Name of the active controller: "arcade", "manual", "optimizer" or "combined".
+    #[func]
+    fn get_controller_name(&self) -> GString {
+        GString::from(self.controller_kind().name())
+    }
+
+    /// Milliseconds the planning thread took for the last plan taken over (0 when the
+    /// optimizer is not driving).
+    #[func]
+    fn get_planning_ms(&self) -> f64 {
+        self.current_plan().map_or(0.0, |p| p.planning_ms)
+    }
+
+    /// Total cost of the best trajectory of the last plan taken over.
+    #[func]
+    fn get_best_cost(&self) -> f64 {
+        self.current_plan().map_or(0.0, |p| p.best_cost)
+    }
+
+    /// Resampling steps in the last plan taken over.
+    #[func]
+    fn get_resample_count(&self) -> i64 {
+        self.current_plan().map_or(0, |p| p.resamples as i64)
+    }
+
+    /// Hand-over statistics of the planning thread: `last_wait_ms`, `mean_wait_ms`,
+    /// `max_wait_ms` (the game thread's waits at control-step boundaries), `boundaries`
+    /// and `late` (boundaries with no plan for their step).
+    #[func]
+    fn get_handover_stats(&self) -> Dictionary<Variant, Variant> {
+        let mut d: Dictionary<Variant, Variant> = Dictionary::new();
+        let stats = self
+            .ride
+            .as_ref()
+            .and_then(Ride::handover)
+            .unwrap_or_default();
+        d.set(
+            &"last_wait_ms".to_variant(),
+            &stats.last_wait_ms.to_variant(),
+        );
+        d.set(
+            &"mean_wait_ms".to_variant(),
+            &stats.mean_wait_ms().to_variant(),
+        );
+        d.set(&"max_wait_ms".to_variant(), &stats.max_wait_ms.to_variant());
+        d.set(
+            &"boundaries".to_variant(),
+            &(stats.boundaries as i64).to_variant(),
+        );
+        d.set(&"late".to_variant(), &(stats.late as i64).to_variant());
+        d
+    }
+
+    /// The last plan's trajectories as centre-of-mass paths (one point per planning
+    /// step), for drawing: `get_best_trajectory` and `get_warm_trajectory` index it.
+    #[func]
+    fn get_trajectory_paths(&self) -> Array<PackedVector3Array> {
+        let mut paths = Array::new();
+        for path in self.current_plan().map_or(&[][..], |p| &p.paths[..]) {
+            let points: PackedVector3Array = path.iter().map(|p| vector3(*p)).collect();
+            paths.push(&points);
+        }
+        paths
+    }
+
+    /// Index of the best trajectory in `get_trajectory_paths` (−1 without a plan).
+    #[func]
+    fn get_best_trajectory(&self) -> i64 {
+        self.current_plan().map_or(-1, |p| p.best as i64)
+    }
+
+    /// Index of the refined (optimizer) or arcade (combined) trajectory, −1 if none.
+    #[func]
+    fn get_warm_trajectory(&self) -> i64 {
+        self.current_plan()
+            .and_then(|p| p.warm)
+            .map_or(-1, |w| w as i64)
+    }
+
+    /// True while the bike stands waiting for the first throttle (`wait_for_throttle`).
+    #[func]
+    fn is_waiting_for_throttle(&self) -> bool {
+        self.ride
+            .as_ref()
+            .is_some_and(Ride::is_waiting_for_throttle)
+    }
+
+    /// True once the simulation runs (the terrain was read and the bike built).
+    #[func]
+    fn is_running(&self) -> bool {
+        self.ride.is_some()
+    }
+
+    /// Forward speed in m/s.
+    #[func]
+    fn get_speed(&self) -> f64 {
+        self.sim()
+            .map_or(0.0, |s| s.bike().forward_speed(s.world(), s.up()))
+    }
+
+    /// Lean angle in radians, positive to the right.
+    #[func]
+    fn get_lean(&self) -> f64 {
+        self.sim().map_or(0.0, |s| s.bike().lean(s.world(), s.up()))
+    }
+
+    /// Steering angle in radians, positive to the left.
+    #[func]
+    fn get_steering_angle(&self) -> f64 {
+        self.sim().map_or(0.0, |s| s.bike().steering(s.world()).0)
+    }
+
+    #[func]
+    fn is_rear_wheel_grounded(&self) -> bool {
+        self.sim()
+            .is_some_and(|s| s.bike().wheel_contacts(s.world()).0)
+    }
+
+    #[func]
+    fn is_front_wheel_grounded(&self) -> bool {
+        self.sim()
+            .is_some_and(|s| s.bike().wheel_contacts(s.world()).1)
+    }
+
+    /// True after a crash, until the next reset or lift.
+    #[func]
+    fn is_crashed(&self) -> bool {
+        self.sim().is_some_and(|s| s.crashed().is_some())
+    }
+
+    /// Centre of mass of bike and rider.
+    #[func]
+    fn get_center_of_mass(&self) -> Vector3 {
+        self.sim().map_or(Vector3::ZERO, |s| {
+            vector3(s.bike().center_of_mass(s.world()))
+        })
+    }
+
+    /// Number of rigid bodies (9).
+    #[func]
+    fn get_body_count(&self) -> i64 {
+        Part::ALL.len() as i64
+    }
+
+    /// Name of body `index` (`rear_wheel`, `frame`, `torso`, …).
+    #[func]
+    fn get_body_name(&self, index: i64) -> GString {
+        part(index).map_or(GString::new(), |p| GString::from(p.name()))
+    }
+
+    /// Global transform of body `index`, interpolated between the last two steps.
+    #[func]
+    fn get_body_transform(&self, index: i64) -> Transform3D {
+        let (Some(sim), Some(part)) = (self.sim(), part(index)) else {
+            return Transform3D::IDENTITY;
+        };
+        let now = pose_of(sim, part);
+        let (before_position, before_rotation) = self
+            .previous_poses
+            .get(part as usize)
+            .copied()
+            .unwrap_or(now);
+        let alpha = (self.accumulator / sim.config().control_dt).clamp(0.0, 1.0);
+        transform(
+            before_position.lerp(now.0, alpha),
+            before_rotation.slerp(now.1, alpha),
+        )
+    }
+
+    /// The collision shapes, for drawing the physical model: one Dictionary per shape with
+    /// `body` (index), `kind` ("sphere", "box", "capsule"), `radius`, `length` (capsule,
+    /// without caps, along local z), `size` (box) and `offset` (Transform3D in the body).
+    #[func]
+    fn get_shapes(&self) -> Array<Dictionary<Variant, Variant>> {
+        let mut shapes = Array::new();
+        let Some(sim) = self.sim() else { return shapes };
+        for s in sim.bike().shapes() {
+            let mut d: Dictionary<Variant, Variant> = Dictionary::new();
+            d.set(&"body".to_variant(), &(s.part as i64).to_variant());
+            d.set(
+                &"offset".to_variant(),
+                &Transform3D::new(basis(s.rotation), vector3(s.offset)).to_variant(),
+            );
+            match s.shape {
+                Shape::Sphere { radius } => {
+                    d.set(&"kind".to_variant(), &"sphere".to_variant());
+                    d.set(&"radius".to_variant(), &radius.to_variant());
+                }
+                Shape::Cuboid { size } => {
+                    d.set(&"kind".to_variant(), &"box".to_variant());
+                    d.set(&"size".to_variant(), &vector3(size).to_variant());
+                }
+                Shape::Capsule { radius, length } => {
+                    d.set(&"kind".to_variant(), &"capsule".to_variant());
+                    d.set(&"radius".to_variant(), &radius.to_variant());
+                    d.set(&"length".to_variant(), &length.to_variant());
+                }
+            }
+            shapes.push(&d);
+        }
+        shapes
+    }
+}
+
+fn part(index: i64) -> Option<Part> {
+    usize::try_from(index)
+        .ok()
+        .and_then(|i| Part::ALL.get(i).copied())
+}
+
+/// Where body `part` is now: position and rotation.
+pub(crate) fn pose_of(sim: &Simulation, part: Part) -> (DVec3, DQuat) {
+    let body = sim.bike().body(part);
+    (
+        DVec3::from_array(sim.world().body_position(body)),
+        from_quat(sim.world().body_quaternion(body)),
+    )
+}
