@@ -6,7 +6,11 @@
 source "$(dirname "$0")/common.sh"
 lock_cache
 
+# `ode-current` names the build this checkout wants, so a plain `cargo build` in native/
+# (rust-analyzer, a newcomer) finds ODE without the Makefile exporting ODE_PREFIX.
+point_current_at_prefix() { ln -sfn "$(basename "$ODE_PREFIX")" "$CACHE_ROOT/ode-current"; }
 if [ -f "$ODE_PREFIX/.complete" ]; then
+  point_current_at_prefix
   exit 0
 fi
 
@@ -28,39 +32,20 @@ dsc=$(ls "$work"/src/ode_*.dsc | head -n1)
 version=$(sed -n 's/^Version: \([0-9]*:\)\{0,1\}\([0-9.]*\).*/\2/p' "$dsc")
 case "$version" in "$ODE_VERSION_WANTED"*) ;; *) die "expected ODE $ODE_VERSION_WANTED, the source package is $version";; esac
 
-# Two small patches make rollouts reproducible:
+# Three small patches (tools/ode-patches/, applied in order) make rollouts reproducible:
 # 1. QuickStep reorders constraint rows with dRandInt, whose seed is one process-wide
-#    atomic; worlds stepped on different threads would perturb each other's order. A
-#    thread-local seed lets each rollout save and restore its own (World snapshots do).
+#    atomic; worlds stepped on different threads would perturb each other's order. With a
+#    thread-local seed every World carries its own sequence and swaps it in for its steps.
 # 2. dBodySetQuaternion renormalises, so a restored body would differ from the original in
 #    the last bits; dBodySetQuaternionExact restores the stored quaternion as it is.
 # 3. An Euler-mode angular motor caches its angles during a step and dJointSetAMotorAngle
 #    ignores them outside user mode; a restored world would report stale angles until its
 #    next step. The setter now also restores the cache in Euler mode.
-misc="$work/src/ode/ode/src/misc.cpp"
-sed -i 's/^static volatile duint32 seed = 0;$/static thread_local volatile duint32 seed = 0;/' "$misc"
-grep -q '^static thread_local volatile duint32 seed = 0;$' "$misc" || die "could not patch ODE's random seed"
-cat >>"$work/src/ode/ode/src/ode.cpp" <<'CPP'
-
-// Counter-Steer: set a body's quaternion exactly as given (no renormalisation), for
-// bit-exact snapshot restore.
-extern "C" void dBodySetQuaternionExact (dBodyID b, const dQuaternion q)
-{
-    dAASSERT (b && q);
-    b->q[0] = q[0];
-    b->q[1] = q[1];
-    b->q[2] = q[2];
-    b->q[3] = q[3];
-    dQtoR (b->q, b->posr.R);
-    for (dxGeom *geom = b->geom; geom; geom = dGeomGetBodyNext (geom))
-        dGeomMoved (geom);
-}
-CPP
-
-amotor="$work/src/ode/ode/src/joints/amotor.cpp"
-sed -i -e 's|^    dAASSERT(m_mode == dAMotorUser); // This only works for the dAMotorUser$||' \
-       -e 's|^    if (m_mode == dAMotorUser)$|    if (m_mode == dAMotorUser \|\| m_mode == dAMotorEuler)|' "$amotor"
-grep -q '^    if (m_mode == dAMotorUser || m_mode == dAMotorEuler)$' "$amotor" || die "could not patch ODE's angular motor"
+# The ODE cache's key (common.sh) covers this script and the patches.
+for patch in "$PROJECT_ROOT"/tools/ode-patches/*.patch; do
+  (cd "$work/src/ode" && patch -p1 --forward --quiet) <"$patch" \
+    || die "could not apply $(basename "$patch") to ODE $version"
+done
 
 log "building ODE $version (static, PIC, double, OU)"
 cmake -S "$work/src/ode" -B "$work/build" -G "Unix Makefiles" \
@@ -75,5 +60,6 @@ rm -rf "$ODE_PREFIX.partial"
 cmake --install "$work/build" >/dev/null
 touch "$ODE_PREFIX.partial/.complete"
 rm -rf "$ODE_PREFIX"; mv "$ODE_PREFIX.partial" "$ODE_PREFIX"
+point_current_at_prefix
 rm -rf "$work"
 log "ODE ready in $ODE_PREFIX"

@@ -15,8 +15,9 @@ GODOT_ROOT_KEY="$(printf '%s' "sid:$GODOT_ROOT_PACKAGES" | sha256sum | cut -c1-1
 GODOT_ROOT="$CACHE_ROOT/godot-root-$GODOT_ROOT_KEY"
 
 ODE_VERSION_WANTED="0.16"
-# Keyed by the build recipe, so changing tools/build-ode.sh rebuilds ODE.
-ODE_RECIPE_KEY="$(sha256sum "$PROJECT_ROOT/tools/build-ode.sh" | cut -c1-12)"
+# Keyed by the build recipe, so changing tools/build-ode.sh or a patch rebuilds ODE.
+ODE_RECIPE_KEY="$(cat "$PROJECT_ROOT/tools/build-ode.sh" "$PROJECT_ROOT"/tools/ode-patches/*.patch \
+  | sha256sum | cut -c1-12)"
 ODE_PREFIX="$CACHE_ROOT/ode-$ODE_VERSION_WANTED-$ODE_RECIPE_KEY"
 
 # Serialises provisioning: two setups at once (say `make test` and `make play` in two

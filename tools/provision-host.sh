@@ -4,7 +4,7 @@
 # screenshots, patchelf for the export check) and the Rust components clippy and rustfmt.
 source "$(dirname "$0")/common.sh"
 
-HOST_PACKAGES=(debootstrap cmake dpkg-dev libclang-dev clang xvfb xauth patchelf ca-certificates)
+HOST_PACKAGES=(debootstrap cmake dpkg-dev patch libclang-dev clang xvfb xauth patchelf ca-certificates)
 missing=()
 for package in "${HOST_PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

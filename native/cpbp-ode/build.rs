@@ -5,15 +5,18 @@ use std::env;
 use std::path::PathBuf;
 
 fn main() {
-    println!("cargo:rerun-if-env-changed=ODE_PREFIX");
+    for variable in [
+        "ODE_PREFIX",
+        "COUNTER_STEER_CACHE",
+        "XDG_CACHE_HOME",
+        "HOME",
+    ] {
+        println!("cargo:rerun-if-env-changed={variable}");
+    }
     println!("cargo:rerun-if-changed=wrapper.h");
-    let prefix = PathBuf::from(env::var("ODE_PREFIX").unwrap_or_else(|_| {
-        panic!(
-            "ODE_PREFIX is not set. Build through the Makefile (`make build`), which builds ODE \
-             with tools/build-ode.sh and exports ODE_PREFIX, or set it to an ODE 0.16 install \
-             built with -DODE_DOUBLE_PRECISION=ON -DODE_WITH_OU=ON and PIC."
-        )
-    }));
+    let prefix = env::var("ODE_PREFIX")
+        .map(PathBuf::from)
+        .unwrap_or_else(|_| cached_build());
     let lib_dir = prefix.join("lib");
     let include_dir = prefix.join("include");
     assert!(
@@ -47,4 +50,23 @@ fn main() {
     bindings
         .write_to_file(out)
         .expect("could not write ODE bindings");
+}
+
+/// The ODE that tools/build-ode.sh built last for this checkout, through the cache's
+/// `ode-current` link, for builds started without the Makefile (which sets ODE_PREFIX).
+fn cached_build() -> PathBuf {
+    let cache = env::var("COUNTER_STEER_CACHE")
+        .map(PathBuf::from)
+        .or_else(|_| env::var("XDG_CACHE_HOME").map(|x| PathBuf::from(x).join("counter-steer")))
+        .or_else(|_| env::var("HOME").map(|h| PathBuf::from(h).join(".cache/counter-steer")))
+        .unwrap_or_default();
+    let current = cache.join("ode-current");
+    assert!(
+        current.join("lib/libode.a").exists(),
+        "no ODE build at {} and ODE_PREFIX is not set: run `make build` (or tools/build-ode.sh) \
+         once, or set ODE_PREFIX to an ODE 0.16 install built with -DODE_DOUBLE_PRECISION=ON \
+         -DODE_WITH_OU=ON and PIC",
+        current.display()
+    );
+    current
 }

@@ -347,11 +347,6 @@ impl Bike {
         (contact(Part::RearWheel) + contact(Part::FrontWheel)) / 2.0
     }
 
-    /// Unit heading, for controllers: the frame's forward axis flattened onto the ground.
-    pub fn heading_of(&self, world: &World, up: DVec3) -> DVec3 {
-        self.heading(world, up)
-    }
-
     /// Whether the rear and front wheels touched the ground in the last step.
     pub fn wheel_contacts(&self, world: &World) -> (bool, bool) {
         (
@@ -395,7 +390,7 @@ impl Bike {
     }
 
     /// Unit heading: the frame's forward axis flattened onto the ground plane.
-    fn heading(&self, world: &World, up: DVec3) -> DVec3 {
+    pub fn heading(&self, world: &World, up: DVec3) -> DVec3 {
         let forward = self.frame_rotation(world) * DVec3::X;
         (forward - up * forward.dot(up)).normalize_or(forward)
     }

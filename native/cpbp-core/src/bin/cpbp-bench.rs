@@ -5,10 +5,9 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use cpbp_core::bike::{Controls, DriveInput, Placement};
-use cpbp_core::control::{
-    AnytimeOptimizer, BikeOptimizer, OptimizerConfig, OptimizerMode, PlanWait,
-};
+use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode, PlanWait};
 use cpbp_core::ode::{Mass, World};
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
 use glam::{DQuat, DVec3};
@@ -134,36 +133,34 @@ fn planning_ms(sim: &Simulation, n: usize, threads: usize, rollout_substeps: usi
 /// Rides 6 s in real time with the planner on its own thread, waiting at most 10 ms at a
 /// boundary: (mean planning ms, mean wait ms, max wait ms, share of late boundaries).
 fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
-    let mut sim = rolling_bike(terrain.clone());
-    let config = OptimizerConfig {
-        mode: OptimizerMode::Combined,
-        particles: n,
-        ..OptimizerConfig::default()
-    };
-    let drive = DriveInput {
-        throttle: 1.0,
-        brake: 0.0,
-        max_speed: 15.0 / 3.6,
-    };
-    let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::AtMost(Duration::from_millis(10)));
+    // The game's ride: the combined controller behind the one controller interface.
+    let mut ride = Ride::new(rolling_bike(terrain.clone()), ControllerKind::Combined);
+    ride.planner.optimizer.particles = n;
+    ride.planner.wait = PlanWait::AtMost(Duration::from_millis(10));
+    ride.set_intent(Intent {
+        drive: DriveInput {
+            throttle: 1.0,
+            brake: 0.0,
+            max_speed: 15.0 / 3.6,
+        },
+        ..Intent::default()
+    });
     let period = Duration::from_secs_f64(1.0 / 30.0);
     let mut boundary = Instant::now();
     let (mut planning, mut plans, mut last_plan_step) = (0.0, 0, None);
     for _ in 0..180 {
-        let controls = anytime.controls(&sim, 0.0, &drive, &config);
-        if let Some(plan) = anytime.plan() {
+        ride.step();
+        if let Some(plan) = ride.plan() {
             if last_plan_step != Some(plan.step) {
                 last_plan_step = Some(plan.step);
                 planning += plan.planning_ms;
                 plans += 1;
             }
         }
-        sim.set_controls(controls);
-        sim.step();
         boundary += period;
         std::thread::sleep(boundary.saturating_duration_since(Instant::now()));
     }
-    let stats = anytime.stats;
+    let stats = ride.handover().unwrap_or_default();
     (
         planning / plans.max(1) as f64,
         stats.mean_wait_ms(),

@@ -7,7 +7,6 @@
 
 use glam::DVec3;
 
-use super::lean::TurnIntent;
 use crate::bike::{index, Bike, Controls, DriveInput, POSE_GAIN};
 use crate::ode::World;
 
@@ -125,11 +124,6 @@ impl ArcadeController {
         controls.set(index::STEER, steer_rate);
         controls
     }
-}
-
-/// Lean the arcade controller aims for, from the player's stick and the current speed.
-pub fn desired_lean_from_stick(intent: &TurnIntent, stick: f64, speed: f64) -> f64 {
-    intent.lean_for(stick, speed, 9.81)
 }
 
 #[cfg(test)]

@@ -87,7 +87,7 @@ impl RolloutSystem for BikeRollout {
                 crash = CRASH_COST;
             }
         }
-        let heading = self.bike.heading_of(&self.world, self.up);
+        let heading = self.bike.heading(&self.world, self.up);
         let desired = desired_lean_vector(heading, self.up, self.goal.lean);
         let current = current_lean_vector(
             self.bike.center_of_mass(&self.world),

@@ -8,7 +8,7 @@ mod lean;
 mod optimizer;
 
 pub use anytime::{AnytimeOptimizer, HandoverStats, Plan, PlanWait};
-pub use arcade::{desired_lean_from_stick, eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
+pub use arcade::{eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
 pub use bike_rollout::{bike_priors, BikeRollout, LeanGoal};
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
