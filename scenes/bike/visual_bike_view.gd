@@ -7,14 +7,14 @@ extends Node3D
 ## the tank. Every piece is authored in the bike's frame at rest (x forward, y up,
 ## z right, origin on the ground between the wheels) and then rides on its body.
 
-const WHEELS: Array[int] = [0, 1]
-const FORK := 2
-const FRAME := 3
-const LOWER_LEG := 4
-const UPPER_LEG := 5
-const TORSO := 6
-const UPPER_ARM := 7
-const LOWER_ARM := 8
+const WHEELS: Array[int] = [BikeSimulation.REAR_WHEEL, BikeSimulation.FRONT_WHEEL]
+const FORK := BikeSimulation.FORK
+const FRAME := BikeSimulation.FRAME
+const LOWER_LEG := BikeSimulation.LOWER_LEG
+const UPPER_LEG := BikeSimulation.UPPER_LEG
+const TORSO := BikeSimulation.TORSO
+const UPPER_ARM := BikeSimulation.UPPER_ARM
+const LOWER_ARM := BikeSimulation.LOWER_ARM
 ## Directions in the bike frame.
 const BIKE_FORWARD := Vector3(1, 0, 0)
 const BIKE_DOWN := Vector3(0, -1, 0)
@@ -88,7 +88,7 @@ func _build_wheels() -> void:
 			spoke.size = Vector3(0.02, 0.2, 0.035)
 			var radial := _rest.basis.y.rotated(axle, TAU * i / 5.0)
 			_add(body, spoke, "rim", Transform3D(_basis_with_y(radial, axle), hub + radial * 0.1))
-		if body == 0:
+		if body == BikeSimulation.REAR_WHEEL:
 			var disc := CylinderMesh.new()
 			disc.top_radius = 0.12
 			disc.bottom_radius = 0.12

@@ -37,7 +37,7 @@ func _process(delta: float) -> void:
 		return
 	_orbit_from_stick(delta)
 	var centre := target.get_center_of_mass()
-	var frame := target.get_body_transform(3)
+	var frame := target.get_body_transform(BikeSimulation.FRAME)
 	# The frame's forward (−z of the bike's node frame is +x of its body frame).
 	var forward := frame.basis.x
 	forward.y = 0.0

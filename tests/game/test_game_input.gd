@@ -151,7 +151,7 @@ func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
 
 
 func _frame_heading() -> Vector3:
-	var forward := _game.bike.get_body_transform(3).basis.x
+	var forward := _game.bike.get_body_transform(BikeSimulation.FRAME).basis.x
 	return Vector3(forward.x, 0.0, forward.z).normalized()
 
 

@@ -45,7 +45,9 @@ func test_throttle_drives_forward_and_reset_returns_to_the_spawn() -> void:
 	assert_lt(_bike.get_center_of_mass().z, -1.0, "moved along −z, the way it faces")
 	_bike.reset_to(spawn)
 	assert_almost_eq(_bike.get_speed(), 0.0, 1e-6)
-	assert_almost_eq(_bike.get_body_transform(3).origin, Vector3(0, 0.57, 0.05), 0.01)
+	assert_almost_eq(
+		_bike.get_body_transform(BikeSimulation.FRAME).origin, Vector3(0, 0.57, 0.05), 0.01
+	)
 
 
 func test_pausing_the_tree_pauses_the_simulation() -> void:

@@ -114,7 +114,9 @@ func test_a_rebuilt_level_takes_effect_without_losing_the_ride() -> void:
 	(_level.get_node("Floor") as Node3D).position.y = -1.5
 	assert_true(bike.rebuild_terrain())
 	await wait_physics_frames(SETTLE_TICKS)
-	assert_almost_eq(bike.get_body_transform(0).origin.y, -1.0 + WHEEL_RADIUS, 0.02)
+	assert_almost_eq(
+		bike.get_body_transform(BikeSimulation.REAR_WHEEL).origin.y, -1.0 + WHEEL_RADIUS, 0.02
+	)
 
 
 func _assert_rests_on(shape: Shape3D, where: Transform3D) -> void:
@@ -122,7 +124,7 @@ func _assert_rests_on(shape: Shape3D, where: Transform3D) -> void:
 	var bike := await _add_bike(Vector3(0, TOP + 0.03, 0))
 	assert_true(bike.is_running(), "the simulation started")
 	await wait_physics_frames(SETTLE_TICKS)
-	for body: int in [0, 1]:
+	for body: int in [BikeSimulation.REAR_WHEEL, BikeSimulation.FRONT_WHEEL]:
 		var wheel_height := bike.get_body_transform(body).origin.y
 		assert_almost_eq(
 			wheel_height, TOP + WHEEL_RADIUS, 0.015, "%s centre" % bike.get_body_name(body)

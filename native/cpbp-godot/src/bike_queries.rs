@@ -13,6 +13,27 @@ use crate::convert::{basis, transform, vector3};
 
 #[godot_api(secondary)]
 impl BikeSimulation {
+    // The bodies, by index (`get_body_transform`, `get_shapes`' `body`): cpbp_core's
+    // `Part` order, the one definition.
+    #[constant]
+    const REAR_WHEEL: i64 = Part::RearWheel as i64;
+    #[constant]
+    const FRONT_WHEEL: i64 = Part::FrontWheel as i64;
+    #[constant]
+    const FORK: i64 = Part::Fork as i64;
+    #[constant]
+    const FRAME: i64 = Part::Frame as i64;
+    #[constant]
+    const LOWER_LEG: i64 = Part::LowerLeg as i64;
+    #[constant]
+    const UPPER_LEG: i64 = Part::UpperLeg as i64;
+    #[constant]
+    const TORSO: i64 = Part::Torso as i64;
+    #[constant]
+    const UPPER_ARM: i64 = Part::UpperArm as i64;
+    #[constant]
+    const LOWER_ARM: i64 = Part::LowerArm as i64;
+
     /// The controllers players pick, by name, in the order menus list them and the game
     /// cycles through them (the one list: `cpbp_core::ride::ControllerKind::ALL`).
     #[func]
