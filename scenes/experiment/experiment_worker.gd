@@ -65,6 +65,7 @@ func _build(args: ExperimentArgs) -> bool:
 	# Wait for every plan: no step uses a late plan, and a ride repeats exactly.
 	_bike.wait_for_every_plan = true
 	add_child(_bike)
+	_level.attach(_bike)
 	# Only TestRun drives the bike; nothing is drawn.
 	_bike.set_physics_process(false)
 	_bike.set_process(false)
@@ -117,8 +118,7 @@ func _measure_planning(args: ExperimentArgs) -> void:
 		_bike.trajectories = count
 		_bike.planner_seed = args.base_seed
 		_bike.reset_to(_level.spawn_points()[0].spawn_transform())
-		if _level.begin_attempt(_bike, args.base_seed):
-			_bike.rebuild_terrain()
+		_level.begin_attempt(_bike, args.base_seed)
 		var samples: Array[float] = []
 		for step in args.steps:
 			_bike.max_speed_kmh = args.speed

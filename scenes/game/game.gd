@@ -55,7 +55,9 @@ func _ready() -> void:
 	_driver.bike = bike
 	_camera.target = bike
 	_hud.bind(self)
-	_pause_menu.bind(self)
+	_pause_menu.restart_requested.connect(restart)
+	_pause_menu.quit_requested.connect(quit_to_menu)
+	level.attach(bike)
 	level.announced.connect(_hud.announce)
 	bike.crashed.connect(_on_crashed)
 	Settings.changed.connect(_apply_setting)
@@ -111,8 +113,7 @@ func restart() -> void:
 		return
 	_spawn_index = posmod(_spawn_index, spawns.size())
 	bike.reset_to(spawns[_spawn_index].spawn_transform())
-	if level.begin_attempt(bike, _attempt_seed):
-		bike.rebuild_terrain()
+	level.begin_attempt(bike, _attempt_seed)
 	_attempt_seed += 1
 	_finished_for = -1.0
 

@@ -8,6 +8,9 @@ extends Node3D
 
 ## Something worth telling the player (a lap time, a result), shown as a banner.
 signal announced(text: String)
+## The level's shapes changed (an attempt laid new bumps): whoever simulates on them reads
+## the terrain again (`BikeSimulation.rebuild_terrain`).
+signal terrain_changed
 
 ## Outcomes `judge` returns: still riding, reached the goal, crashed, out of time.
 const RIDING := ""
@@ -26,6 +29,13 @@ const FLOOR_Y := -20.0
 var elapsed := 0.0
 
 
+## Makes `bike` read the terrain again whenever this level's shapes change (once per
+## bike, however often it is called).
+func attach(bike: BikeSimulation) -> void:
+	if not terrain_changed.is_connected(bike.rebuild_terrain):
+		terrain_changed.connect(bike.rebuild_terrain)
+
+
 ## The level's spawn points, in tree order.
 func spawn_points() -> Array[SpawnPoint]:
 	var found: Array[SpawnPoint] = []
@@ -34,10 +44,9 @@ func spawn_points() -> Array[SpawnPoint]:
 
 
 ## Starts an attempt (the bike was just placed at a spawn point). `seed_value` varies what
-## a level randomises; returns true when the terrain changed and must be read again.
-func begin_attempt(_bike: BikeSimulation, _seed_value: int) -> bool:
+## a level randomises; a level whose shapes change emits `terrain_changed`.
+func begin_attempt(_bike: BikeSimulation, _seed_value: int) -> void:
 	elapsed = 0.0
-	return false
 
 
 ## Advances the level's clock by `delta` and says how the attempt stands: RIDING, GOAL,

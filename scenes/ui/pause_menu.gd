@@ -6,6 +6,10 @@ extends CanvasLayer
 ## the settings at once. Works with a gamepad alone (d-pad/stick to move, A to choose,
 ## B or Back to resume).
 
+## The player asked to start the attempt again, or to leave for the start menu.
+signal restart_requested
+signal quit_requested
+
 const CONTROLS := """Gamepad / keyboard
 RT / W, ↑        throttle
 LT / S, ↓        brake
@@ -19,7 +23,6 @@ LB RB / Q E      previous / next spawn point
 X / F            auto-accelerate
 Y / V            show trajectories"""
 
-var _game: Game
 var _syncing := false
 
 @onready var _resume: Button = %Resume
@@ -60,11 +63,6 @@ func _ready() -> void:
 	_auto_speed.item_selected.connect(
 		func(i: int) -> void: _save(Settings.AUTO_SPEEDS[i], &"auto_speed_kmh")
 	)
-
-
-## Connects the menu to the game it pauses.
-func bind(game: Game) -> void:
-	_game = game
 
 
 ## Pauses the game and shows the menu with the current settings.
@@ -118,11 +116,9 @@ func _update_labels() -> void:
 
 func _on_restart() -> void:
 	close()
-	if _game != null:
-		_game.restart()
+	restart_requested.emit()
 
 
 func _on_quit() -> void:
 	close()
-	if _game != null:
-		_game.quit_to_menu()
+	quit_requested.emit()

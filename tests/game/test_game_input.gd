@@ -108,6 +108,20 @@ func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
 	assert_eq(saved.get_value("game", "controller"), "arcade", "saved by name")
 
 
+func test_restart_in_the_pause_menu_starts_the_attempt_again() -> void:
+	Input.action_press(&"throttle")
+	await wait_physics_frames(30)
+	assert_gt(_game.bike.get_step_count(), 0)
+	await SimulatedInput.tap_action(&"pause")
+	var menu: PauseMenu = _game.get_node("PauseMenu")
+	var asked := [0]
+	menu.restart_requested.connect(func() -> void: asked[0] += 1)
+	menu.get_node("%Restart").pressed.emit()
+	assert_eq(asked[0], 1, "the menu asks, the game restarts")
+	assert_false(get_tree().paused)
+	assert_eq(_game.bike.get_step_count(), 0, "the bike is back at the start")
+
+
 func test_auto_accelerate_holds_the_chosen_speed() -> void:
 	Settings.set_value(&"auto_speed_kmh", 10)
 	await SimulatedInput.tap_action(&"toggle_auto_accelerate")

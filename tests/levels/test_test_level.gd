@@ -13,9 +13,12 @@ func before_each() -> void:
 	_level = LEVEL.instantiate()
 	add_child(_level)
 	_bike = BIKE.instantiate()
-	_bike.terrain_root = ^"../TestLevel"
+	# By the name the level got: the last test's level may still be in the tree, freed only
+	# at the end of the frame, and hold the name "TestLevel".
+	_bike.terrain_root = NodePath("../%s" % _level.name)
 	_bike.transform = _level.spawn_points()[0].spawn_transform()
 	add_child(_bike)
+	_level.attach(_bike)
 	_bike.set_physics_process(false)
 	# Wait for every plan, so the run repeats exactly for its seeds.
 	_bike.wait_for_every_plan = true
@@ -59,13 +62,28 @@ func test_an_attempt_repeats_exactly_whatever_was_ridden_before() -> void:
 		_bike.trajectories = 5
 		_bike.planner_seed = 11
 		var first := TestRun.ride(_level, _bike, 5, 25.0)
-		TestRun.ride(_level, _bike, 6, 25.0)
+		var other := TestRun.ride(_level, _bike, 6, 25.0)
+		assert_ne(
+			[other.steps, other.distance],
+			[first.steps, first.distance],
+			"%s: other bumps, another ride (the bike read the new terrain)" % controller
+		)
 		_bike.planner_seed = 11
 		var again := TestRun.ride(_level, _bike, 5, 25.0)
 		# All but the planning time, which is the machine's.
 		for key: String in ["outcome", "time", "distance", "steps"]:
 			assert_eq(again[key], first[key], "%s: %s" % [controller, key])
 		assert_eq(first.late_plans, 0, "%s: every step had its plan" % controller)
+
+
+func test_a_new_attempt_tells_the_attached_bike_once() -> void:
+	var changes := [0]
+	_level.terrain_changed.connect(func() -> void: changes[0] += 1)
+	_level.attach(_bike)
+	_level.attach(_bike)
+	_level.begin_attempt(_bike, 3)
+	assert_eq(changes[0], 1, "one attempt, one change")
+	assert_eq(_level.terrain_changed.get_connections().size(), 2, "the bike once, and the counter")
 
 
 func test_an_attempt_without_a_rider_ends_in_a_fall_or_timeout() -> void:

@@ -45,7 +45,7 @@ func _ready() -> void:
 
 
 ## Replaces the bumps with the set for `seed`. The simulation reads the terrain when the
-## bike is built: call `BikeSimulation.rebuild_terrain()` after this.
+## bike is built: the level emits `terrain_changed` after this (`Level.attach`).
 func regenerate(seed_value: int) -> void:
 	_seed = seed_value
 	for child in get_children():

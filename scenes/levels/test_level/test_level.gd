@@ -15,11 +15,11 @@ var _start := Vector3.ZERO
 @onready var _goal: GoalArea = $Goal
 
 
-func begin_attempt(bike: BikeSimulation, seed_value: int) -> bool:
+func begin_attempt(bike: BikeSimulation, seed_value: int) -> void:
 	super(bike, seed_value)
 	_start = bike.get_center_of_mass()
 	_bumps.regenerate(seed_value)
-	return true
+	terrain_changed.emit()
 
 
 func judge(bike: BikeSimulation, delta: float) -> String:

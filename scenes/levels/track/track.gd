@@ -22,13 +22,12 @@ func _ready() -> void:
 			_gates.append(child)
 
 
-func begin_attempt(bike: BikeSimulation, seed_value: int) -> bool:
+func begin_attempt(bike: BikeSimulation, seed_value: int) -> void:
 	super(bike, seed_value)
 	_lap_started = false
 	_lap_time = 0.0
 	_next_checkpoint = 0
 	_previous_centre = bike.get_center_of_mass()
-	return false
 
 
 func judge(bike: BikeSimulation, delta: float) -> String:
