@@ -29,13 +29,11 @@ PLATFORMS = "platforms.json"
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     # verify checks only the configurations named; everything else rides them all.
-    args.chosen_configs = None
-    if args.speeds is not None or args.controllers is not None:
-        args.chosen_configs = True
+    named = args.speeds is not None or args.controllers is not None
     args.speeds = args.speeds or list(THESIS_SPEEDS)
     args.controllers = args.controllers or parse_controllers(",".join(THESIS_CONTROLLERS))
-    if args.chosen_configs:
-        args.chosen_configs = {Config(s, c) for s in args.speeds for c in args.controllers}
+    args.chosen_configs = ({Config(s, c) for s in args.speeds for c in args.controllers}
+                           if named else None)
     out = Path(args.out)
     try:
         if args.command in ("timing", "all") and (args.command == "timing" or
