@@ -1,7 +1,7 @@
 //! The C-PBP planner on a toy system with known dynamics: a point mass pushed towards a
 //! target along a line.
 
-use cpbp_core::control::cpbp::{Planner, PlannerConfig, Priors, RolloutSystem};
+use cpbp_core::control::cpbp::{Planner, PlannerConfig, Priors, RolloutSystem, WarmStart};
 
 const DT: f64 = 0.1;
 const TARGET: f64 = 1.0;
@@ -76,7 +76,7 @@ fn ride_tracking(
     let mut systems = vec![master; 16];
     let (mut applied, mut blowups, mut positions) = (Vec::new(), 0, Vec::new());
     for _ in 0..frames {
-        let result = planner.plan(&mut systems, &master.save(), None);
+        let result = planner.plan(&mut systems, &master.save(), WarmStart::Refinement);
         assert!(
             result.control[0] >= -4.0 && result.control[0] <= 4.0,
             "out of bounds: {:?}",
@@ -147,8 +147,69 @@ fn the_warm_start_particle_replays_its_sequence() {
         16
     ];
     let warm: Vec<f64> = (0..20).map(|k| if k < 5 { 2.0 } else { -0.5 }).collect();
-    let result = planner.plan(&mut systems, &(0.0, 0.0), Some(&warm));
+    let result = planner.plan(&mut systems, &(0.0, 0.0), WarmStart::Sequence(&warm));
     assert_eq!(result.sequences[1], warm);
+}
+
+/// The point mass under a controller of its own: a PD towards the target.
+#[derive(Clone, Copy, Debug, Default)]
+struct SteeredMass(PointMass);
+
+impl RolloutSystem for SteeredMass {
+    type State = (f64, f64);
+
+    fn save(&self) -> (f64, f64) {
+        self.0.save()
+    }
+
+    fn restore(&mut self, state: &(f64, f64)) {
+        self.0.restore(state)
+    }
+
+    fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
+        self.0.step(u, step)
+    }
+
+    fn policy(&mut self, _step: usize) -> Option<Vec<f64>> {
+        Some(vec![
+            (2.0 * (TARGET - self.0.x) - 1.5 * self.0.v).clamp(-3.0, 3.0)
+        ])
+    }
+}
+
+#[test]
+fn each_warm_start_route_decides_what_particle_1_replays() {
+    let free = PointMass {
+        explodes_beyond: f64::INFINITY,
+        ..PointMass::default()
+    };
+    // The policy route: particle 1 follows the system's controller step by step.
+    let mut systems = vec![SteeredMass(free); 16];
+    let result = planner(4).plan(&mut systems, &(0.0, 0.0), WarmStart::Policy);
+    let mut replay = SteeredMass(free);
+    let expected: Vec<f64> = (0..20)
+        .flat_map(|k| {
+            let u = replay.policy(k).unwrap();
+            replay.step(&u, k);
+            u
+        })
+        .collect();
+    assert!(result.warm_started);
+    assert_eq!(result.sequences[1], expected);
+    // A sequence of the wrong length, or none: particle 1 samples like the others.
+    let mut systems = vec![free; 16];
+    for warm in [WarmStart::Sequence(&[1.0; 7]), WarmStart::Nothing] {
+        let result = planner(4).plan(&mut systems, &(0.0, 0.0), warm);
+        assert!(!result.warm_started, "{warm:?}");
+    }
+    // The refinement route replays nothing while there is no refinement (a system
+    // without features never has one).
+    let mut planner = planner(4);
+    let first = planner.plan(&mut systems, &(0.0, 0.0), WarmStart::Refinement);
+    assert!(
+        !first.warm_started && first.refined.is_none(),
+        "no features, no refinement"
+    );
 }
 
 /// The point mass again, remembering the control it was given at the first planning step.
@@ -179,7 +240,7 @@ impl RolloutSystem for FirstStepRecorder {
 fn resampling_keeps_the_low_cost_lineages() {
     let mut planner = planner(5);
     let mut systems = vec![FirstStepRecorder::default(); 16];
-    let result = planner.plan(&mut systems, &(), None);
+    let result = planner.plan(&mut systems, &(), WarmStart::Refinement);
     let sampled: Vec<f64> = systems.iter().map(|s| s.first).collect();
     let survived: Vec<f64> = result.sequences.iter().map(|s| s[0]).collect();
     assert!(
@@ -231,7 +292,7 @@ fn the_refinement_stays_in_bounds_and_is_replayed_by_particle_1_next_frame() {
         ..PointMass::default()
     };
     let mut systems = vec![ObservedPointMass(mass); 16];
-    let first = planner.plan(&mut systems, &(0.0, 0.0), None);
+    let first = planner.plan(&mut systems, &(0.0, 0.0), WarmStart::Refinement);
     let refined = first.refined.expect("a system with features is refined");
     assert_eq!(refined.len(), 20);
     assert!(
@@ -240,7 +301,7 @@ fn the_refinement_stays_in_bounds_and_is_replayed_by_particle_1_next_frame() {
     );
     // It heads for the target like the particles did: push forward first.
     assert!(refined[0] > 0.0, "{refined:?}");
-    let second = planner.plan(&mut systems, &(0.0, 0.0), None);
+    let second = planner.plan(&mut systems, &(0.0, 0.0), WarmStart::Refinement);
     let mut shifted = refined.clone();
     cpbp_core::control::cpbp::shift_one_step(&mut shifted, 1);
     assert_eq!(second.sequences[1], shifted);
@@ -257,7 +318,7 @@ fn a_single_trajectory_still_plans_even_with_a_warm_start() {
     let mut systems = vec![mass; 1];
     let warm = vec![1.0; 20];
     for _ in 0..3 {
-        let result = planner.plan(&mut systems, &(0.0, 0.0), Some(&warm));
+        let result = planner.plan(&mut systems, &(0.0, 0.0), WarmStart::Sequence(&warm));
         assert_eq!(result.sequences.len(), 1);
         assert!(!result.warm_started);
         assert!(result.best_cost.is_finite());

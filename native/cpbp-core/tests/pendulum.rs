@@ -2,7 +2,7 @@
 //! unstable system with real contacts-free rigid-body dynamics, cloned worlds and motors.
 
 use cpbp_core::bike::to_quat;
-use cpbp_core::control::cpbp::{Planner, PlannerConfig, Priors, RolloutSystem};
+use cpbp_core::control::cpbp::{Planner, PlannerConfig, Priors, RolloutSystem, WarmStart};
 use cpbp_core::ode::{JointId, Mass, World, WorldState};
 use glam::DQuat;
 
@@ -92,7 +92,7 @@ fn the_planner_brings_it_upright_and_keeps_it_there() {
     let mut planner = planner();
     let mut tilts = Vec::new();
     for _ in 0..150 {
-        let result = planner.plan(&mut systems, &master.save(), None);
+        let result = planner.plan(&mut systems, &master.save(), WarmStart::Refinement);
         let refined = result.refined.as_ref().expect("features given");
         assert!(refined.iter().all(|u| (-4.0..=4.0).contains(u)));
         master.advance(result.control[0]);

@@ -4,7 +4,7 @@
 
 use super::arcade::ArcadeController;
 use super::bike_rollout::{bike_priors, BikeRollout, LeanGoal};
-use super::cpbp::{PlanResult, Planner, PlannerConfig};
+use super::cpbp::{PlanResult, Planner, PlannerConfig, WarmStart};
 use crate::bike::{Controls, DriveInput};
 use crate::simulation::Simulation;
 
@@ -87,7 +87,6 @@ impl BikeOptimizer {
             seed: config.seed,
             threads: config.threads,
             refine: config.mode == OptimizerMode::Optimizer,
-            policy_warm_start: config.mode == OptimizerMode::Combined,
             control_cost_weight: config.control_cost_weight,
             ..PlannerConfig::default()
         };
@@ -157,7 +156,13 @@ impl BikeOptimizer {
         let dt = sim.config().control_dt;
         self.arcade
             .controls(sim.bike(), sim.world(), desired_lean, drive, sim.up(), dt);
-        let result = self.planner.plan(&mut self.rollouts, &start, None);
+        // Particle 1: combined mode follows the arcade controller live; the optimizer
+        // alone replays last frame's refinement.
+        let warm = match self.config.mode {
+            OptimizerMode::Combined => WarmStart::Policy,
+            OptimizerMode::Optimizer => WarmStart::Refinement,
+        };
+        let result = self.planner.plan(&mut self.rollouts, &start, warm);
         let controls = self.rollouts[0].controls_for(&result.control);
         self.last = Some(result);
         controls

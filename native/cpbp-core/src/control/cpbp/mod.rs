@@ -7,11 +7,16 @@
 //! It is generic over [`RolloutSystem`] so that it is tested exactly on toy systems; the
 //! bike is one such system.
 
+mod config;
+mod frame;
 mod planner;
 mod priors;
 mod refinement;
+mod rollout;
 mod sequences;
 
-pub use planner::{PlanResult, Planner, PlannerConfig, RolloutSystem};
+pub use config::{PlanResult, PlannerConfig, WarmStart};
+pub use planner::Planner;
 pub use priors::Priors;
-pub use sequences::{lineages, shift_one_step};
+pub use rollout::RolloutSystem;
+pub use sequences::shift_one_step;

@@ -1,0 +1,89 @@
+//! The planner's settings, what particle 1 replays, and what a frame returns.
+
+/// Sizes and tuning of the planner; defaults are the specification's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannerConfig {
+    /// N, the number of trajectories.
+    pub particles: usize,
+    /// K, the planning steps (horizon / step length).
+    pub steps: usize,
+    /// Share of particles that follow no previous sequence (explore from the priors).
+    pub uniform_bias: f64,
+    /// Resample when the effective sample size drops below this share of N.
+    pub resample_threshold: f64,
+    /// Cost given to a rollout whose simulation blew up.
+    pub blowup_cost: f64,
+    /// Seed of every random draw; the same seed and inputs give the same plan, whatever
+    /// the number of threads.
+    pub seed: u64,
+    /// Worker threads for the rollouts (0: one per core).
+    pub threads: usize,
+    /// Compute the local refinement (Gaussian back-propagation) each frame, for
+    /// [`WarmStart::Refinement`] to replay next frame.
+    pub refine: bool,
+    /// Ridge λ of the refinement's regression (absolute: features are unit-scaled).
+    pub ridge: f64,
+    /// Scale of the control (prior) cost in a trajectory's total. With many controlled
+    /// dimensions and one costed state feature, the prior terms can outweigh the state
+    /// cost that the choice of the best trajectory is about.
+    pub control_cost_weight: f64,
+}
+
+impl Default for PlannerConfig {
+    fn default() -> Self {
+        Self {
+            particles: 32,
+            steps: 36,
+            uniform_bias: 0.2,
+            resample_threshold: 0.5,
+            blowup_cost: 1e6,
+            seed: 2015,
+            threads: 0,
+            refine: true,
+            ridge: 1e-3,
+            control_cost_weight: 1.0,
+        }
+    }
+}
+
+/// What particle 1 replays exactly in a frame (particle 0 always replays the last best):
+/// the C-PBP paper's warm starts, one route per frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WarmStart<'a> {
+    /// Nothing: particle 1 samples like the others.
+    Nothing,
+    /// The caller's sequence (K·D values; another length is ignored).
+    Sequence(&'a [f64]),
+    /// Last frame's local refinement, shifted one step, once there is one.
+    Refinement,
+    /// The system's own controller, step by step (`RolloutSystem::policy`): the same
+    /// trajectory as replaying that controller's rollout, without simulating it first on
+    /// one thread while the others wait.
+    Policy,
+}
+
+/// What a frame found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlanResult {
+    /// The best trajectory's first control: apply it now.
+    pub control: Vec<f64>,
+    /// Total (state + control) cost of the best trajectory.
+    pub best_cost: f64,
+    /// Index of the best particle.
+    pub best: usize,
+    /// Each final particle's control sequence (K·D values) and total cost.
+    pub sequences: Vec<Vec<f64>>,
+    pub costs: Vec<f64>,
+    /// How many of the K steps resampled.
+    pub resamples: usize,
+    /// Rollouts that blew up (restored and given `blowup_cost`).
+    pub blowups: usize,
+    /// The refined sequence (K·D values, within bounds), when the system has features.
+    pub refined: Option<Vec<f64>>,
+    /// Each final particle's belief (weights of next frame's choice of sequences).
+    pub beliefs: Vec<f64>,
+    /// Each final particle's trace points, one per step, when the system gives them.
+    pub paths: Vec<Vec<[f64; 3]>>,
+    /// Whether particle 1 replayed a warm start.
+    pub warm_started: bool,
+}

@@ -1,0 +1,34 @@
+//! What the planner plans over: a system it can save, restore and step, one instance per
+//! particle.
+
+/// A simulated system the planner can branch: one instance per particle, all built alike.
+/// Instances are stepped on several threads at once, each by one thread at a time.
+pub trait RolloutSystem: Send {
+    /// Everything needed to put an instance back into a state (a world snapshot).
+    type State: Clone + Send + Sync;
+    fn save(&self) -> Self::State;
+    fn restore(&mut self, state: &Self::State);
+    /// Applies control `u` for planning step `step` and simulates it; returns the step's
+    /// state cost (squared, tolerance-scaled), or `None` when the simulation blew up.
+    fn step(&mut self, u: &[f64], step: usize) -> Option<f64>;
+    /// A prior that depends on the current state (the thesis's pose prior): per dimension
+    /// a mean and a standard deviation (infinite for dimensions it says nothing about).
+    fn client_prior(&self) -> Option<(Vec<f64>, Vec<f64>)> {
+        None
+    }
+    /// A few numbers describing the state, scaled to about unit size, that the local
+    /// refinement regresses controls on. None (the default): no refinement.
+    fn features(&self) -> Vec<f64> {
+        Vec::new()
+    }
+    /// The control the system's own controller would choose now (for the combined mode's
+    /// arcade controller), when it has one: particle 1 follows it live under
+    /// [`WarmStart::Policy`](super::WarmStart::Policy).
+    fn policy(&mut self, _step: usize) -> Option<Vec<f64>> {
+        None
+    }
+    /// A point to draw the trajectory through (the bike's centre of mass), if any.
+    fn trace_point(&self) -> Option<[f64; 3]> {
+        None
+    }
+}
