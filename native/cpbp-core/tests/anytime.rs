@@ -6,28 +6,7 @@ mod common;
 use std::time::Duration;
 
 use cpbp_core::control::{AnytimeOptimizer, OptimizerConfig, OptimizerMode, PlanWait};
-use cpbp_core::simulation::Simulation;
-
-fn combined(particles: usize) -> OptimizerConfig {
-    OptimizerConfig {
-        mode: OptimizerMode::Combined,
-        particles,
-        ..OptimizerConfig::default()
-    }
-}
-
-/// Rides `seconds` straight at `kmh`, handing plans over as `anytime.wait` says.
-fn ride(
-    sim: &mut Simulation,
-    anytime: &mut AnytimeOptimizer,
-    config: &OptimizerConfig,
-    seconds: f64,
-    kmh: f64,
-) {
-    let drive = common::auto_throttle(kmh);
-    let mut control = |sim: &Simulation, lean: f64| anytime.controls(sim, lean, &drive, config);
-    common::ride(sim, seconds, 0.0, &mut control);
-}
+use cpbp_core::ride::ControllerKind;
 
 #[test]
 #[cfg_attr(
@@ -35,14 +14,13 @@ fn ride(
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn waiting_for_each_plan_rides_like_planning_in_line() {
-    let mut sim = common::flat_ride();
-    let config = combined(15);
-    let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::EveryPlan);
-    ride(&mut sim, &mut anytime, &config, 20.0, 15.0);
-    assert_eq!(sim.crashed(), None);
+    let mut ride = common::ride_at(ControllerKind::Combined, 15.0, 15);
+    common::ride(&mut ride, 20.0, 0.0);
+    assert_eq!(ride.sim().crashed(), None);
     // Only the very first step has no plan (the arcade controller drives it).
-    assert_eq!(anytime.stats.late, 0, "{:?}", anytime.stats);
-    let plan = anytime.plan().expect("plans were taken over");
+    let handover = ride.handover().expect("a planner drove");
+    assert_eq!((handover.late, ride.late_plans()), (0, 0), "{handover:?}");
+    let plan = ride.plan().expect("plans were taken over");
     assert_eq!(plan.paths.len(), 15);
     assert!(plan.paths.iter().all(|p| p.len() == 36));
     assert!(plan.best < 15);
@@ -53,6 +31,7 @@ fn waiting_for_each_plan_rides_like_planning_in_line() {
     );
     // The best path starts where the bike is, give or take one step of riding.
     let start = plan.paths[plan.best][0];
+    let sim = ride.sim();
     let com = sim.bike().center_of_mass(sim.world());
     assert!(start.distance(com) < 0.5, "{start} vs {com}");
 }
@@ -65,12 +44,11 @@ fn waiting_for_each_plan_rides_like_planning_in_line() {
 fn a_planner_that_cannot_keep_up_never_stalls_the_game_or_drops_the_bike() {
     // Never waiting while the master runs far faster than real time: most boundaries
     // find no plan for their step and replay the last plan open loop or fall back.
-    let mut sim = common::flat_ride();
-    let config = combined(8);
-    let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::AtMost(Duration::ZERO));
-    ride(&mut sim, &mut anytime, &config, 10.0, 20.0);
-    assert_eq!(sim.crashed(), None);
-    assert!(anytime.stats.late > 0, "{:?}", anytime.stats);
+    let mut ride = common::ride_at(ControllerKind::Combined, 20.0, 8);
+    ride.planner.wait = PlanWait::AtMost(Duration::ZERO);
+    common::ride(&mut ride, 10.0, 0.0);
+    assert_eq!(ride.sim().crashed(), None);
+    assert!(ride.late_plans() > 0, "{:?}", ride.handover());
 }
 
 #[test]
@@ -79,14 +57,28 @@ fn a_planner_that_cannot_keep_up_never_stalls_the_game_or_drops_the_bike() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn plans_made_before_a_reset_are_never_applied_after_it() {
+    // The hand-over itself, below the ride: a reset drops plans already in flight.
     let mut sim = common::flat_ride();
-    let config = combined(5);
+    let config = OptimizerConfig {
+        mode: OptimizerMode::Combined,
+        particles: 5,
+        ..OptimizerConfig::default()
+    };
     let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::EveryPlan);
-    ride(&mut sim, &mut anytime, &config, 2.0, 15.0);
+    let drive = common::auto_throttle(15.0);
+    let ride =
+        |sim: &mut cpbp_core::simulation::Simulation, anytime: &mut AnytimeOptimizer, steps| {
+            for _ in 0..steps {
+                let controls = anytime.controls(sim, 0.0, &drive, &config);
+                sim.set_controls(controls);
+                sim.step();
+            }
+        };
+    ride(&mut sim, &mut anytime, 60);
     assert!(anytime.plan().is_some());
     anytime.reset();
     assert!(anytime.plan().is_none());
-    ride(&mut sim, &mut anytime, &config, 1.0, 15.0);
+    ride(&mut sim, &mut anytime, 30);
     assert!(anytime.plan().is_some(), "new plans arrive after the reset");
     assert_eq!(sim.crashed(), None);
 }

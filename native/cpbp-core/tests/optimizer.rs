@@ -3,28 +3,11 @@
 
 mod common;
 
-use cpbp_core::bike::Controls;
-use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode};
-use cpbp_core::simulation::Simulation;
+use cpbp_core::ride::{ControllerKind, Ride};
 
-/// A flat ride and the planner in `mode` at `kmh`, as a closure the scenarios drive.
-fn planner_at(
-    kmh: f64,
-    mode: OptimizerMode,
-) -> (Simulation, impl FnMut(&Simulation, f64) -> Controls) {
-    let sim = common::flat_ride();
-    let mut optimizer = BikeOptimizer::new(
-        &sim,
-        OptimizerConfig {
-            mode,
-            particles: 15,
-            ..OptimizerConfig::default()
-        },
-    );
-    let drive = common::auto_throttle(kmh);
-    (sim, move |sim: &Simulation, lean| {
-        optimizer.controls(sim, lean, &drive)
-    })
+/// A flat ride with the `kind` planner (N = 15) at `kmh`.
+fn planner_at(kmh: f64, kind: ControllerKind) -> Ride {
+    common::ride_at(kind, kmh, 15)
 }
 
 #[test]
@@ -34,8 +17,10 @@ fn planner_at(
 )]
 fn combined_rides_straight_at_10_15_20_and_25_kmh() {
     for kmh in [10.0, 15.0, 20.0, 25.0] {
-        let (mut sim, mut control) = planner_at(kmh, OptimizerMode::Combined);
-        common::assert_rides_straight_for_20_seconds(&mut sim, &mut control);
+        common::assert_rides_straight_for_20_seconds(&mut planner_at(
+            kmh,
+            ControllerKind::Combined,
+        ));
     }
 }
 
@@ -46,8 +31,10 @@ fn combined_rides_straight_at_10_15_20_and_25_kmh() {
 )]
 fn optimizer_rides_straight_at_10_15_20_and_25_kmh() {
     for kmh in [10.0, 15.0, 20.0, 25.0] {
-        let (mut sim, mut control) = planner_at(kmh, OptimizerMode::Optimizer);
-        common::assert_rides_straight_for_20_seconds(&mut sim, &mut control);
+        common::assert_rides_straight_for_20_seconds(&mut planner_at(
+            kmh,
+            ControllerKind::Optimizer,
+        ));
     }
 }
 
@@ -57,8 +44,8 @@ fn optimizer_rides_straight_at_10_15_20_and_25_kmh() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn combined_follows_a_15_degree_lean_within_3_degrees_rms() {
-    let (mut sim, mut control) = planner_at(20.0, OptimizerMode::Combined);
-    let rms = common::rms_lean_error_in_a_15_degree_turn(&mut sim, &mut control);
+    let rms =
+        common::rms_lean_error_in_a_15_degree_turn(&mut planner_at(20.0, ControllerKind::Combined));
     assert!(rms <= 3.0, "RMS lean error {rms:.2}°");
 }
 
@@ -68,8 +55,10 @@ fn combined_follows_a_15_degree_lean_within_3_degrees_rms() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn optimizer_alone_follows_a_15_degree_lean_within_4_degrees_rms() {
-    let (mut sim, mut control) = planner_at(20.0, OptimizerMode::Optimizer);
-    let rms = common::rms_lean_error_in_a_15_degree_turn(&mut sim, &mut control);
+    let rms = common::rms_lean_error_in_a_15_degree_turn(&mut planner_at(
+        20.0,
+        ControllerKind::Optimizer,
+    ));
     assert!(rms <= 4.0, "RMS lean error {rms:.2}°");
 }
 
@@ -79,8 +68,7 @@ fn optimizer_alone_follows_a_15_degree_lean_within_4_degrees_rms() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn counter_steering_emerges_in_combined_and_optimizer_modes() {
-    for mode in [OptimizerMode::Combined, OptimizerMode::Optimizer] {
-        let (mut sim, mut control) = planner_at(20.0, mode);
-        common::assert_counter_steers_into_a_right_turn(&mut sim, &mut control);
+    for kind in [ControllerKind::Combined, ControllerKind::Optimizer] {
+        common::assert_counter_steers_into_a_right_turn(&mut planner_at(20.0, kind));
     }
 }

@@ -129,3 +129,19 @@ fn a_planner_drives_with_plans_and_switching_forgets_them() {
     assert!(ride.plan().is_some());
     assert_eq!(ride.sim().crashed(), None);
 }
+
+#[test]
+fn a_lean_asked_for_directly_replaces_the_turn_and_is_held_to_the_limit() {
+    let mut ride = ride_with(ControllerKind::Arcade);
+    let ask = |ride: &mut Ride, lean: f64| {
+        ride.set_intent(Intent {
+            turn: -1.0,
+            lean: Some(lean),
+            ..*ride.intent()
+        });
+        ride.desired_lean()
+    };
+    assert_eq!(ask(&mut ride, 0.2), 0.2, "the lean wins over the turn");
+    assert_eq!(ask(&mut ride, 3.0), 30f64.to_radians(), "held to the limit");
+    assert_eq!(ask(&mut ride, f64::NAN), 0.0, "nonsense asks for nothing");
+}

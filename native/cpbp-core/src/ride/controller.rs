@@ -16,6 +16,9 @@ pub struct Intent {
     /// Turn command in [−1, 1], positive right: the path's curvature, from which the lean
     /// the controllers aim for follows with the speed (eq. 4.4).
     pub turn: f64,
+    /// A lean (rad, positive right) asked for directly instead of through `turn`: scripted
+    /// rides and tests ask for a lean, not a curvature. Held to the turn's lean limit.
+    pub lean: Option<f64>,
     /// Steering rate (rad/s, positive left) for the manual controller; 0 lets the bar
     /// spring back to centre.
     pub steer_rate: f64,

@@ -82,8 +82,17 @@ impl Ride {
         self.raw_controls = Some(controls);
     }
 
-    /// The lean (rad, positive right) the turn command asks for at the current speed.
+    /// The lean (rad, positive right) the player asks for: the one asked for directly, or
+    /// the turn command's at the current speed.
     pub fn desired_lean(&self) -> f64 {
+        if let Some(lean) = self.intent.lean {
+            let limit = self.turn.max_lean;
+            return if lean.is_finite() {
+                lean.clamp(-limit, limit)
+            } else {
+                0.0
+            };
+        }
         let s = &self.sim;
         let speed = s.bike().forward_speed(s.world(), s.up());
         self.turn

@@ -1,13 +1,15 @@
 //! Shared by the controller tests: a ride on flat ground, and the scenarios every
-//! controller is held to. A controller is passed in as a closure from the simulation and
-//! the desired lean to the controls for the next step.
+//! controller is held to. Every controller rides through the game's `Ride`, asked for a
+//! lean directly.
 
 // Each test crate uses its own subset of these helpers.
 #![allow(dead_code)]
 
 use std::sync::Arc;
 
-use cpbp_core::bike::{Controls, DriveInput, Placement};
+use cpbp_core::bike::{DriveInput, Placement};
+use cpbp_core::control::PlanWait;
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
 use glam::{DQuat, DVec3};
@@ -46,45 +48,62 @@ pub fn auto_throttle(kmh: f64) -> DriveInput {
     }
 }
 
-/// Rides `seconds` asking for `lean` (rad) each step.
-pub fn ride(
-    sim: &mut Simulation,
-    seconds: f64,
-    lean: f64,
-    control: &mut impl FnMut(&Simulation, f64) -> Controls,
-) {
+/// A `kind` ride on flat ground at full throttle towards `kmh`, asking for no lean. The
+/// planners plan with N trajectories and the ride waits for every plan, so a ride does
+/// not depend on how fast the machine is.
+pub fn ride_at(kind: ControllerKind, kmh: f64, particles: usize) -> Ride {
+    let mut ride = Ride::new(flat_ride(), kind);
+    ride.planner.optimizer.particles = particles;
+    ride.planner.wait = PlanWait::EveryPlan;
+    ride.set_intent(Intent {
+        drive: auto_throttle(kmh),
+        lean: Some(0.0),
+        ..Intent::default()
+    });
+    ride
+}
+
+/// The bike's lean (rad, positive right) now.
+pub fn lean(ride: &Ride) -> f64 {
+    let sim = ride.sim();
+    sim.bike().lean(sim.world(), sim.up())
+}
+
+/// Asks for `lean` (rad) from the next step on.
+pub fn ask_lean(ride: &mut Ride, lean: f64) {
+    ride.set_intent(Intent {
+        lean: Some(lean),
+        ..*ride.intent()
+    });
+}
+
+/// Rides `seconds` asking for `lean` (rad).
+pub fn ride(ride: &mut Ride, seconds: f64, lean: f64) {
+    ask_lean(ride, lean);
     for _ in 0..(seconds * FRAMES_PER_SECOND as f64).round() as usize {
-        let controls = control(sim, lean);
-        sim.set_controls(controls);
-        sim.step();
+        ride.step();
     }
 }
 
 /// Rides 20 s straight; the bike must stay up and nearly upright.
-pub fn assert_rides_straight_for_20_seconds(
-    sim: &mut Simulation,
-    control: &mut impl FnMut(&Simulation, f64) -> Controls,
-) {
-    ride(sim, 20.0, 0.0, control);
-    assert_eq!(sim.crashed(), None);
-    assert!(sim.bike().lean(sim.world(), DVec3::Y).abs() < 10f64.to_radians());
+pub fn assert_rides_straight_for_20_seconds(r: &mut Ride) {
+    ride(r, 20.0, 0.0);
+    assert_eq!(r.sim().crashed(), None);
+    assert!(lean(r).abs() < 10f64.to_radians());
 }
 
 /// Rides 3 s straight, then asks for a 15° right lean for 7 s; returns the RMS lean error
 /// (degrees) over the last 5 s, once the turn is established.
-pub fn rms_lean_error_in_a_15_degree_turn(
-    sim: &mut Simulation,
-    control: &mut impl FnMut(&Simulation, f64) -> Controls,
-) -> f64 {
+pub fn rms_lean_error_in_a_15_degree_turn(r: &mut Ride) -> f64 {
     let want = 15f64.to_radians();
-    ride(sim, 3.0, 0.0, control);
-    ride(sim, 2.0, want, control);
+    ride(r, 3.0, 0.0);
+    ride(r, 2.0, want);
     let mut squares = Vec::new();
     for _ in 0..5 * FRAMES_PER_SECOND {
-        ride(sim, 1.0 / FRAMES_PER_SECOND as f64, want, control);
-        squares.push((sim.bike().lean(sim.world(), DVec3::Y) - want).powi(2));
+        r.step();
+        squares.push((lean(r) - want).powi(2));
     }
-    assert_eq!(sim.crashed(), None);
+    assert_eq!(r.sim().crashed(), None);
     (squares.iter().sum::<f64>() / squares.len() as f64)
         .sqrt()
         .to_degrees()
@@ -92,21 +111,14 @@ pub fn rms_lean_error_in_a_15_degree_turn(
 
 /// Rides 3 s straight, asks for a 15° right lean, and checks the bar first goes left
 /// (the counter-steer), then right, within 1.5 s.
-pub fn assert_counter_steers_into_a_right_turn(
-    sim: &mut Simulation,
-    control: &mut impl FnMut(&Simulation, f64) -> Controls,
-) {
-    ride(sim, 3.0, 0.0, control);
+pub fn assert_counter_steers_into_a_right_turn(r: &mut Ride) {
+    ride(r, 3.0, 0.0);
+    ask_lean(r, 15f64.to_radians());
     let angles: Vec<f64> = (0..45)
         .map(|_| {
-            ride(
-                sim,
-                1.0 / FRAMES_PER_SECOND as f64,
-                15f64.to_radians(),
-                control,
-            );
-            assert_eq!(sim.crashed(), None);
-            sim.bike().steering(sim.world()).0
+            r.step();
+            assert_eq!(r.sim().crashed(), None);
+            r.sim().bike().steering(r.sim().world()).0
         })
         .collect();
     let first_left = angles.iter().position(|a| *a > 1f64.to_radians());
