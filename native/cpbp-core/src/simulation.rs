@@ -112,7 +112,7 @@ impl Simulation {
 
     /// Unit vector against gravity.
     pub fn up(&self) -> DVec3 {
-        (-self.config.gravity).normalize_or(DVec3::Y)
+        up_against(self.config.gravity)
     }
 
     /// The crash of this ride, if it crashed (cleared by reset and lift).
@@ -236,4 +236,9 @@ fn build_world(config: &SimulationConfig, terrain: &Terrain, spawn: &Placement) 
     let bike = Bike::build(&mut world, &config.bike, spawn);
     terrain.add_to(&mut world);
     (world, bike)
+}
+
+/// Unit vector against `gravity` (straight up when there is none).
+pub fn up_against(gravity: DVec3) -> DVec3 {
+    (-gravity).normalize_or(DVec3::Y)
 }

@@ -9,6 +9,7 @@ use glam::DVec3;
 
 use crate::bike::{index, Bike, Controls, DriveInput, POSE_GAIN};
 use crate::ode::World;
+use crate::simulation::up_against;
 
 /// Gains of eq. 4.8 and of the steer towards neutral in the air.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,16 +83,17 @@ impl ArcadeController {
     }
 
     /// Controls for one step of length `dt` towards `desired_lean` (rad, positive right),
-    /// with the rear wheel as `drive` asks.
+    /// with the rear wheel as `drive` asks, under `gravity` (m/s²).
     pub fn controls(
         &mut self,
         bike: &Bike,
         world: &World,
         desired_lean: f64,
         drive: &DriveInput,
-        up: DVec3,
+        gravity: DVec3,
         dt: f64,
     ) -> Controls {
+        let up = up_against(gravity);
         let mut controls = Controls::default();
         bike.pose_hold(world, POSE_GAIN, &mut controls);
         drive.apply(bike.params().wheel_radius, &mut controls);
@@ -118,7 +120,7 @@ impl ArcadeController {
         } else {
             let p = bike.params();
             let speed = bike.forward_speed(world, up);
-            let neutral = -eq_4_12(p.wheelbase, lean, speed, p.rake, 9.81);
+            let neutral = -eq_4_12(p.wheelbase, lean, speed, p.rake, gravity.length());
             self.gains.air_gain * (neutral - bike.steering(world).0)
         };
         controls.set(index::STEER, steer_rate);

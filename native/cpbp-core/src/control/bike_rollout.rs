@@ -35,6 +35,8 @@ const CRASH_COST: f64 = 400.0;
 pub struct BikeRollout {
     pub world: World,
     pub bike: Bike,
+    pub gravity: DVec3,
+    /// Against gravity.
     pub up: DVec3,
     /// One planning step (s) and the ODE steps it takes.
     pub step_dt: f64,
@@ -115,7 +117,7 @@ impl RolloutSystem for BikeRollout {
             &self.world,
             self.goal.lean,
             &self.drive,
-            self.up,
+            self.gravity,
             self.step_dt,
         );
         Some(controls.values().to_vec())

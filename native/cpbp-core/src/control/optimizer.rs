@@ -74,6 +74,7 @@ impl BikeOptimizer {
         let rollout = || BikeRollout {
             world: sim.new_world(),
             bike: sim.bike().clone(),
+            gravity: sim.config().gravity,
             up: sim.up(),
             step_dt: dt,
             substeps: config.rollout_substeps.max(1),
@@ -154,8 +155,14 @@ impl BikeOptimizer {
         }
         // Keep the arcade controller's memory in step with the master.
         let dt = sim.config().control_dt;
-        self.arcade
-            .controls(sim.bike(), sim.world(), desired_lean, drive, sim.up(), dt);
+        self.arcade.controls(
+            sim.bike(),
+            sim.world(),
+            desired_lean,
+            drive,
+            sim.config().gravity,
+            dt,
+        );
         // Particle 1: combined mode follows the arcade controller live; the optimizer
         // alone replays last frame's refinement.
         let warm = match self.config.mode {

@@ -19,7 +19,7 @@ impl Controller for ArcadeDriver {
             sim.world(),
             state.desired_lean,
             &intent.drive,
-            sim.up(),
+            sim.config().gravity,
             dt,
         )
     }
