@@ -18,9 +18,11 @@ extends Node
 
 const LEVEL := preload("res://scenes/levels/test_level/test_level.tscn")
 const BIKE := preload("res://scenes/bike/bike.tscn")
-## Exit codes the driver tells apart: bad arguments, and a level that would not load.
+## Exit codes the driver tells apart: bad arguments, a level that would not load, and a
+## planner whose thread died (its attempt was ridden by the arcade stand-in: no result).
 const EXIT_USAGE := 2
 const EXIT_SETUP := 3
+const EXIT_PLANNER_FAILED := 4
 
 var _level: TestLevel
 var _bike: BikeSimulation
@@ -45,7 +47,7 @@ func _ready() -> void:
 		_measure_planning(args)
 	else:
 		_ride_attempts(args)
-	get_tree().quit(0)
+	get_tree().quit(EXIT_PLANNER_FAILED if _planner_failed() else 0)
 
 
 func _build(args: ExperimentArgs) -> bool:
@@ -80,6 +82,8 @@ func _ride_attempts(args: ExperimentArgs) -> void:
 		_bike.planner_seed = planner_seed_of(bump_seed)
 		var started := Time.get_ticks_usec()
 		var result := TestRun.ride(_level, _bike, bump_seed, args.speed)
+		if not _bike.get_controller_failure().is_empty():
+			return
 		(
 			result
 			. merge(
@@ -95,6 +99,15 @@ func _ride_attempts(args: ExperimentArgs) -> void:
 			)
 		)
 		print("TRY ", JSON.stringify(result))
+
+
+## True (with the reason on stderr) when the planner's thread died during the ride.
+func _planner_failed() -> bool:
+	var failure := _bike.get_controller_failure()
+	if failure.is_empty():
+		return false
+	printerr("experiment worker: the planner failed (%s); the attempt is not reported" % failure)
+	return true
 
 
 ## The planner's seed for the attempt with bump seed `bump_seed`.

@@ -60,6 +60,7 @@ func _ready() -> void:
 	level.attach(bike)
 	level.announced.connect(_hud.announce)
 	bike.crashed.connect(_on_crashed)
+	bike.controller_failed.connect(_on_controller_failed)
 	Settings.changed.connect(_apply_setting)
 	for key: StringName in Settings.DEFAULTS:
 		_apply_setting(key)
@@ -162,6 +163,10 @@ func _finish(outcome: String) -> void:
 
 func _on_crashed(_cause: String) -> void:
 	falls += 1
+
+
+func _on_controller_failed(_reason: String) -> void:
+	_hud.announce("The planner stopped: arcade steers until you restart")
 
 
 func _apply_setting(key: StringName) -> void:

@@ -46,7 +46,10 @@ func _process(delta: float) -> void:
 		% [rad_to_deg(bike.get_lean()), rad_to_deg(bike.get_desired_lean())]
 	)
 	var controller := _game.controller_name()
-	if BikeSimulation.controller_plans(bike.controller):
+	var failure := bike.get_controller_failure()
+	if not failure.is_empty():
+		controller += "  ·  planner failed, arcade steers (%s)" % failure
+	elif BikeSimulation.controller_plans(bike.controller):
 		controller += (
 			"  ·  %d trajectories  ·  planning %.1f ms"
 			% [bike.trajectories, bike.get_planning_ms()]

@@ -115,6 +115,34 @@ func test_late_plans_are_counted_and_none_come_when_waiting_for_every_plan() -> 
 	assert_eq(_bike.get_late_plan_count(), 0, "every step waited for its plan")
 
 
+func test_a_dying_planner_is_reported_once_and_the_arcade_controller_steps_in() -> void:
+	var start := Transform3D(Basis(), Vector3(0, 0.02, 0))
+	await _spawn(start)
+	_bike.set_physics_process(false)
+	_bike.controller = "combined"
+	_bike.trajectories = 4
+	_bike.wait_for_every_plan = true
+	var reasons: Array[String] = []
+	_bike.controller_failed.connect(func(reason: String) -> void: reasons.append(reason))
+	_bike.set_drive(1.0, 0.0)
+	_bike.advance(15)
+	assert_eq(_bike.get_controller_failure(), "")
+	# The panic itself (godot-rust logs every panic), then the bike's report of it.
+	expect_error("[panic")
+	expect_error("planning thread died (injected fault)")
+	_bike.inject_planner_fault("injected fault")
+	_bike.advance(60)
+	assert_eq(reasons, ["injected fault"] as Array[String], "reported once")
+	assert_eq(_bike.get_controller_failure(), "injected fault")
+	assert_eq(_bike.get_trajectory_paths().size(), 0, "no plans: arcade steers")
+	assert_false(_bike.is_crashed(), "the stand-in kept the bike up")
+	assert_gt(_bike.get_speed(), 3.0)
+	_bike.reset_to(start)
+	_bike.advance(10)
+	assert_eq(_bike.get_controller_failure(), "", "a new ride has a new planner")
+	assert_eq(_bike.get_trajectory_paths().size(), 4)
+
+
 func test_the_controller_is_a_name_from_the_one_list() -> void:
 	var bike := BikeSimulation.new()
 	assert_eq(

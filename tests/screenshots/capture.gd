@@ -6,7 +6,9 @@ extends Node
 ## Arguments after `--`: `--scene=res://…`, `--out=PATH.png`, `--frames=N` (default 30),
 ## and to stage the picture: `--set=property=value` (on the scene's root before it enters
 ## the tree, repeatable), `--hold=action` (held throughout, repeatable, `action:0.5` for
-## part strength) and `--tap=action@frame` (pressed once at that frame, repeatable).
+## part strength), `--tap=action@frame` (pressed once at that frame, repeatable) and
+## `--call=node:method:argument@frame` (calls a method of a node under the scene's root,
+## found by name, with one string argument, at that frame; repeatable).
 
 const MIN_DISTINCT_COLOURS := 12
 const MIN_LUMINANCE_SPREAD := 0.04
@@ -14,7 +16,7 @@ const MIN_LUMINANCE_SPREAD := 0.04
 
 func _ready() -> void:
 	var options := {scene = "", out = "", frames = "30"}
-	var staging := {"set": [], "hold": [], "tap": []}
+	var staging := {"set": [], "hold": [], "tap": [], "call": []}
 	for argument: String in OS.get_cmdline_user_args():
 		var parts := argument.trim_prefix("--").split("=", true, 1)
 		if parts.size() == 2 and options.has(parts[0]):
@@ -41,6 +43,10 @@ func _ready() -> void:
 			var at := tap.split("@")
 			if at.size() == 2 and int(at[1]) == frame:
 				_tap(at[0])
+		for call: String in staging["call"]:
+			var at := call.split("@")
+			if at.size() == 2 and int(at[1]) == frame:
+				_call(root, at[0])
 		await get_tree().process_frame
 	await RenderingServer.frame_post_draw
 	var image := get_viewport().get_texture().get_image()
@@ -65,6 +71,16 @@ func _ready() -> void:
 		)
 	)
 	_quit_with("", 1 if blank else 0)
+
+
+## Calls `node:method:argument` on the node of that name under `root`.
+func _call(root: Node, spec: String) -> void:
+	var parts := spec.split(":", true, 2)
+	var target := root.find_child(parts[0], true, false) if parts.size() == 3 else null
+	if target == null or not target.has_method(parts[1]):
+		push_error("--call=%s: no such node and method under the scene" % spec)
+		return
+	target.call(parts[1], parts[2])
 
 
 func _tap(action: String) -> void:

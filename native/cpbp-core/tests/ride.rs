@@ -145,3 +145,31 @@ fn a_lean_asked_for_directly_replaces_the_turn_and_is_held_to_the_limit() {
     assert_eq!(ask(&mut ride, 3.0), 30f64.to_radians(), "held to the limit");
     assert_eq!(ask(&mut ride, f64::NAN), 0.0, "nonsense asks for nothing");
 }
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "slow in debug builds; make test runs it in release"
+)]
+fn a_dying_planning_thread_is_reported_the_bike_rides_on_and_a_new_ride_rebuilds_it() {
+    let mut ride = common::ride_at(ControllerKind::Combined, 15.0, 5);
+    common::ride(&mut ride, 1.0, 0.0);
+    assert_eq!(ride.failure(), None);
+    ride.inject_fault("injected planner fault");
+    common::ride(&mut ride, 3.0, 0.0);
+    assert_eq!(ride.failure(), Some("injected planner fault"));
+    assert!(
+        ride.plan().is_none(),
+        "no plan drives: the arcade controller does"
+    );
+    assert_eq!(ride.sim().crashed(), None, "the fallback kept the bike up");
+    assert!(speed(&ride) > 3.0, "and riding: {}", speed(&ride));
+    ride.reset_to(cpbp_core::bike::Placement::IDENTITY);
+    common::ride(&mut ride, 1.0, 0.0);
+    assert_eq!(
+        ride.failure(),
+        None,
+        "the new ride has a new planning thread"
+    );
+    assert!(ride.plan().is_some());
+}

@@ -59,6 +59,14 @@ impl BikeSimulation {
         GString::from(self.controller_kind().name())
     }
 
+    /// Why the controller no longer drives as itself (its planning thread died and the
+    /// arcade controller stands in until the ride is placed anew), or "" when it does.
+    #[func]
+    fn get_controller_failure(&self) -> GString {
+        let failure = self.ride.as_ref().and_then(|r| r.failure());
+        GString::from(failure.unwrap_or_default())
+    }
+
     /// Milliseconds the planning thread took for the last plan taken over (0 when the
     /// optimizer is not driving).
     #[func]

@@ -1,14 +1,14 @@
 //! `BikeSimulation`: the ODE bike and rider in a Godot scene, as glue over the core's
 //! `Ride` (exports, signals, terrain import, pose interpolation); its read-only functions
-//! are in bike_queries.rs.
+//! are in bike_queries.rs, its step events in bike_events.rs.
 
 use std::sync::Arc;
 use std::time::Duration;
 
-use cpbp_core::bike::{Controls, CrashCause, DriveInput, Part, CONTROL_DIM};
+use cpbp_core::bike::{Controls, DriveInput, Part, CONTROL_DIM};
 use cpbp_core::control::{OptimizerConfig, PlanWait};
 use cpbp_core::ride::{ControllerKind, Intent, PlannerSettings, Ride};
-use cpbp_core::simulation::{Simulation, SimulationConfig, StepEvents};
+use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
 use godot::classes::{INode3D, Node3D};
@@ -86,6 +86,8 @@ pub struct BikeSimulation {
     intent: Intent,
     pub(crate) accumulator: f64,
     pub(crate) previous_poses: Vec<(DVec3, DQuat)>,
+    /// Whether the active controller's failure has been reported.
+    pub(crate) failure_reported: bool,
     base: Base<Node3D>,
 }
 
@@ -111,6 +113,7 @@ impl INode3D for BikeSimulation {
             intent: Intent::default(),
             accumulator: 0.0,
             previous_poses: Vec::new(),
+            failure_reported: false,
             base,
         }
     }
@@ -163,13 +166,17 @@ impl INode3D for BikeSimulation {
 impl BikeSimulation {
     /// The ride crashed: a part other than a wheel touched the ground, or it leaned over.
     #[signal]
-    fn crashed(cause: GString);
+    pub(crate) fn crashed(cause: GString);
     /// A wheel touched the ground again after the bike was in the air.
     #[signal]
-    fn landed();
+    pub(crate) fn landed();
     /// The physics blew up and the bike was put back at its spawn point.
     #[signal]
-    fn recovered(reason: GString);
+    pub(crate) fn recovered(reason: GString);
+    /// The controller's planning thread died (`reason`, its panic message); the arcade
+    /// controller drives until the ride is placed anew.
+    #[signal]
+    pub(crate) fn controller_failed(reason: GString);
 
     /// Throttle and brake, each 0–1 (the rear wheel motor). Bad numbers count as released.
     #[func]
@@ -275,6 +282,15 @@ impl BikeSimulation {
         self.ride.as_ref().map_or(0, |r| r.late_plans() as i64)
     }
 
+    /// Makes the planner's thread die with `reason`, as a bug in it would: for tests of
+    /// the fallback and its report. Nothing happens unless a planner drives.
+    #[func]
+    fn inject_planner_fault(&mut self, reason: GString) {
+        if let Some(ride) = &mut self.ride {
+            ride.inject_fault(&reason.to_string());
+        }
+    }
+
     /// Stands a fallen bike up where it lies.
     #[func]
     fn lift_upright(&mut self) {
@@ -310,6 +326,7 @@ impl BikeSimulation {
         self.remember_poses();
         let events = self.ride.as_mut().map(Ride::step).unwrap_or_default();
         self.emit(events);
+        self.report_failure();
     }
 
     /// The exports, as the ride's settings: GDScript may change them at any time.
@@ -359,27 +376,7 @@ impl BikeSimulation {
         self.ride.as_ref().and_then(Ride::plan)
     }
 
-    fn emit(&mut self, events: StepEvents) {
-        if let Some(cause) = events.crashed {
-            let text = match cause {
-                CrashCause::Touched(part) => format!("{} touched the ground", part.name()),
-                CrashCause::Leaned { lean } => format!("leaned over ({:.0}°)", lean.to_degrees()),
-            };
-            self.signals().crashed().emit(&GString::from(text.as_str()));
-        }
-        if events.landed {
-            self.signals().landed().emit();
-        }
-        if let Some(reason) = events.recovered_from {
-            godot_warn!("BikeSimulation: the physics blew up ({reason})");
-            self.signals()
-                .recovered()
-                .emit(&GString::from(reason.as_str()));
-            self.remember_poses();
-        }
-    }
-
-    fn remember_poses(&mut self) {
+    pub(crate) fn remember_poses(&mut self) {
         let Some(sim) = self.sim() else { return };
         self.previous_poses = Part::ALL.iter().map(|p| pose_of(sim, *p)).collect();
     }

@@ -1,5 +1,6 @@
 //! Counter-Steer's GDExtension entry point: the Godot classes that wrap `cpbp-core`.
 
+mod bike_events;
 mod bike_queries;
 mod bike_simulation;
 mod controller_choice;

@@ -4,7 +4,9 @@
 //! At the next control-step boundary the game takes the plan over (the hand-over); if it
 //! is late it does not stall: the game keeps replaying the previous best trajectory open
 //! loop (or, with none, the arcade controller) and takes the plan that is for the step it
-//! has reached once one arrives.
+//! has reached once one arrives. If the planning thread dies (a panic), the game keeps
+//! riding on the arcade controller and the failure is kept, with its message, for the
+//! ride to report.
 
 use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender};
 use std::thread::JoinHandle;
@@ -17,6 +19,13 @@ use super::optimizer::{BikeOptimizer, OptimizerConfig};
 use crate::bike::{Controls, DriveInput};
 use crate::ode::WorldState;
 use crate::simulation::Simulation;
+
+/// What the game thread asks of the planning thread.
+enum Message {
+    Plan(Box<Request>),
+    /// Dies with this message, as a bug in the planner would (tests of the fallback).
+    Fail(String),
+}
 
 /// What the planning thread plans: the plan for master step `step`, made from the state
 /// one step earlier and the control applied during that step.
@@ -83,7 +92,7 @@ pub enum PlanWait {
 
 /// The planning thread and the game thread's side of the hand-over.
 pub struct AnytimeOptimizer {
-    requests: Option<Sender<Request>>,
+    requests: Option<Sender<Message>>,
     replies: Receiver<Plan>,
     worker: Option<JoinHandle<()>>,
     outstanding: bool,
@@ -98,12 +107,15 @@ pub struct AnytimeOptimizer {
     /// How long the game thread waits at a boundary for a plan before falling back.
     pub wait: PlanWait,
     pub stats: HandoverStats,
+    /// Why the planning thread died, once it has: the arcade controller drives from then
+    /// on.
+    failure: Option<String>,
 }
 
 impl AnytimeOptimizer {
     /// Starts a planning thread with its own replica of `sim`.
     pub fn new(sim: &Simulation, wait: PlanWait) -> Self {
-        let (request_tx, request_rx) = channel::<Request>();
+        let (request_tx, request_rx) = channel::<Message>();
         let (reply_tx, reply_rx) = channel::<Plan>();
         let replica = sim.replica();
         let worker = std::thread::Builder::new()
@@ -123,6 +135,20 @@ impl AnytimeOptimizer {
             reset_pending: true,
             wait,
             stats: HandoverStats::default(),
+            failure: None,
+        }
+    }
+
+    /// Why the planning thread died, if it did (the arcade controller drives instead).
+    pub fn failure(&self) -> Option<&str> {
+        self.failure.as_deref()
+    }
+
+    /// Makes the planning thread die with `message` as a panic in the planner would: for
+    /// tests of the fallback and of how the failure is reported.
+    pub fn inject_fault(&mut self, message: &str) {
+        if let Some(sender) = &self.requests {
+            let _ = sender.send(Message::Fail(message.to_owned()));
         }
     }
 
@@ -177,7 +203,10 @@ impl AnytimeOptimizer {
                 reset: std::mem::take(&mut self.reset_pending),
             };
             if let Some(sender) = &self.requests {
-                self.outstanding = sender.send(request).is_ok();
+                self.outstanding = sender.send(Message::Plan(Box::new(request))).is_ok();
+                if !self.outstanding {
+                    self.note_death();
+                }
             }
         }
         self.step += 1;
@@ -210,6 +239,7 @@ impl AnytimeOptimizer {
                 Err(RecvTimeoutError::Timeout) => break,
                 Err(RecvTimeoutError::Disconnected) => {
                     self.outstanding = false;
+                    self.note_death();
                 }
             }
         }
@@ -220,6 +250,25 @@ impl AnytimeOptimizer {
         stats.total_wait_ms += waited;
         stats.boundaries += 1;
         stats.late += u64::from(!fresh && self.steps_since_reset > 0);
+    }
+
+    /// The planning thread hung up: keep why (its panic message), stop asking it for
+    /// plans, and let the arcade controller drive.
+    fn note_death(&mut self) {
+        self.requests = None;
+        self.plan = None;
+        let Some(worker) = self.worker.take() else {
+            return;
+        };
+        let why = match worker.join() {
+            Ok(()) => "the planning thread stopped".to_owned(),
+            Err(panic) => panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "the planning thread panicked".to_owned()),
+        };
+        self.failure = Some(why);
     }
 }
 
@@ -234,9 +283,13 @@ impl Drop for AnytimeOptimizer {
 }
 
 /// The planning thread's loop: one plan per request until the game side hangs up.
-fn plan_requests(mut replica: Simulation, requests: Receiver<Request>, replies: Sender<Plan>) {
+fn plan_requests(mut replica: Simulation, requests: Receiver<Message>, replies: Sender<Plan>) {
     let mut optimizer: Option<BikeOptimizer> = None;
-    for request in requests {
+    for message in requests {
+        let request = match message {
+            Message::Plan(request) => request,
+            Message::Fail(why) => panic!("{why}"),
+        };
         let started = Instant::now();
         if replica.world_mut().restore(&request.start).is_err() {
             continue;

@@ -48,6 +48,14 @@ pub trait Controller: Send {
     fn handover(&self) -> Option<HandoverStats> {
         None
     }
+    /// Why it no longer drives as itself (a planner whose thread died: the arcade
+    /// controller drives in its place), if so.
+    fn failure(&self) -> Option<&str> {
+        None
+    }
+    /// Fails as a dying planning thread would (tests of the fallback and its report);
+    /// nothing for controllers without one.
+    fn inject_fault(&mut self, _message: &str) {}
 }
 
 /// Every controller there is, by its stable name; the menus, the HUD, settings files and

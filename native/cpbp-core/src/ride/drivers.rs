@@ -82,4 +82,12 @@ impl Controller for PlannerDriver {
     fn handover(&self) -> Option<HandoverStats> {
         Some(self.anytime.stats)
     }
+
+    fn failure(&self) -> Option<&str> {
+        self.anytime.failure()
+    }
+
+    fn inject_fault(&mut self, message: &str) {
+        self.anytime.inject_fault(message);
+    }
 }

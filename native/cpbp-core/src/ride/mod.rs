@@ -140,6 +140,21 @@ impl Ride {
         self.built_controller(self.kind)?.handover()
     }
 
+    /// Why the active controller no longer drives as itself (its planning thread died and
+    /// the arcade controller drives in its place), if so. Placing the ride anew builds it
+    /// again.
+    pub fn failure(&self) -> Option<&str> {
+        self.built_controller(self.kind)?.failure()
+    }
+
+    /// Makes the active controller fail as a dying planning thread would (tests).
+    pub fn inject_fault(&mut self, message: &str) {
+        let kind = self.kind;
+        if let Some((_, controller)) = self.built.iter_mut().find(|(k, _)| *k == kind) {
+            controller.inject_fault(message);
+        }
+    }
+
     /// Simulates one control step with the active controller (or the raw controls).
     pub fn step(&mut self) -> StepEvents {
         let desired_lean = self.desired_lean();
@@ -162,6 +177,9 @@ impl Ride {
     /// Puts the bike at rest at `placement`, which becomes the spawn point: a new ride.
     pub fn reset_to(&mut self, placement: Placement) {
         self.sim.reset_to(placement);
+        // A controller whose planning thread died starts afresh with the new ride.
+        self.built
+            .retain(|(_, controller)| controller.failure().is_none());
         self.forget_plans();
         self.started = false;
         self.steps = 0;
