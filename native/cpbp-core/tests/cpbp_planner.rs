@@ -151,32 +151,6 @@ fn the_warm_start_particle_replays_its_sequence() {
     assert_eq!(result.sequences[1], warm);
 }
 
-/// The point mass under a controller of its own: a PD towards the target.
-#[derive(Clone, Copy, Debug, Default)]
-struct SteeredMass(PointMass);
-
-impl RolloutSystem for SteeredMass {
-    type State = (f64, f64);
-
-    fn save(&self) -> (f64, f64) {
-        self.0.save()
-    }
-
-    fn restore(&mut self, state: &(f64, f64)) {
-        self.0.restore(state)
-    }
-
-    fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
-        self.0.step(u, step)
-    }
-
-    fn policy(&mut self, _step: usize) -> Option<Vec<f64>> {
-        Some(vec![
-            (2.0 * (TARGET - self.0.x) - 1.5 * self.0.v).clamp(-3.0, 3.0)
-        ])
-    }
-}
-
 #[test]
 fn each_warm_start_route_decides_what_particle_1_replays() {
     let free = PointMass {
@@ -184,9 +158,9 @@ fn each_warm_start_route_decides_what_particle_1_replays() {
         ..PointMass::default()
     };
     // The policy route: particle 1 follows the system's controller step by step.
-    let mut systems = vec![SteeredMass(free); 16];
+    let mut systems = vec![ObservedPointMass(free); 16];
     let result = planner(4).plan(&mut systems, &(0.0, 0.0), WarmStart::Policy);
-    let mut replay = SteeredMass(free);
+    let mut replay = ObservedPointMass(free);
     let expected: Vec<f64> = (0..20)
         .flat_map(|k| {
             let u = replay.policy(k).unwrap();
@@ -260,7 +234,8 @@ fn resampling_keeps_the_low_cost_lineages() {
     assert!(distinct > 0, "low-cost first steps should be forked");
 }
 
-/// A point mass that tells the refinement its position and velocity.
+/// A point mass that tells the refinement its position and velocity, with a controller of
+/// its own (a PD towards the target) for the policy warm start.
 #[derive(Clone, Copy, Debug, Default)]
 struct ObservedPointMass(PointMass);
 
@@ -277,6 +252,12 @@ impl RolloutSystem for ObservedPointMass {
 
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         self.0.step(u, step)
+    }
+
+    fn policy(&mut self, _step: usize) -> Option<Vec<f64>> {
+        Some(vec![
+            (2.0 * (TARGET - self.0.x) - 1.5 * self.0.v).clamp(-3.0, 3.0)
+        ])
     }
 
     fn features(&self) -> Vec<f64> {

@@ -175,17 +175,9 @@ impl AnytimeOptimizer {
         config: &OptimizerConfig,
     ) -> Controls {
         self.take_plan();
-        let dt = sim.config().control_dt;
         // Run every step, used or not, so its memory is in step with the master whenever
         // a plan is missing.
-        let fallback = self.arcade.controls(
-            sim.bike(),
-            sim.world(),
-            desired_lean,
-            drive,
-            sim.config().gravity,
-            dt,
-        );
+        let fallback = self.arcade.controls_of(sim, desired_lean, drive);
         let planned = self.plan.as_ref().and_then(|plan| {
             let offset = self.step.checked_sub(plan.step)?;
             plan.sequence.get(offset as usize).copied()

@@ -9,7 +9,7 @@ use glam::DVec3;
 
 use crate::bike::{index, Bike, Controls, DriveInput, POSE_GAIN};
 use crate::ode::World;
-use crate::simulation::up_against;
+use crate::simulation::{up_against, Simulation};
 
 /// Gains of eq. 4.8 and of the steer towards neutral in the air.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -80,6 +80,24 @@ impl ArcadeController {
     /// Forgets the last step (after a reset).
     pub fn reset(&mut self) {
         self.previous = None;
+    }
+
+    /// Controls for `sim`'s next control step towards `desired_lean` (rad, positive right).
+    pub fn controls_of(
+        &mut self,
+        sim: &Simulation,
+        desired_lean: f64,
+        drive: &DriveInput,
+    ) -> Controls {
+        let (bike, world, gravity) = (sim.bike(), sim.world(), sim.config().gravity);
+        self.controls(
+            bike,
+            world,
+            desired_lean,
+            drive,
+            gravity,
+            sim.config().control_dt,
+        )
     }
 
     /// Controls for one step of length `dt` towards `desired_lean` (rad, positive right),

@@ -154,15 +154,7 @@ impl BikeOptimizer {
             rollout.policy = Some(self.arcade);
         }
         // Keep the arcade controller's memory in step with the master.
-        let dt = sim.config().control_dt;
-        self.arcade.controls(
-            sim.bike(),
-            sim.world(),
-            desired_lean,
-            drive,
-            sim.config().gravity,
-            dt,
-        );
+        self.arcade.controls_of(sim, desired_lean, drive);
         // Particle 1: combined mode follows the arcade controller live; the optimizer
         // alone replays last frame's refinement.
         let warm = match self.config.mode {

@@ -12,16 +12,8 @@ pub struct ArcadeDriver(ArcadeController);
 
 impl Controller for ArcadeDriver {
     fn controls(&mut self, state: &RideState<'_>, intent: &Intent) -> Controls {
-        let sim = state.sim;
-        let dt = sim.config().control_dt;
-        self.0.controls(
-            sim.bike(),
-            sim.world(),
-            state.desired_lean,
-            &intent.drive,
-            sim.config().gravity,
-            dt,
-        )
+        self.0
+            .controls_of(state.sim, state.desired_lean, &intent.drive)
     }
 
     fn reset(&mut self) {
