@@ -4,18 +4,22 @@
 //! can outlive what it names: one [`World`] owns its ODE world, collision space, contact
 //! joint group, bodies and geoms, and hands out plain index handles ([`BodyId`], [`GeomId`]).
 
+mod contact;
 mod ffi;
 mod joints;
+mod mass;
 mod runtime;
 mod shared_data;
 mod state;
 mod world;
 
+pub use contact::SurfaceParams;
 pub use joints::{JointId, MotorState};
+pub use mass::Mass;
 pub use runtime::{c_library_version, configuration, ensure_thread_data, Configuration};
 pub use shared_data::{HeightFieldData, TriMeshData};
 pub use state::{BodyState, StateMismatch, WorldState};
-pub use world::{BodyId, GeomId, Mass, SurfaceParams, World};
+pub use world::{BodyId, GeomId, World};
 
 /// Three-component vector as ODE uses it (double precision).
 pub type Vec3 = [f64; 3];

@@ -1,0 +1,48 @@
+//! Mass properties of a rigid body, as ODE computes them for solid shapes.
+
+use crate::{ffi, Vec3};
+
+/// Mass properties of a rigid body, in the body's own frame.
+#[derive(Clone, Copy, Debug)]
+pub struct Mass {
+    pub(crate) raw: ffi::dMass,
+}
+
+impl Mass {
+    /// A solid sphere of the given total mass (kg) and radius (m).
+    pub fn sphere(total: f64, radius: f64) -> Self {
+        let mut raw = ffi::dMass::default();
+        // SAFETY: `raw` is a valid, exclusively borrowed dMass.
+        unsafe { ffi::dMassSetSphereTotal(&mut raw, total, radius) };
+        Self { raw }
+    }
+
+    /// A solid box of the given total mass (kg) and full side lengths (m).
+    pub fn cuboid(total: f64, size: Vec3) -> Self {
+        let mut raw = ffi::dMass::default();
+        // SAFETY: `raw` is a valid, exclusively borrowed dMass.
+        unsafe { ffi::dMassSetBoxTotal(&mut raw, total, size[0], size[1], size[2]) };
+        Self { raw }
+    }
+
+    /// A solid cylinder along the body's local `axis` (0 = x, 1 = y, 2 = z).
+    pub fn cylinder(total: f64, axis: usize, radius: f64, length: f64) -> Self {
+        let mut raw = ffi::dMass::default();
+        // SAFETY: `raw` is a valid, exclusively borrowed dMass; ODE numbers axes from 1.
+        unsafe { ffi::dMassSetCylinderTotal(&mut raw, total, axis as i32 + 1, radius, length) };
+        Self { raw }
+    }
+
+    /// A solid capsule along the body's local z axis (ODE's capsule direction).
+    pub fn capsule(total: f64, radius: f64, length: f64) -> Self {
+        let mut raw = ffi::dMass::default();
+        // SAFETY: as above; direction 3 is z.
+        unsafe { ffi::dMassSetCapsuleTotal(&mut raw, total, 3, radius, length) };
+        Self { raw }
+    }
+
+    /// Total mass in kg.
+    pub fn total(&self) -> f64 {
+        self.raw.mass
+    }
+}

@@ -1,0 +1,293 @@
+//! One ODE world with its collision space and contact joints, owned as a unit.
+
+mod geoms;
+
+use std::os::raw::c_void;
+use std::ptr;
+use std::sync::Arc;
+
+use crate::contact::{near_callback, read_vec3, CollideContext, SurfaceParams, Tyre};
+use crate::ffi;
+use crate::joints::JointKind;
+use crate::mass::Mass;
+use crate::runtime::ensure_thread_data;
+use crate::shared_data::{HeightFieldData, TriMeshData};
+use crate::{BodyState, Quat, StateMismatch, Vec3, WorldState};
+
+/// Index of a body inside its [`World`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct BodyId(pub usize);
+
+/// Index of a collision geom inside its [`World`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct GeomId(pub usize);
+
+/// An ODE world, its collision space, its contact joints, bodies and geoms.
+///
+/// Everything is destroyed together when the `World` is dropped, so handles cannot dangle.
+pub struct World {
+    pub(crate) world: ffi::dWorldID,
+    space: ffi::dSpaceID,
+    contacts: ffi::dJointGroupID,
+    threading: ffi::dThreadingImplementationID,
+    pub(crate) bodies: Vec<ffi::dBodyID>,
+    pub(crate) joints: Vec<(ffi::dJointID, JointKind)>,
+    geoms: Vec<ffi::dGeomID>,
+    surface: SurfaceParams,
+    /// Per body: whether it touched a static geom (terrain) in the last step.
+    touching_static: Vec<bool>,
+    /// Torus tyres: sphere geoms whose contacts are moved to where a torus would touch.
+    tyres: Vec<Tyre>,
+    /// Shared collision data the geoms read; released only after `Drop` destroyed the space.
+    shared_meshes: Vec<Arc<TriMeshData>>,
+    shared_heights: Vec<Arc<HeightFieldData>>,
+    /// QuickStep's random sequence (it reorders constraint rows) for this world. ODE keeps
+    /// one seed per thread; each step swaps this world's seed in and out, so a world's
+    /// steps depend on its own history only, not on what else its thread has stepped.
+    random_seed: u64,
+}
+
+// SAFETY: a World owns all ODE objects it names and ODE keeps no hidden links between
+// worlds; moving it to another thread is safe as long as that thread has ODE data,
+// which every method ensures through `ensure_thread_data`.
+unsafe impl Send for World {}
+
+impl World {
+    /// An empty world with the given gravity (m/s²) and a simple collision space.
+    pub fn new(gravity: Vec3) -> Self {
+        ensure_thread_data();
+        // SAFETY: ODE is initialised; the returned ids are owned by this World.
+        unsafe {
+            let world = ffi::dWorldCreate();
+            ffi::dWorldSetGravity(world, gravity[0], gravity[1], gravity[2]);
+            let space = ffi::dSimpleSpaceCreate(ptr::null_mut());
+            let contacts = ffi::dJointGroupCreate(0);
+            // Without its own implementation a world steps through ODE's one global
+            // self-threaded implementation, whose wakeup flag races when several threads
+            // step their own worlds at once (as the rollouts do).
+            let threading = ffi::dThreadingAllocateSelfThreadedImplementation();
+            ffi::dWorldSetStepThreadingImplementation(
+                world,
+                ffi::dThreadingImplementationGetFunctions(threading),
+                threading,
+            );
+            Self {
+                world,
+                space,
+                contacts,
+                threading,
+                bodies: Vec::new(),
+                joints: Vec::new(),
+                geoms: Vec::new(),
+                surface: SurfaceParams::default(),
+                touching_static: Vec::new(),
+                tyres: Vec::new(),
+                shared_meshes: Vec::new(),
+                shared_heights: Vec::new(),
+                random_seed: 0,
+            }
+        }
+    }
+
+    /// Sets gravity (m/s²).
+    pub fn set_gravity(&mut self, gravity: Vec3) {
+        // SAFETY: the world is alive.
+        unsafe { ffi::dWorldSetGravity(self.world, gravity[0], gravity[1], gravity[2]) };
+    }
+
+    /// Sets the contact surface used for every contact from now on.
+    pub fn set_surface(&mut self, surface: SurfaceParams) {
+        self.surface = surface;
+    }
+
+    /// Adds a dynamic body with the given mass at a position.
+    pub fn add_body(&mut self, mass: Mass, position: Vec3) -> BodyId {
+        ensure_thread_data();
+        // SAFETY: the world is alive; the body is owned by it and recorded here.
+        unsafe {
+            let body = ffi::dBodyCreate(self.world);
+            ffi::dBodySetMass(body, &mass.raw);
+            ffi::dBodySetPosition(body, position[0], position[1], position[2]);
+            // The body's index, read back by the contact callback.
+            ffi::dBodySetData(body, self.bodies.len() as *mut c_void);
+            self.bodies.push(body);
+            self.touching_static.push(false);
+        }
+        BodyId(self.bodies.len() - 1)
+    }
+
+    /// Sets a body's orientation (normalised, as when building a model).
+    pub fn set_body_quaternion(&mut self, body: BodyId, q: Quat) {
+        // SAFETY: the body belongs to this world; q is 4 reals.
+        unsafe { ffi::dBodySetQuaternion(self.bodies[body.0], q.as_ptr()) };
+    }
+
+    /// Sets a body's world-frame position.
+    pub fn set_body_position(&mut self, body: BodyId, p: Vec3) {
+        // SAFETY: the body belongs to this world.
+        unsafe { ffi::dBodySetPosition(self.bodies[body.0], p[0], p[1], p[2]) };
+    }
+
+    /// World-frame angular velocity of a body.
+    pub fn body_angular_velocity(&self, body: BodyId) -> Vec3 {
+        // SAFETY: as for body_position.
+        unsafe { read_vec3(ffi::dBodyGetAngularVel(self.bodies[body.0])) }
+    }
+
+    /// Sets the world-frame angular velocity of a body.
+    pub fn set_body_angular_velocity(&mut self, body: BodyId, w: Vec3) {
+        // SAFETY: the body belongs to this world.
+        unsafe { ffi::dBodySetAngularVel(self.bodies[body.0], w[0], w[1], w[2]) };
+    }
+
+    /// Mass of a body in kg.
+    pub fn body_mass(&self, body: BodyId) -> f64 {
+        let mut mass = ffi::dMass::default();
+        // SAFETY: the body belongs to this world; `mass` is exclusively borrowed.
+        unsafe { ffi::dBodyGetMass(self.bodies[body.0], &mut mass) };
+        mass.mass
+    }
+
+    /// Whether a body touched a static geom (terrain) during the last step.
+    pub fn body_touches_static(&self, body: BodyId) -> bool {
+        self.touching_static[body.0]
+    }
+
+    /// Number of bodies.
+    pub fn body_count(&self) -> usize {
+        self.bodies.len()
+    }
+
+    /// World-frame position of a body's centre of mass.
+    pub fn body_position(&self, body: BodyId) -> Vec3 {
+        // SAFETY: the body belongs to this world; ODE returns a pointer to 3 (padded to 4) reals.
+        unsafe { read_vec3(ffi::dBodyGetPosition(self.bodies[body.0])) }
+    }
+
+    /// Orientation of a body as a quaternion (w, x, y, z).
+    pub fn body_quaternion(&self, body: BodyId) -> Quat {
+        // SAFETY: the body belongs to this world; ODE returns a pointer to 4 reals.
+        unsafe {
+            let q = ffi::dBodyGetQuaternion(self.bodies[body.0]);
+            [*q, *q.add(1), *q.add(2), *q.add(3)]
+        }
+    }
+
+    /// World-frame linear velocity of a body.
+    pub fn body_linear_velocity(&self, body: BodyId) -> Vec3 {
+        // SAFETY: as for body_position.
+        unsafe { read_vec3(ffi::dBodyGetLinearVel(self.bodies[body.0])) }
+    }
+
+    /// Sets the world-frame linear velocity of a body.
+    pub fn set_body_linear_velocity(&mut self, body: BodyId, velocity: Vec3) {
+        // SAFETY: the body belongs to this world.
+        unsafe {
+            ffi::dBodySetLinearVel(self.bodies[body.0], velocity[0], velocity[1], velocity[2])
+        };
+    }
+
+    /// Copies the dynamic state of every body and the stepping random seed.
+    pub fn snapshot(&self) -> WorldState {
+        ensure_thread_data();
+        let bodies = (0..self.bodies.len())
+            .map(|i| {
+                let id = BodyId(i);
+                // SAFETY: the body belongs to this world; ODE returns a pointer to 3 reals.
+                let angular_velocity =
+                    unsafe { read_vec3(ffi::dBodyGetAngularVel(self.bodies[i])) };
+                BodyState {
+                    position: self.body_position(id),
+                    quaternion: self.body_quaternion(id),
+                    linear_velocity: self.body_linear_velocity(id),
+                    angular_velocity,
+                }
+            })
+            .collect();
+        let motors = (0..self.joints.len())
+            .map(|j| self.motor_state(crate::JointId(j)))
+            .collect();
+        WorldState {
+            bodies,
+            motors,
+            random_seed: self.random_seed,
+        }
+    }
+
+    /// Puts every body back into a snapshot's state, exactly (no renormalisation).
+    pub fn restore(&mut self, state: &WorldState) -> Result<(), StateMismatch> {
+        ensure_thread_data();
+        if state.bodies.len() != self.bodies.len() || state.motors.len() != self.joints.len() {
+            return Err(StateMismatch {
+                expected_bodies: self.bodies.len(),
+                found_bodies: state.bodies.len(),
+                expected_joints: self.joints.len(),
+                found_joints: state.motors.len(),
+            });
+        }
+        for (j, motor) in state.motors.iter().enumerate() {
+            self.set_motor_state(crate::JointId(j), motor);
+        }
+        for (&body, s) in self.bodies.iter().zip(&state.bodies) {
+            // SAFETY: the body belongs to this world; the quaternion is 4 reals.
+            unsafe {
+                ffi::dBodySetPosition(body, s.position[0], s.position[1], s.position[2]);
+                ffi::dBodySetQuaternionExact(body, s.quaternion.as_ptr());
+                let v = s.linear_velocity;
+                ffi::dBodySetLinearVel(body, v[0], v[1], v[2]);
+                let w = s.angular_velocity;
+                ffi::dBodySetAngularVel(body, w[0], w[1], w[2]);
+            }
+        }
+        self.random_seed = state.random_seed;
+        Ok(())
+    }
+
+    /// Restarts this world's QuickStep random sequence, as a new world starts it.
+    pub fn reset_random_seed(&mut self) {
+        self.random_seed = 0;
+    }
+
+    /// Advances the world by `dt` seconds: collision, contact joints, QuickStep.
+    pub fn step(&mut self, dt: f64) {
+        ensure_thread_data();
+        self.canonicalise_geom_order();
+        self.touching_static.iter_mut().for_each(|t| *t = false);
+        let mut context = CollideContext {
+            world: self.world,
+            contacts: self.contacts,
+            surface: self.surface,
+            touching_static: &mut self.touching_static,
+            tyres: &self.tyres,
+        };
+        // SAFETY: the callback only runs during this call and gets a pointer to `context`,
+        // which outlives it; all ids belong to this world.
+        unsafe {
+            ffi::dSpaceCollide(
+                self.space,
+                (&mut context as *mut CollideContext).cast::<c_void>(),
+                Some(near_callback),
+            );
+            // The seed is thread-local in our ODE build: nothing else runs on this thread
+            // between setting it and reading it back.
+            ffi::dRandSetSeed(self.random_seed as _);
+            ffi::dWorldQuickStep(self.world, dt);
+            self.random_seed = ffi::dRandGetSeed() as u64;
+            ffi::dJointGroupEmpty(self.contacts);
+        }
+    }
+}
+
+impl Drop for World {
+    fn drop(&mut self) {
+        ensure_thread_data();
+        // SAFETY: the ids are owned by this World and destroyed exactly once; destroying the
+        // space destroys its geoms (cleanup is on by default), the world its bodies and joints.
+        unsafe {
+            ffi::dJointGroupDestroy(self.contacts);
+            ffi::dSpaceDestroy(self.space);
+            ffi::dWorldDestroy(self.world);
+            ffi::dThreadingFreeImplementation(self.threading);
+        }
+    }
+}

@@ -1,0 +1,74 @@
+//! A world steps, collides and moves between threads, through the public API only.
+
+use cpbp_ode::{Mass, World};
+
+const G: f64 = 9.81;
+
+#[test]
+fn a_dropped_body_falls_half_g_t_squared() {
+    let mut world = World::new([0.0, -G, 0.0]);
+    let ball = world.add_body(Mass::sphere(1.0, 0.1), [0.0, 10.0, 0.0]);
+    let dt = 1.0 / 240.0;
+    let steps = 240;
+    for _ in 0..steps {
+        world.step(dt);
+    }
+    let t = dt * steps as f64;
+    let fallen = 10.0 - world.body_position(ball)[1];
+    // Semi-implicit Euler overshoots ½gt² by ½g·t·dt; allow that and no more.
+    let exact = 0.5 * G * t * t;
+    assert!(
+        (fallen - exact).abs() <= 0.5 * G * t * dt + 1e-9,
+        "fell {fallen}, ½gt² = {exact}"
+    );
+    assert!((world.body_linear_velocity(ball)[1] + G * t).abs() < 1e-9);
+}
+
+#[test]
+fn a_sphere_comes_to_rest_on_a_plane() {
+    let mut world = World::new([0.0, -G, 0.0]);
+    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let ball = world.add_body(Mass::sphere(2.0, 0.25), [0.0, 1.0, 0.0]);
+    world.add_sphere(0.25, Some(ball));
+    for _ in 0..600 {
+        world.step(1.0 / 120.0);
+    }
+    let y = world.body_position(ball)[1];
+    assert!((y - 0.25).abs() < 0.01, "sphere rests at {y}, radius 0.25");
+    assert!(world.body_linear_velocity(ball)[1].abs() < 1e-3);
+}
+
+#[test]
+fn many_threads_step_their_own_worlds_with_contacts_at_once() {
+    // The rollouts step one world per thread; this must be race-free (no shared
+    // threading dispatcher, thread-local collision caches) and give identical results.
+    let simulate = || {
+        let mut world = World::new([0.0, -G, 0.0]);
+        world.add_plane([0.0, 1.0, 0.0], 0.0);
+        let ball = world.add_body(Mass::sphere(1.0, 0.2), [0.0, 0.5, 0.0]);
+        world.add_sphere(0.2, Some(ball));
+        world.add_box([0.5, 0.5, 0.5], None);
+        for _ in 0..2000 {
+            world.step(1.0 / 240.0);
+        }
+        world.body_position(ball)
+    };
+    let reference = simulate();
+    let handles: Vec<_> = (0..8).map(|_| std::thread::spawn(simulate)).collect();
+    for handle in handles {
+        assert_eq!(handle.join().unwrap(), reference);
+    }
+}
+
+#[test]
+fn worlds_can_move_between_threads() {
+    let mut world = World::new([0.0, -G, 0.0]);
+    let ball = world.add_body(Mass::sphere(1.0, 0.1), [0.0, 0.0, 0.0]);
+    let world = std::thread::spawn(move || {
+        world.step(0.1);
+        world
+    })
+    .join()
+    .unwrap();
+    assert!(world.body_position(ball)[1] < 0.0);
+}
