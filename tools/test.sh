@@ -31,6 +31,8 @@ step "clippy"               tools/cargo clippy --workspace --all-targets --quiet
 step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot
 # The controllers' ride tests simulate minutes of planning: fast only in a release build.
 step "controller rides (release)" tools/cargo test --release -p cpbp-core --test optimizer --test anytime --test reproducible --test ride
+# The benchmark bicycle built from the game's bodies and tyres is the paper's bicycle.
+step "bicycle benchmark"    env PYTHONPATH=tools .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
 # The experiment's statistics, results file and scheduling (no Godot needed).
 step "experiment unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest discover -s tools/cpbp_experiment/tests -t tools
 step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdlint"

@@ -1,6 +1,7 @@
 //! Counter-Steer's native core: everything that simulates or decides, with no Godot types,
 //! so it is tested with `cargo test` and reused by benchmarks and headless experiments.
 
+pub mod benchmark_bicycle;
 pub mod bike;
 mod build_info;
 pub mod control;

@@ -1,6 +1,6 @@
 //! A world steps, collides and moves between threads, through the public API only.
 
-use cpbp_ode::{Mass, World};
+use cpbp_ode::{Mass, Solver, World};
 
 const G: f64 = 9.81;
 
@@ -71,4 +71,33 @@ fn worlds_can_move_between_threads() {
     .join()
     .unwrap();
     assert!(world.body_position(ball)[1] < 0.0);
+}
+
+#[test]
+fn the_direct_solver_rests_a_sphere_on_a_plane_too() {
+    let mut world = World::new([0.0, -G, 0.0]);
+    world.set_solver(Solver::Direct);
+    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let ball = world.add_body(Mass::sphere(2.0, 0.25), [0.0, 1.0, 0.0]);
+    world.add_sphere(0.25, Some(ball));
+    for _ in 0..600 {
+        world.step(1.0 / 120.0);
+    }
+    let y = world.body_position(ball)[1];
+    assert!((y - 0.25).abs() < 0.01, "sphere rests at {y}, radius 0.25");
+}
+
+#[test]
+fn a_tabulated_inertia_is_taken_and_an_impossible_one_refused() {
+    let frame = [[9.2, 0.0, 2.4], [0.0, 11.0, 0.0], [2.4, 0.0, 2.8]];
+    assert_eq!(
+        Mass::with_inertia(85.0, frame).map(|m| m.total()),
+        Some(85.0)
+    );
+    // Violates the triangle inequality (no rigid body has it).
+    let impossible = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 5.0]];
+    assert!(Mass::with_inertia(1.0, impossible).is_none());
+    let lopsided = [[1.0, 0.2, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    assert!(Mass::with_inertia(1.0, lopsided).is_none(), "not symmetric");
+    assert!(Mass::with_inertia(0.0, frame).is_none());
 }

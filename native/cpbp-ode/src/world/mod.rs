@@ -22,6 +22,18 @@ pub struct BodyId(pub usize);
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct GeomId(pub usize);
 
+/// How a world solves its constraints each step.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Solver {
+    /// ODE's iterative solver (`dWorldQuickStep`, 20 iterations): O(rows) per step, but a
+    /// closed chain of joints converges slowly, so it needs short steps to stay stiff.
+    #[default]
+    QuickStep,
+    /// ODE's direct solver (`dWorldStep`): a dense factorisation, O(rows³), exact for
+    /// closed loops whatever the step length.
+    Direct,
+}
+
 /// An ODE world, its collision space, its contact joints, bodies and geoms.
 ///
 /// Everything is destroyed together when the `World` is dropped, so handles cannot dangle.
@@ -41,6 +53,7 @@ pub struct World {
     /// Shared collision data the geoms read; released only after `Drop` destroyed the space.
     shared_meshes: Vec<Arc<TriMeshData>>,
     shared_heights: Vec<Arc<HeightFieldData>>,
+    solver: Solver,
     /// QuickStep's random sequence (it reorders constraint rows) for this world. ODE keeps
     /// one seed per thread; each step swaps this world's seed in and out, so a world's
     /// steps depend on its own history only, not on what else its thread has stepped.
@@ -84,6 +97,7 @@ impl World {
                 tyres: Vec::new(),
                 shared_meshes: Vec::new(),
                 shared_heights: Vec::new(),
+                solver: Solver::default(),
                 random_seed: 0,
             }
         }
@@ -93,6 +107,11 @@ impl World {
     pub fn set_gravity(&mut self, gravity: Vec3) {
         // SAFETY: the world is alive.
         unsafe { ffi::dWorldSetGravity(self.world, gravity[0], gravity[1], gravity[2]) };
+    }
+
+    /// Chooses the constraint solver for the steps from now on.
+    pub fn set_solver(&mut self, solver: Solver) {
+        self.solver = solver;
     }
 
     /// Sets the contact surface used for every contact from now on.
@@ -248,7 +267,7 @@ impl World {
         self.random_seed = 0;
     }
 
-    /// Advances the world by `dt` seconds: collision, contact joints, QuickStep.
+    /// Advances the world by `dt` seconds: collision, contact joints, the solver.
     pub fn step(&mut self, dt: f64) {
         ensure_thread_data();
         self.canonicalise_geom_order();
@@ -271,7 +290,10 @@ impl World {
             // The seed is thread-local in our ODE build: nothing else runs on this thread
             // between setting it and reading it back.
             ffi::dRandSetSeed(self.random_seed as _);
-            ffi::dWorldQuickStep(self.world, dt);
+            match self.solver {
+                Solver::QuickStep => ffi::dWorldQuickStep(self.world, dt),
+                Solver::Direct => ffi::dWorldStep(self.world, dt),
+            };
             self.random_seed = ffi::dRandGetSeed() as u64;
             ffi::dJointGroupEmpty(self.contacts);
         }
