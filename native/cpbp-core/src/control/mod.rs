@@ -4,6 +4,7 @@ mod anytime;
 mod arcade;
 mod bike_rollout;
 pub mod cpbp;
+pub mod fidelity;
 mod lean;
 mod optimizer;
 

@@ -6,6 +6,7 @@ use super::arcade::ArcadeController;
 use super::bike_rollout::{bike_priors, BikeRollout, LeanGoal};
 use super::cpbp::{PlanResult, Planner, PlannerConfig, WarmStart};
 use crate::bike::{Controls, DriveInput};
+use crate::ode::Solver;
 use crate::simulation::Simulation;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -28,6 +29,9 @@ pub struct OptimizerConfig {
     /// ride a different (less stable) bike and their plans mislead (measured: both modes
     /// fall at 10 km/h with 2).
     pub rollout_substeps: usize,
+    /// The rollouts' constraint solver; the master's is QuickStep (see
+    /// `fidelity::divergence` before choosing another).
+    pub rollout_solver: Solver,
     /// Lean tolerance s of eq. 4.7 (rad).
     pub lean_tolerance: f64,
     /// Mutation scale of the followed sequences (σm = scale · σ0).
@@ -48,6 +52,7 @@ impl Default for OptimizerConfig {
             particles: 15,
             horizon: 1.2,
             rollout_substeps: 4,
+            rollout_solver: Solver::QuickStep,
             lean_tolerance: 5f64.to_radians(),
             mutation_scale: 0.2,
             control_cost_weight: 0.01,
@@ -72,7 +77,11 @@ impl BikeOptimizer {
         let dt = sim.config().control_dt;
         let steps = (config.horizon / dt).round().max(1.0) as usize;
         let rollout = || BikeRollout {
-            world: sim.new_world(),
+            world: {
+                let mut world = sim.new_world();
+                world.set_solver(config.rollout_solver);
+                world
+            },
             bike: sim.bike().clone(),
             gravity: sim.config().gravity,
             up: sim.up(),
