@@ -1,0 +1,65 @@
+//! Plans over and over for a profiler (docs/benchmarks.md, "Where a plan's time goes"):
+//! `perf record -F 2000 native/target/release/examples/plan_profile [N] [threads] [plans]`.
+//! Combined mode, riding off towards 15 km/h on flat ground, the game's default rollout physics.
+
+use std::sync::Arc;
+
+use cpbp_core::bike::{Controls, DriveInput, Placement, POSE_GAIN};
+use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode};
+use cpbp_core::simulation::{Simulation, SimulationConfig};
+use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use glam::DVec3;
+
+fn main() {
+    let numbers: Vec<usize> = std::env::args()
+        .skip(1)
+        .map(|a| a.parse().expect("whole numbers: N threads plans"))
+        .collect();
+    let (n, threads, plans) = match numbers[..] {
+        [n, t, p] => (n, t, p),
+        [n, t] => (n, t, 60),
+        [n] => (n, 2, 60),
+        _ => (64, 2, 60),
+    };
+    let plane = TerrainShape::Plane {
+        normal: DVec3::Y,
+        distance: 0.0,
+    };
+    let piece = TerrainPiece {
+        source: "profile".into(),
+        shape: plane,
+        placement: Placement::IDENTITY,
+    };
+    let terrain = Arc::new(Terrain::new(vec![piece]).expect("a plane"));
+    let spawn = Placement {
+        position: DVec3::new(0.0, 0.02, 0.0),
+        ..Placement::IDENTITY
+    };
+    let mut sim = Simulation::new(SimulationConfig::default(), terrain, spawn);
+    let drive = DriveInput {
+        throttle: 0.6,
+        brake: 0.0,
+        max_speed: 15.0 / 3.6,
+    };
+    // One second of riding off, the rider holding the pose, as `make bench` plans.
+    let mut controls = Controls::default();
+    drive.apply(sim.bike().params().wheel_radius, &mut controls);
+    for _ in 0..30 {
+        sim.bike().pose_hold(sim.world(), POSE_GAIN, &mut controls);
+        sim.set_controls(controls);
+        sim.step();
+    }
+    let config = OptimizerConfig {
+        mode: OptimizerMode::Combined,
+        particles: n,
+        threads,
+        ..OptimizerConfig::default()
+    };
+    let mut optimizer = BikeOptimizer::new(&sim, config);
+    let started = std::time::Instant::now();
+    for _ in 0..plans {
+        optimizer.controls(&sim, 0.0, &drive);
+    }
+    let ms = started.elapsed().as_secs_f64() * 1000.0 / plans as f64;
+    println!("N = {n}, {threads} thread(s): {ms:.1} ms per plan");
+}
