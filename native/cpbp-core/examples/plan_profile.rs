@@ -7,7 +7,7 @@ use std::sync::Arc;
 use cpbp_core::bike::{Controls, DriveInput, Placement, POSE_GAIN};
 use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use cpbp_core::terrain::Terrain;
 use glam::DVec3;
 
 fn main() {
@@ -21,16 +21,7 @@ fn main() {
         [n] => (n, 2, 60),
         _ => (64, 2, 60),
     };
-    let plane = TerrainShape::Plane {
-        normal: DVec3::Y,
-        distance: 0.0,
-    };
-    let piece = TerrainPiece {
-        source: "profile".into(),
-        shape: plane,
-        placement: Placement::IDENTITY,
-    };
-    let terrain = Arc::new(Terrain::new(vec![piece]).expect("a plane"));
+    let terrain = Arc::new(Terrain::flat());
     let spawn = Placement {
         position: DVec3::new(0.0, 0.02, 0.0),
         ..Placement::IDENTITY

@@ -93,6 +93,19 @@ impl Terrain {
         Ok(Self { pieces })
     }
 
+    /// Endless flat ground: the plane y = 0 (benchmarks, profiles and tests).
+    pub fn flat() -> Self {
+        let plane = TerrainPiece {
+            source: "flat ground".into(),
+            shape: TerrainShape::Plane {
+                normal: DVec3::Y,
+                distance: 0.0,
+            },
+            placement: Placement::IDENTITY,
+        };
+        Self::new(vec![plane]).expect("a horizontal plane is valid terrain")
+    }
+
     pub fn len(&self) -> usize {
         self.pieces.len()
     }

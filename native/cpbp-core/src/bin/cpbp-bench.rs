@@ -36,7 +36,7 @@ fn main() {
         );
     }
 
-    let flat = rolling_bike(flat_terrain());
+    let flat = rolling_bike(Arc::new(Terrain::flat()));
     let bumps = rolling_bike(bump_field());
     row(
         "bike + rider: one ODE step (1/120 s), flat ground",
@@ -93,7 +93,7 @@ fn main() {
         "trajectories", "plan (ms)", "mean wait", "max wait", "late"
     );
     for n in [5, 15, 24, 32] {
-        let h = handover(&flat_terrain(), n);
+        let h = handover(&Arc::new(Terrain::flat()), n);
         println!(
             "{n:<14} {:>14.1} {:>11.2} ms {:>11.2} ms {:>9.0}%",
             h.0,
@@ -180,14 +180,6 @@ fn sphere_step_cost(bodies: usize, steps: usize) -> f64 {
         world.add_sphere(0.3, Some(body));
     }
     time_per_call(steps, || world.step(ODE_DT))
-}
-
-fn flat_terrain() -> Arc<Terrain> {
-    let plane = TerrainShape::Plane {
-        normal: DVec3::Y,
-        distance: 0.0,
-    };
-    Arc::new(Terrain::new(vec![piece(plane)]).expect("valid plane"))
 }
 
 /// A 64 m × 64 m grid of 1 m cells with gentle bumps, as one triangle mesh.

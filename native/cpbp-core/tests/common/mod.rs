@@ -11,7 +11,7 @@ use cpbp_core::bike::{DriveInput, Placement};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
 
 pub const FRAMES_PER_SECOND: usize = 30;
@@ -19,22 +19,13 @@ pub const FRAMES_PER_SECOND: usize = 30;
 /// A simulation on an endless flat plane, the bike at rest facing an arbitrary heading
 /// (so nothing is symmetric by accident).
 pub fn flat_ride() -> Simulation {
-    let plane = TerrainShape::Plane {
-        normal: DVec3::Y,
-        distance: 0.0,
-    };
-    let piece = TerrainPiece {
-        source: "flat".into(),
-        shape: plane,
-        placement: Placement::IDENTITY,
-    };
     let spawn = Placement {
         position: DVec3::new(0.0, 0.02, 0.0),
         rotation: DQuat::from_rotation_y(0.3),
     };
     Simulation::new(
         SimulationConfig::default(),
-        Arc::new(Terrain::new(vec![piece]).unwrap()),
+        Arc::new(Terrain::flat()),
         spawn,
     )
 }
