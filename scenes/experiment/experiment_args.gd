@@ -7,6 +7,7 @@ const MAX_TRAJECTORIES := 256
 
 var speed := 15.0
 var controller := "combined"
+var physics := "classic"
 var trajectories: Array[int] = [5]
 var base_seed := 1000
 var first := 0
@@ -31,6 +32,15 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 				if not BikeSimulation.controller_names().has(value):
 					args._fail("--controller must be one of %s, not '%s'" % [_choices(), value])
 				args.controller = value
+			"physics":
+				if not BikeSimulation.physics_names().has(value):
+					args._fail(
+						(
+							"--physics must be one of %s, not '%s'"
+							% [", ".join(BikeSimulation.physics_names()), value]
+						)
+					)
+				args.physics = value
 			"trajectories":
 				args.trajectories.clear()
 				for item in value.split(","):

@@ -8,7 +8,7 @@ extends Node
 ##
 ## Arguments (after `--`): --speed=KMH --controller=arcade|optimizer|combined
 ## --trajectories=N[,N...] --seed=BASE --first=I --count=K --threads=T [--timing --steps=S]
-## [--warm-up=CONTROLLER] [--platform]
+## [--physics=classic|exact] [--warm-up=CONTROLLER] [--platform]
 ## Attempt i uses bump seed BASE + i and a planner seed drawn from it, so every controller
 ## meets the same bumps at attempt i and a rerun of an attempt repeats it exactly.
 ## Before any attempt it prints one `PLATFORM {json}` line (NativeModule.platform()), what
@@ -61,6 +61,7 @@ func _build(args: ExperimentArgs) -> bool:
 	_bike.terrain_root = NodePath("../%s" % _level.name)
 	_bike.transform = _level.spawn_points()[0].spawn_transform()
 	_bike.controller = args.controller
+	_bike.physics = args.physics
 	_bike.planning_threads = args.threads
 	# The game's own default, not this machine's saved settings.
 	_bike.motor_force = Settings.DEFAULTS[&"motor_force"]
@@ -90,6 +91,7 @@ func _ride_attempts(args: ExperimentArgs) -> void:
 				{
 					"speed_kmh": args.speed,
 					"controller": args.controller,
+					"physics": args.physics,
 					"trajectories": args.trajectories[0] if args.controller != "arcade" else 0,
 					"attempt": attempt,
 					"seed": bump_seed,

@@ -25,6 +25,8 @@ func test_a_block_of_attempts_is_read() -> void:
 	assert_eq(args.trajectories, [10] as Array[int])
 	assert_eq([args.base_seed, args.first, args.count, args.threads], [7, 40, 10, 1])
 	assert_false(args.timing)
+	assert_eq(args.physics, "classic", "the default physics")
+	assert_eq(ExperimentArgs.parse(PackedStringArray(["--physics=exact"])).physics, "exact")
 
 
 func test_the_timing_study_takes_a_list_of_counts() -> void:
@@ -54,6 +56,7 @@ func test_bad_values_are_explained() -> void:
 		"--count=-3": "--count must be within",
 		"--threads=65": "--threads must be within",
 		"--warm-up=autopilot": "--warm-up must be",
+		"--physics=quickstep": "--physics must be one of classic, exact",
 		"--colour=red": "unknown argument",
 	}
 	for argument: String in cases:

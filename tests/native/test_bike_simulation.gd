@@ -160,6 +160,25 @@ func test_the_controller_is_a_name_from_the_one_list() -> void:
 	bike.free()
 
 
+func test_the_physics_is_a_name_from_the_one_list_and_the_exact_model_rides() -> void:
+	assert_eq(BikeSimulation.physics_names(), PackedStringArray(["classic", "exact"]))
+	var probe := BikeSimulation.new()
+	assert_eq(probe.physics, "exact", "the game's physics by default")
+	probe.free()
+	for physics: String in BikeSimulation.physics_names():
+		_bike = BikeSimulation.new()
+		_bike.physics = physics
+		_bike.controller = "arcade"
+		_bike.transform = Transform3D(Basis(), Vector3(0, 0.02, 0))
+		_level.add_child(_bike)
+		await wait_physics_frames(1)
+		_bike.set_drive(1.0, 0.0)
+		_bike.advance(150)
+		assert_false(_bike.is_crashed(), "%s: arcade rides 5 s" % physics)
+		assert_gt(_bike.get_speed(), 3.0, "%s: and gathers speed" % physics)
+		_bike.queue_free()
+
+
 func _spawn(where: Transform3D) -> void:
 	_bike = BikeSimulation.new()
 	_bike.transform = where

@@ -14,10 +14,13 @@ import matplotlib.pyplot as plt  # noqa: E402  (after choosing the headless back
 from .coast import Physics, build  # noqa: E402
 from .compare import Comparison, compare  # noqa: E402
 
-# The game's step first, then what converges to the benchmark, then the candidates for
-# cheaper rollouts.
-SETTINGS = [Physics(), Physics(dt=1 / 1000), Physics(dt=1 / 240), Physics("direct"),
-            Physics("direct", dt=1 / 60), Physics("direct", dt=1 / 30)]
+# The game's step first (classic physics model, then exact), then what converges to the
+# benchmark, then candidates for cheaper rollouts.
+EXPLICIT = "explicit"
+SETTINGS = [Physics(), Physics("direct", gyroscopic=EXPLICIT), Physics(dt=1 / 1000),
+            Physics(dt=1 / 240), Physics(gyroscopic=EXPLICIT), Physics("direct"),
+            Physics("direct", dt=1 / 60, gyroscopic=EXPLICIT),
+            Physics("direct", dt=1 / 30, gyroscopic=EXPLICIT), Physics("direct", dt=1 / 30)]
 
 
 def percent(found: float | None, expected: float) -> str:

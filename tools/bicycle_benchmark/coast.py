@@ -36,14 +36,18 @@ class Physics:
     solver: str = "quickstep"
     dt: float = 1.0 / 120.0
     duration: float = 10.0
+    # How the wheels' gyroscopic torque is computed: ODE's implicit term (the classic
+    # physics model) or explicitly (the exact model).
+    gyroscopic: str = "implicit"
 
     @property
     def label(self) -> str:
-        return f"{self.solver} at 1/{round(1.0 / self.dt)} s"
+        wheels = ", explicit gyro" if self.gyroscopic == "explicit" else ""
+        return f"{self.solver} at 1/{round(1.0 / self.dt)} s{wheels}"
 
     def arguments(self) -> list[str]:
         return ["--solver", self.solver, "--dt", repr(self.dt), "--duration",
-                repr(self.duration)]
+                repr(self.duration), "--gyroscopic", self.gyroscopic]
 
 
 def build() -> None:

@@ -1,4 +1,5 @@
-"""Experiment configurations: a controller (with its trajectory count) at a speed."""
+"""Experiment configurations: a controller (with its trajectory count, in a physics
+model) at a speed."""
 
 from __future__ import annotations
 
@@ -14,30 +15,45 @@ THESIS_CONTROLLERS = (
     "combined-10",
     "combined-15",
 )
+# The game's physics models (cpbp_core::physics::PhysicsModel); rows without one are
+# classic, the model every row was ridden in before the exact model existed.
+PHYSICS = ("classic", "exact")
 # Trajectory counts of the planning-time study (Figure 5.2 and beyond).
 TIMING_COUNTS = (5, 6, 8, 10, 15, 20, 32, 64, 128)
 
 
 @dataclass(frozen=True, order=True)
 class Controller:
-    """`arcade`, or a planner (`optimizer`, `combined`) with its trajectory count N."""
+    """`arcade`, or a planner (`optimizer`, `combined`) with its trajectory count N, riding
+    in a physics model: `combined-5` is classic, `combined-5:exact` the exact model."""
 
     kind: str
     trajectories: int = 0
+    physics: str = "classic"
 
     @property
     def label(self) -> str:
-        return self.kind if self.kind == "arcade" else f"{self.kind}-{self.trajectories}"
+        name = self.kind if self.kind == "arcade" else f"{self.kind}-{self.trajectories}"
+        return name if self.physics == "classic" else f"{name}:{self.physics}"
+
+    def in_physics(self, physics: str) -> "Controller":
+        return Controller(self.kind, self.trajectories, physics)
 
     @staticmethod
     def parse(label: str) -> "Controller":
-        kind, _, count = label.strip().partition("-")
+        name, _, physics = label.strip().partition(":")
+        physics = physics or "classic"
+        if physics not in PHYSICS:
+            raise ValueError(f"unknown physics '{physics}' in '{label}': use "
+                             f"{' or '.join(PHYSICS)}")
+        kind, _, count = name.partition("-")
         if kind == "arcade" and not count:
-            return Controller("arcade")
+            return Controller("arcade", 0, physics)
         if kind in ("optimizer", "combined") and count.isdigit() and 1 <= int(count) <= 256:
-            return Controller(kind, int(count))
+            return Controller(kind, int(count), physics)
         raise ValueError(
-            f"unknown controller '{label}': use arcade, optimizer-N or combined-N (N in 1–256)"
+            f"unknown controller '{label}': use arcade, optimizer-N or combined-N (N in 1–256), "
+            "with :exact for the exact physics"
         )
 
 
@@ -59,9 +75,11 @@ def parse_controllers(text: str) -> list[Controller]:
     return sorted({Controller.parse(item) for item in text.split(",")}, key=display_order)
 
 
-def display_order(controller: Controller) -> tuple[int, int]:
-    """The thesis's order: arcade, then the optimizer, then combined, each by N."""
-    return (["arcade", "optimizer", "combined"].index(controller.kind), controller.trajectories)
+def display_order(controller: Controller) -> tuple[int, int, int]:
+    """The thesis's order: arcade, then the optimizer, then combined, each by N, each
+    physics model beside the classic one."""
+    return (["arcade", "optimizer", "combined"].index(controller.kind), controller.trajectories,
+            PHYSICS.index(controller.physics))
 
 
 def parse_counts(text: str) -> list[int]:

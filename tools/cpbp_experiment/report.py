@@ -130,14 +130,16 @@ def cost_table(summaries: dict[Config, Summary], attempts: list[Attempt]) -> str
 
 
 def paired_table(attempts: list[Attempt]) -> str:
-    """Each planner against arcade, and combined against the optimizer at the same N, on
-    the attempts both rode (the same bumps), with the exact McNemar test."""
+    """Each planner against arcade, and combined against the optimizer at the same N (in
+    the same physics), and each controller in the exact physics against itself in the
+    classic, on the attempts both rode (the same bumps), with the exact McNemar test."""
     outcome = {(a.config, a.attempt): a.outcome == "goal" for a in attempts}
     configs = {a.config for a in attempts}
     controllers = sorted({c.controller for c in configs}, key=display_order)
-    pairs = [(c, Controller("arcade")) for c in controllers if c.kind != "arcade"]
-    pairs += [(c, Controller("optimizer", c.trajectories)) for c in controllers
+    pairs = [(c, Controller("arcade", 0, c.physics)) for c in controllers if c.kind != "arcade"]
+    pairs += [(c, Controller("optimizer", c.trajectories, c.physics)) for c in controllers
               if c.kind == "combined"]
+    pairs += [(c, c.in_physics("classic")) for c in controllers if c.physics != "classic"]
     lines = [
         "| speed | A | B | pairs | both goal | only A | only B | neither | McNemar p |",
         "|---|---|---|---|---|---|---|---|---|",
@@ -216,7 +218,9 @@ def success_chart(summaries: dict[Config, Summary], path: Path) -> None:
             rates.append(100 * s.rate)
             below.append(max(0.0, 100 * (s.rate - low)))
             above.append(max(0.0, 100 * (high - s.rate)))
+        # The exact physics model's bars are hatched beside the classic ones.
         ax.bar(xs, rates, width * 0.92, label=controller.label, color=colours[controller],
+               hatch="//" if controller.physics != "classic" else None, edgecolor="white",
                yerr=[below, above], capsize=2.5, error_kw={"elinewidth": 0.8})
     ax.set_xticks(range(len(speeds)), [f"{s} km/h" for s in speeds])
     ax.set_ylim(0, 105)

@@ -30,7 +30,10 @@ LEGACY_FIELDS = (
 # `planner_seed` is the planner's seed for the attempt, `late_plans` the steps driven
 # without that step's plan (0 for a row that repeats exactly), `platform` the identity of
 # the fingerprint in platforms.json it was made on.
-FIELDS = LEGACY_FIELDS + ("planner_seed", "late_plans", "platform")
+PLATFORM_FIELDS = LEGACY_FIELDS + ("planner_seed", "late_plans", "platform")
+# `physics` is the physics model the row was ridden in (earlier files: all classic).
+FIELDS = PLATFORM_FIELDS + ("physics",)
+OUTDATED_LAYOUTS = (LEGACY_FIELDS, PLATFORM_FIELDS)
 OUTCOMES = ("goal", "fell", "timeout")
 
 
@@ -75,6 +78,7 @@ class Attempt:
             "" if self.planner_seed is None else str(self.planner_seed),
             "" if self.late_plans is None else str(self.late_plans),
             self.platform,
+            c.controller.physics,
         ]
 
     def outcome_fields(self) -> list[str]:
@@ -85,6 +89,7 @@ class Attempt:
     def from_row(row: dict[str, str]) -> "Attempt":
         kind = row["controller"]
         label = kind if kind == "arcade" else f"{kind}-{row['trajectories']}"
+        label += f":{row['physics']}" if row.get("physics") else ""
         outcome = row["outcome"]
         if outcome not in OUTCOMES:
             raise ValueError(f"outcome '{outcome}' is not one of {', '.join(OUTCOMES)}")
@@ -107,7 +112,7 @@ class Attempt:
 class ResultsFile:
     def __init__(self, path: Path):
         self.path = path
-        # Read in the legacy columns: rows are added only after `upgrade`.
+        # Read in an earlier layout of the columns: rows are added only after `upgrade`.
         self.legacy = False
 
     def load(self) -> list[Attempt]:
@@ -124,7 +129,7 @@ class ResultsFile:
         if not text:
             return []
         reader = csv.DictReader(io.StringIO(text))
-        self.legacy = tuple(reader.fieldnames or ()) == LEGACY_FIELDS
+        self.legacy = tuple(reader.fieldnames or ()) in OUTDATED_LAYOUTS
         if tuple(reader.fieldnames or ()) != FIELDS and not self.legacy:
             raise ResultsError(
                 f"{self.path} is not an experiment results file (its columns are "
@@ -145,8 +150,9 @@ class ResultsFile:
         return attempts
 
     def upgrade(self, attempts: list[Attempt]) -> None:
-        """Rewrites a legacy file in today's columns (its rows' platform unrecorded), via a
-        temporary file renamed over it, so a kill leaves the old file or the new one."""
+        """Rewrites a file of an earlier layout in today's columns (a row's platform
+        unrecorded if it had none, its physics classic), via a temporary file renamed over
+        it, so a kill leaves the old file or the new one."""
         buffer = io.StringIO()
         writer = csv.writer(buffer, lineterminator="\n")
         writer.writerow(FIELDS)

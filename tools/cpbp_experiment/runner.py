@@ -116,6 +116,7 @@ def block_arguments(block: Block, base_seed: int, threads: int) -> list[str]:
         f"--first={block.first}",
         f"--count={block.count}",
         f"--threads={threads}",
+        f"--physics={controller.physics}",
     ]
 
 
@@ -299,6 +300,7 @@ def _attempt_of(payload: str, block: Block, platform: str) -> Attempt:
     ok = (
         data["controller"] == controller.kind
         and int(data["trajectories"]) == controller.trajectories
+        and data.get("physics", "classic") == controller.physics
         and round(float(data["speed_kmh"])) == block.config.speed_kmh
         and int(data["attempt"]) in block.attempts()
     )

@@ -1,18 +1,26 @@
 //! Plans over and over for a profiler (docs/benchmarks.md, "Where a plan's time goes"):
-//! `perf record -F 2000 native/target/release/examples/plan_profile [N] [threads] [plans]`.
-//! Combined mode, riding off towards 15 km/h on flat ground, the game's default rollout physics.
+//! `perf record -F 2000 native/target/release/examples/plan_profile [N] [threads] [plans]
+//! [physics model]`. Combined mode, riding off towards 15 km/h on flat ground, rolling out
+//! in the physics model's rollout physics (classic unless named).
 
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Placement, POSE_GAIN};
 use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode};
+use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
 use glam::DVec3;
 
 fn main() {
-    let numbers: Vec<usize> = std::env::args()
-        .skip(1)
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let physics = match arguments.get(3) {
+        Some(name) => PhysicsModel::from_name(name).expect("a physics model: classic or exact"),
+        None => PhysicsModel::Classic,
+    };
+    let numbers: Vec<usize> = arguments
+        .iter()
+        .take(3)
         .map(|a| a.parse().expect("whole numbers: N threads plans"))
         .collect();
     let (n, threads, plans) = match numbers[..] {
@@ -26,7 +34,11 @@ fn main() {
         position: DVec3::new(0.0, 0.02, 0.0),
         ..Placement::IDENTITY
     };
-    let mut sim = Simulation::new(SimulationConfig::default(), terrain, spawn);
+    let config = SimulationConfig {
+        physics,
+        ..SimulationConfig::default()
+    };
+    let mut sim = Simulation::new(config, terrain, spawn);
     let drive = DriveInput {
         throttle: 0.6,
         brake: 0.0,
@@ -44,6 +56,8 @@ fn main() {
         mode: OptimizerMode::Combined,
         particles: n,
         threads,
+        rollout_solver: physics.rollout_solver(),
+        rollout_substeps: physics.rollout_substeps(),
         ..OptimizerConfig::default()
     };
     let mut optimizer = BikeOptimizer::new(&sim, config);

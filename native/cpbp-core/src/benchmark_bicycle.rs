@@ -8,7 +8,7 @@
 use glam::{DMat3, DQuat, DVec3};
 
 use crate::bike::BikeParams;
-use crate::ode::{BodyId, JointId, Mass, Solver, SurfaceParams, World};
+use crate::ode::{BodyId, Gyroscopic, JointId, Mass, Solver, SurfaceParams, World};
 
 /// The paper's Table 1, in its own frame: x forward, y to the right, z down, origin at the
 /// rear wheel's contact; lengths in m, masses in kg, inertias in kg·m² about each body's
@@ -108,7 +108,8 @@ impl BenchmarkParameters {
     }
 }
 
-/// How to step the coast: the game rides QuickStep at 1/120 s.
+/// How to step the coast: the game rides 1/120 s steps, QuickStep with implicit
+/// gyroscopics in the classic physics model, direct with explicit wheels in the exact one.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CoastConfig {
     /// Forward speed at the start (m/s).
@@ -120,6 +121,8 @@ pub struct CoastConfig {
     /// ODE step (s).
     pub dt: f64,
     pub solver: Solver,
+    /// How the wheels' gyroscopic torque is computed (`PhysicsModel::wheel_gyroscopic`).
+    pub gyroscopic: Gyroscopic,
     /// The tyres' contact surface; the game's bike uses its tyre friction with ODE's
     /// default softness.
     pub surface: SurfaceParams,
@@ -135,6 +138,7 @@ impl Default for CoastConfig {
             duration: 8.0,
             dt: 1.0 / 120.0,
             solver: Solver::QuickStep,
+            gyroscopic: Gyroscopic::Implicit,
             surface: SurfaceParams {
                 mu: BikeParams::default().tyre_friction,
                 ..SurfaceParams::default()
@@ -210,6 +214,9 @@ impl Bicycle {
         let front_frame = world.add_body(mass(p.m_h, inertia_to_game(p.i_h)), at(p.x_h, p.z_h));
         let front_wheel = world.add_body(mass(p.m_f, wheel_inertia(p.i_fxx, p.i_fyy)), front_axle);
         world.add_tyre(p.r_f, 0.0, front_wheel);
+        for wheel in [rear_wheel, front_wheel] {
+            world.set_gyroscopic(wheel, config.gyroscopic);
+        }
 
         let axle = [0.0, 0.0, 1.0];
         world.add_hinge(rear_frame, Some(rear_wheel), rear_axle, axle);

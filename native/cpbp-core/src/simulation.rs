@@ -8,6 +8,7 @@ use glam::DVec3;
 
 use crate::bike::{Bike, BikeParams, Controls, CrashCause, CrashMonitor, Part, Placement};
 use crate::ode::World;
+use crate::physics::PhysicsModel;
 use crate::terrain::Terrain;
 
 /// How the world is stepped.
@@ -20,6 +21,8 @@ pub struct SimulationConfig {
     /// ODE steps per control step: 4 (1/120 s) keeps the rider's joints stiff and the
     /// steering steady; 1 lets the rider sag and the bar drift by degrees.
     pub substeps: usize,
+    /// Solver, wheel gyroscopics and the rollouts' stepping (`PhysicsModel`).
+    pub physics: PhysicsModel,
     pub bike: BikeParams,
 }
 
@@ -29,6 +32,7 @@ impl Default for SimulationConfig {
             gravity: DVec3::new(0.0, -9.81, 0.0),
             control_dt: 1.0 / 30.0,
             substeps: 4,
+            physics: PhysicsModel::default(),
             bike: BikeParams::default(),
         }
     }
@@ -231,9 +235,14 @@ impl Simulation {
 
 fn build_world(config: &SimulationConfig, terrain: &Terrain, spawn: &Placement) -> (World, Bike) {
     let mut world = World::new(config.gravity.to_array());
+    world.set_solver(config.physics.solver());
     // The bike first: its bodies and joints then have the same indices in every world,
     // whatever the terrain, so snapshots move between worlds and levels.
-    let bike = Bike::build(&mut world, &config.bike, spawn);
+    let bike = Bike::build(&mut world, &config.bike, spawn)
+        .with_arm_strength(config.physics.arm_strength());
+    for wheel in [Part::RearWheel, Part::FrontWheel] {
+        world.set_gyroscopic(bike.body(wheel), config.physics.wheel_gyroscopic());
+    }
     terrain.add_to(&mut world);
     (world, bike)
 }

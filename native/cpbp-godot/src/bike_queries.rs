@@ -8,8 +8,8 @@ use glam::{DQuat, DVec3};
 use godot::prelude::*;
 
 use crate::bike_simulation::BikeSimulation;
-use crate::controller_choice;
 use crate::convert::{basis, transform, vector3};
+use crate::{controller_choice, physics_choice};
 
 #[godot_api(secondary)]
 impl BikeSimulation {
@@ -39,6 +39,25 @@ impl BikeSimulation {
     #[func]
     fn controller_names() -> PackedStringArray {
         controller_choice::offered_names()
+    }
+
+    /// Control steps simulated since the bike was built or last placed.
+    #[func]
+    fn get_step_count(&self) -> i64 {
+        self.ride.as_ref().map_or(0, |r| r.steps() as i64)
+    }
+
+    /// Control steps since the bike was last placed at which the optimizer drove without a
+    /// plan for that step (a late plan, or none): 0 for a ride that repeats exactly.
+    #[func]
+    fn get_late_plan_count(&self) -> i64 {
+        self.ride.as_ref().map_or(0, |r| r.late_plans() as i64)
+    }
+
+    /// The physics models, by name (`cpbp_core::physics::PhysicsModel::ALL`).
+    #[func]
+    fn physics_names() -> PackedStringArray {
+        physics_choice::names()
     }
 
     /// What menus show for controller `name` (empty for an unknown name).

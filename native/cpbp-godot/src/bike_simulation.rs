@@ -7,6 +7,7 @@ use std::time::Duration;
 
 use cpbp_core::bike::{Controls, DriveInput, Part, CONTROL_DIM};
 use cpbp_core::control::{OptimizerConfig, PlanWait};
+use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, PlannerSettings, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
@@ -17,6 +18,7 @@ use godot::prelude::*;
 use crate::bike_queries::pose_of;
 use crate::controller_choice::BikeController;
 use crate::convert::placement;
+use crate::physics_choice::BikePhysics;
 use crate::terrain_import;
 
 /// Simulates the bike and its rider with ODE on the level's static collision shapes.
@@ -39,6 +41,12 @@ pub struct BikeSimulation {
     /// ODE steps per control step (more: stiffer joints, slower).
     #[export(range = (1.0, 16.0))]
     substeps: i32,
+    /// The physics model, by name: `classic` (QuickStep, the physics the thesis
+    /// reproduction was evaluated on) or `exact` (direct solver, explicit wheel
+    /// gyroscopics: the benchmark bicycle within 10 %, cheaper rollouts). Read when the
+    /// ride is built (`_ready`); `physics_names()` lists them.
+    #[export]
+    pub(crate) physics: BikePhysics,
     /// Who balances and steers, by name: `arcade` (the PD controller of the thesis,
     /// §4.3.2), `manual` (nobody: the bar follows `set_steer_rate`, for inspecting the
     /// physics), `optimizer` (C-PBP) or `combined` (C-PBP warm-started with the arcade
@@ -55,9 +63,9 @@ pub struct BikeSimulation {
     /// the requested lean more strictly.
     #[export(range = (1.0, 30.0, 0.5, suffix = "°"))]
     lean_tolerance_deg: f64,
-    /// ODE steps per planning step in the rollouts: 4 is the master's own physics; fewer
-    /// plan faster but predict a different bike.
-    #[export(range = (1.0, 8.0))]
+    /// ODE steps per planning step in the rollouts; 0 takes the physics model's own (4 in
+    /// classic, 1 in exact). Fewer plan faster but predict a different bike.
+    #[export(range = (0.0, 8.0))]
     rollout_substeps: i32,
     /// Longest the game waits at a control step for the planning thread (ms); a later
     /// plan is taken over at a later step while the last best trajectory plays on.
@@ -99,11 +107,12 @@ impl INode3D for BikeSimulation {
             max_speed_kmh: 25.0,
             motor_force: 1.0,
             substeps: 4,
+            physics: BikePhysics::exact,
             controller: BikeController::arcade,
             trajectories: 15,
             horizon: 1.2,
             lean_tolerance_deg: 5.0,
-            rollout_substeps: 4,
+            rollout_substeps: 0,
             plan_wait_ms: 12.0,
             wait_for_every_plan: false,
             planning_threads: 0,
@@ -130,6 +139,7 @@ impl INode3D for BikeSimulation {
         };
         let config = SimulationConfig {
             substeps: self.substeps.clamp(1, 16) as usize,
+            physics: self.physics.into(),
             ..SimulationConfig::default()
         };
         let mut ride = Ride::new(
@@ -269,19 +279,6 @@ impl BikeSimulation {
         }
     }
 
-    /// Control steps simulated since the bike was built or last placed.
-    #[func]
-    fn get_step_count(&self) -> i64 {
-        self.ride.as_ref().map_or(0, |r| r.steps() as i64)
-    }
-
-    /// Control steps since the bike was last placed at which the optimizer drove without a
-    /// plan for that step (a late plan, or none): 0 for a ride that repeats exactly.
-    #[func]
-    fn get_late_plan_count(&self) -> i64 {
-        self.ride.as_ref().map_or(0, |r| r.late_plans() as i64)
-    }
-
     /// Makes the planner's thread die with `reason`, as a bug in it would: for tests of
     /// the fallback and its report. Nothing happens unless a planner drives.
     #[func]
@@ -332,12 +329,21 @@ impl BikeSimulation {
     /// The exports, as the ride's settings: GDScript may change them at any time.
     fn sync_settings(&mut self) {
         let kind = self.controller_kind();
+        // The built ride's physics: a change of the export waits for the next build.
+        let physics = self
+            .sim()
+            .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
+        let rollout_substeps = match self.rollout_substeps.clamp(0, 8) {
+            0 => physics.rollout_substeps(),
+            n => n as usize,
+        };
         let planner = PlannerSettings {
             optimizer: OptimizerConfig {
                 particles: self.trajectories.clamp(1, 256) as usize,
                 horizon: self.horizon.clamp(0.2, 3.0),
                 lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
-                rollout_substeps: self.rollout_substeps.clamp(1, 8) as usize,
+                rollout_substeps,
+                rollout_solver: physics.rollout_solver(),
                 threads: self.planning_threads.clamp(0, 64) as usize,
                 seed: self.planner_seed as u64,
                 ..OptimizerConfig::default()

@@ -7,6 +7,7 @@ mod controller_choice;
 mod convert;
 mod native_info;
 mod ode_world;
+mod physics_choice;
 mod terrain_check;
 mod terrain_import;
 

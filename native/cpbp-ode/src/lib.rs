@@ -19,7 +19,7 @@ pub use mass::Mass;
 pub use runtime::{c_library_version, configuration, ensure_thread_data, Configuration};
 pub use shared_data::{HeightFieldData, TriMeshData};
 pub use state::{BodyState, StateMismatch, WorldState};
-pub use world::{BodyId, GeomId, Solver, World};
+pub use world::{BodyId, GeomId, Gyroscopic, Solver, World};
 
 /// Three-component vector as ODE uses it (double precision).
 pub type Vec3 = [f64; 3];

@@ -1,6 +1,6 @@
 //! A world steps, collides and moves between threads, through the public API only.
 
-use cpbp_ode::{Mass, Solver, World};
+use cpbp_ode::{Gyroscopic, Mass, Solver, World};
 
 const G: f64 = 9.81;
 
@@ -95,4 +95,40 @@ fn a_tabulated_inertia_is_taken_and_an_impossible_one_refused() {
     let lopsided = [[1.0, 0.2, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     assert!(Mass::with_inertia(1.0, lopsided).is_none(), "not symmetric");
     assert!(Mass::with_inertia(0.0, frame).is_none());
+}
+
+#[test]
+fn a_gyroscope_precesses_at_the_textbook_rate_with_the_explicit_gyroscopic_term() {
+    // A wheel spinning at 40 rad/s about its axle, held by a ball joint on the axle 0.2 m
+    // from its centre: gravity's torque turns the axle about the vertical at
+    // Ω = m g d / (I_s ω_s). This is the coupling a bicycle's wheels give its frame.
+    let (mass, radius, arm, spin) = (2.0, 0.3, 0.2, 40.0);
+    let precession = mass * G * arm / (0.5 * mass * radius * radius * spin);
+    let seconds = 2.0;
+    let turned = |mode: Gyroscopic| {
+        let mut world = World::new([0.0, -G, 0.0]);
+        let wheel = world.add_body(Mass::cylinder(mass, 0, radius, 0.05), [arm, 0.0, 0.0]);
+        world.add_ball(wheel, None, [0.0; 3]);
+        world.set_gyroscopic(wheel, mode);
+        world.set_body_angular_velocity(wheel, [spin, precession, 0.0]);
+        world.set_body_linear_velocity(wheel, [0.0, 0.0, -precession * arm]);
+        for _ in 0..(seconds * 120.0) as usize {
+            world.step(1.0 / 120.0);
+        }
+        let [x, _, z] = world.body_position(wheel);
+        (-z).atan2(x)
+    };
+    let expected = precession * seconds;
+    let explicit = turned(Gyroscopic::Explicit);
+    let implicit = turned(Gyroscopic::Implicit);
+    // Measured: explicit −1 %, ODE's implicit term +7 % (it weakens the wheel's coupling).
+    let error = |found: f64| (found / expected - 1.0).abs();
+    assert!(
+        error(explicit) < 0.03,
+        "explicit turned {explicit}, expected {expected}"
+    );
+    assert!(
+        error(implicit) > 2.0 * error(explicit),
+        "implicit turned {implicit}"
+    );
 }

@@ -46,6 +46,22 @@ class ReportTest(unittest.TestCase):
         self.assertIn("| 10 km/h | combined-5 | arcade | 148 | 15 | 0 | 66 | 67 | **", paired)
         self.assertNotIn("25 km/h", paired, "no arcade attempts at 25 km/h to pair with")
 
+    def test_a_controller_in_the_exact_physics_pairs_with_itself_in_the_classic(self):
+        exact = COMBINED.in_physics("exact")
+        paired = report.paired_table(self.attempts + attempts(Config(25, exact), 20, 9))
+        # Attempts 0–28 at 25 km/h: classic reached the goal on all, exact on 0–19.
+        self.assertIn("| 25 km/h | combined-5:exact | combined-5 | 29 | 20 | 0 | 9 | 0 | **",
+                      paired)
+        self.assertNotIn("| 25 km/h | combined-5:exact | arcade", paired,
+                         "no exact arcade attempts to pair with")
+
+    def test_controller_labels_name_the_physics_and_parse_back(self):
+        for label in ("arcade", "arcade:exact", "combined-15:exact", "optimizer-5"):
+            self.assertEqual(Controller.parse(label).label, label)
+        self.assertEqual(Controller.parse("combined-5:classic"), COMBINED)
+        with self.assertRaisesRegex(ValueError, "unknown physics 'fast'"):
+            Controller.parse("combined-5:fast")
+
     def test_charts_are_written(self):
         with tempfile.TemporaryDirectory() as directory:
             success = Path(directory) / "success.png"

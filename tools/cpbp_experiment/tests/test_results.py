@@ -4,8 +4,8 @@ from pathlib import Path
 
 from cpbp_experiment.configs import Config, Controller
 from cpbp_experiment.fingerprint import UNRECORDED
-from cpbp_experiment.results import (FIELDS, LEGACY_FIELDS, Attempt, ResultsError, ResultsFile,
-                                     check_seed)
+from cpbp_experiment.results import (FIELDS, LEGACY_FIELDS, PLATFORM_FIELDS, Attempt,
+                                     ResultsError, ResultsFile, check_seed)
 
 
 def attempt(index: int, controller: str = "combined-5", speed: int = 15, seed: int = 1000,
@@ -66,6 +66,20 @@ class ResultsFileTest(unittest.TestCase):
         self.results.append(attempt(1))
         self.assertEqual(self.results.load(), [legacy, attempt(1)])
         self.assertTrue(self.path.read_text().startswith(",".join(FIELDS) + "\n"))
+
+    def test_a_file_from_before_the_physics_column_reads_as_classic_and_upgrades(self):
+        earlier = attempt(0)
+        self.path.write_text(",".join(PLATFORM_FIELDS) + "\n" + ",".join(earlier.row()[:14])
+                             + "\n")
+        loaded = self.results.load()
+        self.assertTrue(self.results.legacy)
+        self.assertEqual(loaded, [earlier])
+        self.assertEqual(loaded[0].config.controller.physics, "classic")
+        self.results.upgrade(loaded)
+        exact = attempt(0, "combined-5:exact")
+        self.results.append(exact)
+        self.assertEqual(self.results.load(), [earlier, exact], "the same attempt, two physics")
+        self.assertTrue(self.path.read_text().endswith(",exact\n"))
 
     def test_another_csv_is_refused(self):
         self.path.write_text("name,score\nada,3\n")

@@ -3,13 +3,13 @@
 //! names, then one line per speed with the recorded roll and steer.
 //!
 //! `cpbp-bicycle [--speeds 1,2.5,4] [--solver quickstep|direct] [--dt S] [--duration S]
-//! [--roll-rate RAD_PER_S] [--mu M] [--erp E] [--cfm C]` (the last three: the tyres'
+//! [--gyroscopic implicit|explicit] [--roll-rate RAD_PER_S] [--mu M] [--erp E] [--cfm C]` (the last three: the tyres'
 //! contact surface, the game's by default)
 
 use std::process::ExitCode;
 
 use cpbp_core::benchmark_bicycle::{coast, BenchmarkParameters, CoastConfig};
-use cpbp_core::ode::Solver;
+use cpbp_core::ode::{Gyroscopic, Solver};
 
 fn main() -> ExitCode {
     let (speeds, config) = match parse(std::env::args().skip(1).collect()) {
@@ -74,6 +74,17 @@ fn parse(arguments: Vec<String>) -> Result<(Vec<f64>, CoastConfig), String> {
                     "quickstep" => Solver::QuickStep,
                     "direct" => Solver::Direct,
                     _ => return Err(format!("--solver is quickstep or direct, not {value:?}")),
+                }
+            }
+            "--gyroscopic" => {
+                config.gyroscopic = match value.as_str() {
+                    "implicit" => Gyroscopic::Implicit,
+                    "explicit" => Gyroscopic::Explicit,
+                    _ => {
+                        return Err(format!(
+                            "--gyroscopic is implicit or explicit, not {value:?}"
+                        ))
+                    }
                 }
             }
             "--dt" => config.dt = number()?,

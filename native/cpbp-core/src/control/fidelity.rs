@@ -23,7 +23,7 @@ impl RolloutPhysics {
     /// The master's own physics.
     pub fn of(sim: &Simulation) -> Self {
         Self {
-            solver: Solver::QuickStep,
+            solver: sim.config().physics.solver(),
             substeps: sim.config().substeps,
         }
     }

@@ -24,12 +24,13 @@ pub struct OptimizerConfig {
     pub particles: usize,
     /// Planning horizon (s); the thesis used 1.2 s.
     pub horizon: f64,
-    /// ODE steps per planning step in the rollouts. The master takes 4; at fewer,
-    /// QuickStep's 20 iterations do not converge the rider–handlebar chain, the rollouts
-    /// ride a different (less stable) bike and their plans mislead (measured: both modes
-    /// fall at 10 km/h with 2).
+    /// ODE steps per planning step in the rollouts; `Ride` takes the physics model's
+    /// (`PhysicsModel::rollout_substeps`). With QuickStep the master takes 4: at fewer its
+    /// 20 iterations do not converge the rider–handlebar chain, the rollouts ride a
+    /// different (less stable) bike and their plans mislead (measured: both modes fall at
+    /// 10 km/h with 2). The direct solver holds the chain at one step.
     pub rollout_substeps: usize,
-    /// The rollouts' constraint solver; the master's is QuickStep (see
+    /// The rollouts' constraint solver, the physics model's in a `Ride` (see
     /// `fidelity::divergence` before choosing another).
     pub rollout_solver: Solver,
     /// Lean tolerance s of eq. 4.7 (rad).

@@ -38,6 +38,10 @@ pub struct Ride {
 impl Ride {
     /// A ride of `sim` driven by a `kind` controller, with the game's planner settings.
     pub fn new(sim: Simulation, kind: ControllerKind) -> Self {
+        let mut planner = PlannerSettings::default();
+        let physics = sim.config().physics;
+        planner.optimizer.rollout_solver = physics.rollout_solver();
+        planner.optimizer.rollout_substeps = physics.rollout_substeps();
         Self {
             sim,
             kind,
@@ -46,7 +50,7 @@ impl Ride {
             intent: Intent::default(),
             raw_controls: None,
             turn: TurnIntent::default(),
-            planner: PlannerSettings::default(),
+            planner,
             wait_for_throttle: false,
             started: false,
             steps: 0,

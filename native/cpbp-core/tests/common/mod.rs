@@ -9,6 +9,7 @@ use std::sync::Arc;
 
 use cpbp_core::bike::{DriveInput, Placement};
 use cpbp_core::control::PlanWait;
+use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
@@ -19,15 +20,20 @@ pub const FRAMES_PER_SECOND: usize = 30;
 /// A simulation on an endless flat plane, the bike at rest facing an arbitrary heading
 /// (so nothing is symmetric by accident).
 pub fn flat_ride() -> Simulation {
+    flat_ride_in(PhysicsModel::Classic)
+}
+
+/// `flat_ride` in another physics model.
+pub fn flat_ride_in(physics: PhysicsModel) -> Simulation {
     let spawn = Placement {
         position: DVec3::new(0.0, 0.02, 0.0),
         rotation: DQuat::from_rotation_y(0.3),
     };
-    Simulation::new(
-        SimulationConfig::default(),
-        Arc::new(Terrain::flat()),
-        spawn,
-    )
+    let config = SimulationConfig {
+        physics,
+        ..SimulationConfig::default()
+    };
+    Simulation::new(config, Arc::new(Terrain::flat()), spawn)
 }
 
 /// Full throttle towards `kmh`.
@@ -43,7 +49,12 @@ pub fn auto_throttle(kmh: f64) -> DriveInput {
 /// planners plan with N trajectories and the ride waits for every plan, so a ride does
 /// not depend on how fast the machine is.
 pub fn ride_at(kind: ControllerKind, kmh: f64, particles: usize) -> Ride {
-    let mut ride = Ride::new(flat_ride(), kind);
+    ride_in(PhysicsModel::Classic, kind, kmh, particles)
+}
+
+/// `ride_at` in another physics model.
+pub fn ride_in(physics: PhysicsModel, kind: ControllerKind, kmh: f64, particles: usize) -> Ride {
+    let mut ride = Ride::new(flat_ride_in(physics), kind);
     ride.planner.optimizer.particles = particles;
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent {

@@ -1,6 +1,9 @@
 //! One ODE world with its collision space and contact joints, owned as a unit.
 
 mod geoms;
+mod gyroscopic;
+
+pub use gyroscopic::Gyroscopic;
 
 use std::os::raw::c_void;
 use std::ptr;
@@ -54,6 +57,8 @@ pub struct World {
     shared_meshes: Vec<Arc<TriMeshData>>,
     shared_heights: Vec<Arc<HeightFieldData>>,
     solver: Solver,
+    /// Bodies whose gyroscopic torque is added explicitly (`Gyroscopic::Explicit`).
+    explicit_gyroscopic: Vec<usize>,
     /// QuickStep's random sequence (it reorders constraint rows) for this world. ODE keeps
     /// one seed per thread; each step swaps this world's seed in and out, so a world's
     /// steps depend on its own history only, not on what else its thread has stepped.
@@ -98,6 +103,7 @@ impl World {
                 shared_meshes: Vec::new(),
                 shared_heights: Vec::new(),
                 solver: Solver::default(),
+                explicit_gyroscopic: Vec::new(),
                 random_seed: 0,
             }
         }
@@ -270,6 +276,7 @@ impl World {
     /// Advances the world by `dt` seconds: collision, contact joints, the solver.
     pub fn step(&mut self, dt: f64) {
         ensure_thread_data();
+        self.add_explicit_gyroscopic_torques();
         self.canonicalise_geom_order();
         self.touching_static.iter_mut().for_each(|t| *t = false);
         let mut context = CollideContext {

@@ -85,6 +85,7 @@ impl Bike {
             shoulder,
             elbow,
             wrist,
+            arm_strength: 1.0,
         };
         bike.apply(world, &Controls::default());
         bike

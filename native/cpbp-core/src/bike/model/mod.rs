@@ -115,9 +115,17 @@ pub struct Bike {
     shoulder: JointId,
     elbow: JointId,
     wrist: JointId,
+    /// The arms' torque limit as a fraction of `MAX_TORQUE` (`PhysicsModel::arm_strength`).
+    arm_strength: f64,
 }
 
 impl Bike {
+    /// The same bike with the rider's arms at `strength` × their full torque.
+    pub fn with_arm_strength(mut self, strength: f64) -> Self {
+        self.arm_strength = strength;
+        self
+    }
+
     pub fn params(&self) -> &BikeParams {
         &self.params
     }
@@ -147,7 +155,7 @@ impl Bike {
             controls.max_torque(ForceClass::RearWheel),
         );
         let waist = controls.max_torque(ForceClass::Waist);
-        let arms = controls.max_torque(ForceClass::Arms);
+        let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
         for axis in 0..3 {
             world.set_motor(self.waist, axis, c[index::WAIST + axis], waist);
             world.set_motor(self.shoulder, axis, c[index::SHOULDER + axis], arms);

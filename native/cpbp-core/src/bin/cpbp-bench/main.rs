@@ -1,13 +1,15 @@
 //! `make bench`: prints the performance figures recorded in docs/benchmarks.md.
 //! Timings are medians of several runs so one noisy run does not move them.
 
+mod fidelity;
+
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use cpbp_core::bike::{Controls, DriveInput, Placement};
-use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode, PlanWait};
-use cpbp_core::ode::{Mass, Solver, World};
+use cpbp_core::ode::{Mass, World};
+use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
@@ -36,8 +38,8 @@ fn main() {
         );
     }
 
-    let flat = rolling_bike(Arc::new(Terrain::flat()));
-    let bumps = rolling_bike(bump_field());
+    let flat = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::Classic);
+    let bumps = rolling_bike(bump_field(), PhysicsModel::Classic);
     row(
         "bike + rider: one ODE step (1/120 s), flat ground",
         format!("{:.2} µs", median(|| bike_step_cost(&flat))),
@@ -49,50 +51,24 @@ fn main() {
     let (snapshot, restore) = snapshot_costs(&flat);
     row("snapshot of the bike world", format!("{snapshot:.2} µs"));
     row("restore of the bike world", format!("{restore:.2} µs"));
-    let mut raw = [0.0; 3];
-    for thread_count in [1, 2] {
-        raw[thread_count] = median(|| parallel_steps_per_second(&flat, 16, thread_count));
-        row(
-            &format!("16 bike worlds stepped on {thread_count} thread(s)"),
-            format!("{:.0} steps/s", raw[thread_count]),
-        );
+    for model in PhysicsModel::ALL {
+        planning_table(model);
     }
 
-    for substeps in [4, 2] {
-        println!();
-        println!(
-            "C-PBP, combined mode, 1.2 s horizon (36 steps x {substeps} ODE steps), riding at 15 km/h:"
-        );
-        println!(
-            "{:<14} {:>16} {:>16} {:>12}",
-            "trajectories", "1 thread (ms)", "2 threads (ms)", "efficiency"
-        );
-        let mut largest_real_time = 0;
-        for n in [5, 10, 15, 32, 64, 128] {
-            let one = planning_ms(&flat, n, 1, substeps);
-            let two = planning_ms(&flat, n, 2, substeps);
-            // ODE steps the planner runs per frame (particle 1 rides the arcade controller).
-            let steps = (n * 36 * substeps) as f64;
-            let efficiency = steps / (two / 1000.0) / raw[2];
-            println!("{n:<14} {one:>16.1} {two:>16.1} {efficiency:>12.2}");
-            if two <= 1000.0 / 30.0 {
-                largest_real_time = n;
-            }
-        }
-        println!(
-            "largest N planning within the 33 ms control period on 2 threads: {largest_real_time}"
-        );
+    for model in PhysicsModel::ALL {
+        fidelity::rollout_fidelity(model, &bump_field());
     }
-
-    rollout_fidelity(&flat, &bump_field());
 
     println!();
-    println!("Hand-over: planning thread, game loop paced at 30 control steps/s, 6 s riding:");
+    println!(
+        "Hand-over ({} physics): planning thread, game loop paced at 30 control steps/s, 6 s riding:",
+        PhysicsModel::default().name()
+    );
     println!(
         "{:<14} {:>14} {:>14} {:>14} {:>10}",
         "trajectories", "plan (ms)", "mean wait", "max wait", "late"
     );
-    for n in [5, 15, 24, 32] {
+    for n in [5, 15, 24, 32, 48] {
         let h = handover(&Arc::new(Terrain::flat()), n);
         println!(
             "{n:<14} {:>14.1} {:>11.2} ms {:>11.2} ms {:>9.0}%",
@@ -104,13 +80,49 @@ fn main() {
     }
 }
 
-/// Median milliseconds per control step of the combined planner with `n` trajectories.
-fn planning_ms(sim: &Simulation, n: usize, threads: usize, rollout_substeps: usize) -> f64 {
+/// The combined planner's cost in `model`'s physics on flat ground at 15 km/h: ms per
+/// control step for N trajectories on 1 and 2 threads, the efficiency (planning steps per
+/// second against bare rollout stepping on 2 threads) and the largest real-time N.
+fn planning_table(model: PhysicsModel) {
+    let flat = rolling_bike(Arc::new(Terrain::flat()), model);
+    let substeps = model.rollout_substeps();
+    let solver = model.rollout_solver();
+    let bare = median(|| parallel_planning_steps_per_second(&flat, 16, 2));
+    println!();
+    println!(
+        "C-PBP, combined mode, {} physics: 1.2 s horizon (36 steps x {substeps} {solver:?} steps), 15 km/h:",
+        model.name()
+    );
+    println!("bare rollout stepping, 16 worlds on 2 threads: {bare:.0} planning steps/s");
+    println!(
+        "{:<14} {:>16} {:>16} {:>12}",
+        "trajectories", "1 thread (ms)", "2 threads (ms)", "efficiency"
+    );
+    let mut largest_real_time = 0;
+    for n in [5, 10, 15, 32, 64, 128] {
+        let one = planning_ms(&flat, n, 1);
+        let two = planning_ms(&flat, n, 2);
+        let efficiency = (n * 36) as f64 / (two / 1000.0) / bare;
+        println!("{n:<14} {one:>16.1} {two:>16.1} {efficiency:>12.2}");
+        if two <= 1000.0 / 30.0 {
+            largest_real_time = n;
+        }
+    }
+    println!(
+        "largest N planning within the 33 ms control period on 2 threads: {largest_real_time}"
+    );
+}
+
+/// Median milliseconds per control step of the combined planner with `n` trajectories,
+/// rolling out in the simulation's physics model.
+fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> f64 {
+    let model = sim.config().physics;
     let config = OptimizerConfig {
         mode: OptimizerMode::Combined,
         particles: n,
         threads,
-        rollout_substeps,
+        rollout_substeps: model.rollout_substeps(),
+        rollout_solver: model.rollout_solver(),
         ..OptimizerConfig::default()
     };
     let mut optimizer = BikeOptimizer::new(sim, config);
@@ -137,7 +149,10 @@ fn planning_ms(sim: &Simulation, n: usize, threads: usize, rollout_substeps: usi
 /// boundary: (mean planning ms, mean wait ms, max wait ms, share of late boundaries).
 fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
     // The game's ride: the combined controller behind the one controller interface.
-    let mut ride = Ride::new(rolling_bike(terrain.clone()), ControllerKind::Combined);
+    let mut ride = Ride::new(
+        rolling_bike(terrain.clone(), PhysicsModel::default()),
+        ControllerKind::Combined,
+    );
     ride.planner.optimizer.particles = n;
     ride.planner.wait = PlanWait::AtMost(Duration::from_millis(10));
     ride.set_intent(Intent {
@@ -216,13 +231,18 @@ fn piece(shape: TerrainShape) -> TerrainPiece {
     }
 }
 
-/// A simulation whose bike is riding at 15 km/h with the rider holding the pose.
-fn rolling_bike(terrain: Arc<Terrain>) -> Simulation {
+/// A simulation in `physics` whose bike is riding at 15 km/h with the rider holding the
+/// pose.
+fn rolling_bike(terrain: Arc<Terrain>, physics: PhysicsModel) -> Simulation {
     let spawn = Placement {
         position: DVec3::new(-25.0, 0.1, 0.0),
         rotation: DQuat::IDENTITY,
     };
-    let mut sim = Simulation::new(SimulationConfig::default(), terrain, spawn);
+    let config = SimulationConfig {
+        physics,
+        ..SimulationConfig::default()
+    };
+    let mut sim = Simulation::new(config, terrain, spawn);
     let mut controls = Controls::default();
     cpbp_core::bike::DriveInput {
         throttle: 0.6,
@@ -262,12 +282,21 @@ fn snapshot_costs(sim: &Simulation) -> (f64, f64) {
     (snapshot, restore)
 }
 
-/// ODE steps per second when `worlds` bike worlds are split over `thread_count` threads,
-/// each restoring from the master and stepping a 1.2 s horizon (the planner's workload).
-fn parallel_steps_per_second(sim: &Simulation, worlds: usize, thread_count: usize) -> f64 {
+/// Planning steps (1/30 s in the model's rollout physics) per second when `worlds` bike
+/// worlds are split over `thread_count` threads, each restoring from the master and
+/// stepping a 1.2 s horizon: the planner's workload without the planner.
+fn parallel_planning_steps_per_second(sim: &Simulation, worlds: usize, thread_count: usize) -> f64 {
+    let model = sim.config().physics;
     let state = sim.world().snapshot();
-    let mut all: Vec<World> = (0..worlds).map(|_| sim.new_world()).collect();
-    let horizon = 144; // 1.2 s at 1/120 s
+    let mut all: Vec<World> = (0..worlds)
+        .map(|_| {
+            let mut world = sim.new_world();
+            world.set_solver(model.rollout_solver());
+            world
+        })
+        .collect();
+    let (horizon, substeps) = (36, model.rollout_substeps());
+    let dt = sim.config().control_dt / substeps as f64;
     let start = Instant::now();
     std::thread::scope(|scope| {
         for chunk in all.chunks_mut(worlds.div_ceil(thread_count)) {
@@ -275,8 +304,8 @@ fn parallel_steps_per_second(sim: &Simulation, worlds: usize, thread_count: usiz
             scope.spawn(move || {
                 for world in chunk {
                     world.restore(state).expect("same model");
-                    for _ in 0..horizon {
-                        world.step(ODE_DT);
+                    for _ in 0..horizon * substeps {
+                        world.step(dt);
                     }
                 }
             });
@@ -301,82 +330,4 @@ fn median(mut measure: impl FnMut() -> f64) -> f64 {
 
 fn threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
-}
-
-/// Candidate rollout physics against the master's: the cost of one control step and how
-/// far the master's controls replayed open loop drift from its ride after 0.5 s and 1.2 s
-/// (worst lean error and centre-of-mass distance over replays started every 1/3 s), on flat ground (straight, then a 15°
-/// turn) and over the bump field, with the arcade controller at 15 km/h.
-fn rollout_fidelity(flat: &Simulation, bumps: &Arc<Terrain>) {
-    println!();
-    println!("Rollout physics against the master's (QuickStep x 4), arcade at 15 km/h:");
-    println!(
-        "{:<16} {:>10} {:>28} {:>28}",
-        "physics", "cost", "flat: @0.5 s, @1.2 s", "bumps: @0.5 s, @1.2 s"
-    );
-    let record = |sim: Simulation, turn: bool| {
-        let mut ride = Ride::new(sim, ControllerKind::Arcade);
-        let mut intent = Intent {
-            drive: DriveInput {
-                throttle: 1.0,
-                brake: 0.0,
-                max_speed: 15.0 / 3.6,
-            },
-            lean: Some(0.0),
-            ..Intent::default()
-        };
-        ride.set_intent(intent);
-        let mut recording = Recording::ride(&mut ride, 120);
-        intent.lean = Some(if turn { 15f64.to_radians() } else { 0.0 });
-        ride.set_intent(intent);
-        recording.extend(Recording::ride(&mut ride, 120));
-        (ride, recording)
-    };
-    let rides = [
-        record(flat.replica(), true),
-        record(rolling_bike(bumps.clone()), false),
-    ];
-    let master = RolloutPhysics {
-        solver: Solver::QuickStep,
-        substeps: 4,
-    };
-    let cost = |physics: RolloutPhysics| {
-        let mut world = flat.new_world();
-        world.restore(&flat.world().snapshot()).expect("same model");
-        world.set_solver(physics.solver);
-        let dt = 1.0 / 30.0 / physics.substeps as f64;
-        median(|| time_per_call(150, || (0..physics.substeps).for_each(|_| world.step(dt))))
-    };
-    let reference = cost(master);
-    for (solver, substeps) in [
-        (Solver::QuickStep, 4),
-        (Solver::QuickStep, 2),
-        (Solver::QuickStep, 1),
-        (Solver::Direct, 4),
-        (Solver::Direct, 2),
-        (Solver::Direct, 1),
-    ] {
-        let physics = RolloutPhysics { solver, substeps };
-        let drift: Vec<String> = rides
-            .iter()
-            .map(|(ride, recording)| {
-                let [half, whole] = divergence(ride.sim(), recording, physics, 36, 10, &[15, 36])
-                    .try_into()
-                    .expect("two horizons");
-                format!(
-                    "{:.1}° {:.2} m, {:.1}° {:.2} m",
-                    half.lean.to_degrees(),
-                    half.position,
-                    whole.lean.to_degrees(),
-                    whole.position
-                )
-            })
-            .collect();
-        let label = format!("{solver:?} x {substeps}");
-        let ratio = cost(physics) / reference;
-        println!(
-            "{label:<16} {ratio:>9.2}x {:>22} {:>22}",
-            drift[0], drift[1]
-        );
-    }
 }

@@ -1,0 +1,107 @@
+//! `make bench`'s rollout fidelity table.
+
+use std::sync::Arc;
+
+use cpbp_core::bike::DriveInput;
+use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
+use cpbp_core::ode::Solver;
+use cpbp_core::physics::PhysicsModel;
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::simulation::Simulation;
+use cpbp_core::terrain::Terrain;
+
+use crate::{median, rolling_bike, time_per_call};
+
+/// Candidate rollout physics against the master's in `model`: the cost of one control
+/// step and how far the master's controls replayed open loop drift from its ride after
+/// 0.5 s and 1.2 s (worst lean error and centre-of-mass distance over replays started
+/// every 1/3 s), on flat ground (straight, then a 15° turn) and over the bump field, with
+/// the arcade controller at 15 km/h.
+pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
+    let flat = rolling_bike(Arc::new(Terrain::flat()), model);
+    let master = RolloutPhysics::of(&flat);
+    println!();
+    println!(
+        "Rollout physics against the master's ({} physics: {:?} x {}), arcade at 15 km/h:",
+        model.name(),
+        master.solver,
+        master.substeps
+    );
+    println!(
+        "{:<16} {:>10} {:>28} {:>28}",
+        "physics", "cost", "flat: @0.5 s, @1.2 s", "bumps: @0.5 s, @1.2 s"
+    );
+    let record = |sim: Simulation, turn: bool| {
+        let mut ride = Ride::new(sim, ControllerKind::Arcade);
+        let mut intent = Intent {
+            drive: DriveInput {
+                throttle: 1.0,
+                brake: 0.0,
+                max_speed: 15.0 / 3.6,
+            },
+            lean: Some(0.0),
+            ..Intent::default()
+        };
+        ride.set_intent(intent);
+        let mut recording = Recording::ride(&mut ride, 120);
+        intent.lean = Some(if turn { 15f64.to_radians() } else { 0.0 });
+        ride.set_intent(intent);
+        recording.extend(Recording::ride(&mut ride, 120));
+        (ride, recording)
+    };
+    let rides = [
+        record(flat.replica(), true),
+        record(rolling_bike(bumps.clone(), model), false),
+    ];
+    let cost = |physics: RolloutPhysics| {
+        let mut world = flat.new_world();
+        world.restore(&flat.world().snapshot()).expect("same model");
+        world.set_solver(physics.solver);
+        let dt = 1.0 / 30.0 / physics.substeps as f64;
+        median(|| time_per_call(150, || (0..physics.substeps).for_each(|_| world.step(dt))))
+    };
+    // Costs are against the classic rollouts, so both tables share one scale.
+    let reference = cost(RolloutPhysics {
+        solver: Solver::QuickStep,
+        substeps: 4,
+    });
+    let candidates: &[(Solver, usize)] = match model {
+        PhysicsModel::Classic => &[
+            (Solver::QuickStep, 4),
+            (Solver::QuickStep, 2),
+            (Solver::QuickStep, 1),
+            (Solver::Direct, 4),
+            (Solver::Direct, 2),
+            (Solver::Direct, 1),
+        ],
+        PhysicsModel::Exact => &[
+            (Solver::Direct, 4),
+            (Solver::Direct, 2),
+            (Solver::Direct, 1),
+        ],
+    };
+    for &(solver, substeps) in candidates {
+        let physics = RolloutPhysics { solver, substeps };
+        let drift: Vec<String> = rides
+            .iter()
+            .map(|(ride, recording)| {
+                let [half, whole] = divergence(ride.sim(), recording, physics, 36, 10, &[15, 36])
+                    .try_into()
+                    .expect("two horizons");
+                format!(
+                    "{:.1}° {:.2} m, {:.1}° {:.2} m",
+                    half.lean.to_degrees(),
+                    half.position,
+                    whole.lean.to_degrees(),
+                    whole.position
+                )
+            })
+            .collect();
+        let label = format!("{solver:?} x {substeps}");
+        let ratio = cost(physics) / reference;
+        println!(
+            "{label:<16} {ratio:>9.2}x {:>22} {:>22}",
+            drift[0], drift[1]
+        );
+    }
+}
