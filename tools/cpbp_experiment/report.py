@@ -204,7 +204,8 @@ def success_chart(summaries: dict[Config, Summary], path: Path) -> None:
     import matplotlib.pyplot as plt
 
     controllers, speeds = _axes(summaries)
-    fig, ax = plt.subplots(figsize=(10, 5.2), dpi=110)
+    # Two legend rows of up to 7 need more width than one.
+    fig, ax = plt.subplots(figsize=(10 if len(controllers) <= 7 else 13.5, 5.2), dpi=110)
     width = 0.8 / max(len(controllers), 1)
     colours = _controller_colours(controllers)
     for i, controller in enumerate(controllers):

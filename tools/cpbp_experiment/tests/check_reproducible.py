@@ -101,7 +101,8 @@ class ReproducibleRidesTest(unittest.TestCase):
             self.assertIn("The rows come from 2 platforms", (out / "report.md").read_text())
 
     def test_a_sample_of_the_committed_evaluation_re_rides_exactly(self):
-        controllers = "arcade,combined-5"
+        # Both physics models: the evaluation's classic rows and the game's exact ones.
+        controllers = "arcade,combined-5,arcade:exact,combined-5:exact"
         with tempfile.TemporaryDirectory() as directory:
             platform = worker_platform(Path(directory) / "workers.log")
         # The committed rows were made where glibc's libm takes its FMA paths; elsewhere
@@ -112,7 +113,7 @@ class ReproducibleRidesTest(unittest.TestCase):
                              "--attempts", "0-2", "--speeds", "25", "--controllers",
                              controllers)
         self.assertEqual(checked.returncode, 0, checked.stdout + checked.stderr)
-        rows = 9 if "optimizer" in controllers else 6
+        rows = 15 if "optimizer" in controllers else 12
         self.assertIn(f"{rows} of {rows} rows re-ride exactly", checked.stdout)
 
     def _pretend_rows_came_from_another_c_library(self, out: Path, rows: list[dict]) -> None:

@@ -30,19 +30,21 @@ fn main() {
     println!("{:<58} {:>14}", "figure", "value");
     let row = |name: &str, value: String| println!("{name:<58} {value:>14}");
 
+    let mut spheres = 0.0;
     for bodies in [1, 15] {
-        let micros = median(|| sphere_step_cost(bodies, 2_000));
+        spheres = median(|| sphere_step_cost(bodies, 2_000));
         row(
             &format!("ODE step, {bodies} sphere(s) resting on a plane"),
-            format!("{micros:.2} µs"),
+            format!("{spheres:.2} µs"),
         );
     }
 
     let flat = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::Classic);
     let bumps = rolling_bike(bump_field(), PhysicsModel::Classic);
+    let bike_step = median(|| bike_step_cost(&flat));
     row(
         "bike + rider: one ODE step (1/120 s), flat ground",
-        format!("{:.2} µs", median(|| bike_step_cost(&flat))),
+        format!("{bike_step:.2} µs"),
     );
     row(
         "bike + rider: one ODE step, trimesh bump field (2 048 tris)",
@@ -52,7 +54,7 @@ fn main() {
     row("snapshot of the bike world", format!("{snapshot:.2} µs"));
     row("restore of the bike world", format!("{restore:.2} µs"));
     for model in PhysicsModel::ALL {
-        planning_table(model);
+        planning_table(model, [bike_step, spheres]);
     }
 
     for model in PhysicsModel::ALL {
@@ -83,7 +85,9 @@ fn main() {
 /// The combined planner's cost in `model`'s physics on flat ground at 15 km/h: ms per
 /// control step for N trajectories on 1 and 2 threads, the efficiency (planning steps per
 /// second against bare rollout stepping on 2 threads) and the largest real-time N.
-fn planning_table(model: PhysicsModel) {
+/// `references`: one classic bike step and one 15-sphere step (µs), for the cost of a
+/// planning step as a ratio.
+fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
     let flat = rolling_bike(Arc::new(Terrain::flat()), model);
     let substeps = model.rollout_substeps();
     let solver = model.rollout_solver();
@@ -98,9 +102,12 @@ fn planning_table(model: PhysicsModel) {
         "{:<14} {:>16} {:>16} {:>12}",
         "trajectories", "1 thread (ms)", "2 threads (ms)", "efficiency"
     );
-    let mut largest_real_time = 0;
+    let (mut largest_real_time, mut one_thread_64) = (0, 0.0);
     for n in [5, 10, 15, 32, 64, 128] {
         let one = planning_ms(&flat, n, 1);
+        if n == 64 {
+            one_thread_64 = one;
+        }
         let two = planning_ms(&flat, n, 2);
         let efficiency = (n * 36) as f64 / (two / 1000.0) / bare;
         println!("{n:<14} {one:>16.1} {two:>16.1} {efficiency:>12.2}");
@@ -110,6 +117,13 @@ fn planning_table(model: PhysicsModel) {
     }
     println!(
         "largest N planning within the 33 ms control period on 2 threads: {largest_real_time}"
+    );
+    let per_step = one_thread_64 * 1000.0 / (64 * 36) as f64;
+    println!(
+        "one planning step of one trajectory (N = 64, 1 thread): {per_step:.1} µs = {:.2} classic \
+         bike steps = {:.2} 15-sphere steps",
+        per_step / bike_step,
+        per_step / spheres
     );
 }
 
