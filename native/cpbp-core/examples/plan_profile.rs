@@ -56,10 +56,9 @@ fn main() {
         mode: OptimizerMode::Combined,
         particles: n,
         threads,
-        rollout_solver: physics.rollout_solver(),
-        rollout_substeps: physics.rollout_substeps(),
         ..OptimizerConfig::default()
-    };
+    }
+    .rolling_out_in(physics);
     let mut optimizer = BikeOptimizer::new(&sim, config);
     let started = std::time::Instant::now();
     for _ in 0..plans {

@@ -333,21 +333,20 @@ impl BikeSimulation {
         let physics = self
             .sim()
             .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
-        let rollout_substeps = match self.rollout_substeps.clamp(0, 8) {
-            0 => physics.rollout_substeps(),
-            n => n as usize,
-        };
+        let mut optimizer = OptimizerConfig {
+            particles: self.trajectories.clamp(1, 256) as usize,
+            horizon: self.horizon.clamp(0.2, 3.0),
+            lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
+            threads: self.planning_threads.clamp(0, 64) as usize,
+            seed: self.planner_seed as u64,
+            ..OptimizerConfig::default()
+        }
+        .rolling_out_in(physics);
+        if self.rollout_substeps > 0 {
+            optimizer.rollout_substeps = self.rollout_substeps.min(8) as usize;
+        }
         let planner = PlannerSettings {
-            optimizer: OptimizerConfig {
-                particles: self.trajectories.clamp(1, 256) as usize,
-                horizon: self.horizon.clamp(0.2, 3.0),
-                lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
-                rollout_substeps,
-                rollout_solver: physics.rollout_solver(),
-                threads: self.planning_threads.clamp(0, 64) as usize,
-                seed: self.planner_seed as u64,
-                ..OptimizerConfig::default()
-            },
+            optimizer,
             wait: if self.wait_for_every_plan {
                 PlanWait::EveryPlan
             } else {

@@ -7,6 +7,7 @@ use super::bike_rollout::{bike_priors, BikeRollout, LeanGoal};
 use super::cpbp::{PlanResult, Planner, PlannerConfig, WarmStart};
 use crate::bike::{Controls, DriveInput};
 use crate::ode::Solver;
+use crate::physics::PhysicsModel;
 use crate::simulation::Simulation;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,6 +60,17 @@ impl Default for OptimizerConfig {
             control_cost_weight: 0.01,
             seed: 2015,
             threads: 0,
+        }
+    }
+}
+
+impl OptimizerConfig {
+    /// This configuration rolling out as `physics` prescribes (solver and substeps).
+    pub fn rolling_out_in(self, physics: PhysicsModel) -> Self {
+        Self {
+            rollout_solver: physics.rollout_solver(),
+            rollout_substeps: physics.rollout_substeps(),
+            ..self
         }
     }
 }

@@ -39,9 +39,7 @@ impl Ride {
     /// A ride of `sim` driven by a `kind` controller, with the game's planner settings.
     pub fn new(sim: Simulation, kind: ControllerKind) -> Self {
         let mut planner = PlannerSettings::default();
-        let physics = sim.config().physics;
-        planner.optimizer.rollout_solver = physics.rollout_solver();
-        planner.optimizer.rollout_substeps = physics.rollout_substeps();
+        planner.optimizer = planner.optimizer.rolling_out_in(sim.config().physics);
         Self {
             sim,
             kind,

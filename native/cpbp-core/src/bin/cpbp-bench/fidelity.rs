@@ -57,7 +57,7 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
         let mut world = flat.new_world();
         world.restore(&flat.world().snapshot()).expect("same model");
         world.set_solver(physics.solver);
-        let dt = 1.0 / 30.0 / physics.substeps as f64;
+        let dt = flat.config().control_dt / physics.substeps as f64;
         median(|| time_per_call(150, || (0..physics.substeps).for_each(|_| world.step(dt))))
     };
     // Costs are against the classic rollouts, so both tables share one scale.

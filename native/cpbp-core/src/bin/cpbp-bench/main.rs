@@ -135,10 +135,9 @@ fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> f64 {
         mode: OptimizerMode::Combined,
         particles: n,
         threads,
-        rollout_substeps: model.rollout_substeps(),
-        rollout_solver: model.rollout_solver(),
         ..OptimizerConfig::default()
-    };
+    }
+    .rolling_out_in(model);
     let mut optimizer = BikeOptimizer::new(sim, config);
     let drive = DriveInput {
         throttle: 0.6,
