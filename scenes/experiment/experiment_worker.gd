@@ -6,7 +6,7 @@ extends Node
 ## ends, so the driver can save it before the next begins. With `--timing` it instead
 ## rides with each trajectory count in turn and prints one `TIMING {json}` line per count.
 ##
-## Arguments (after `--`): --speed=KMH --controller=arcade|optimizer|combined
+## Arguments (after `--`): --speed=KMH --controller=NAME (a name of the controller registry)
 ## --trajectories=N[,N...] --seed=BASE --first=I --count=K --threads=T [--timing --steps=S]
 ## [--physics=classic|exact] [--warm-up=CONTROLLER] [--platform]
 ## Attempt i uses bump seed BASE + i and a planner seed drawn from it, so every controller

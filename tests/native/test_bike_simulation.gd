@@ -146,7 +146,8 @@ func test_a_dying_planner_is_reported_once_and_the_arcade_controller_steps_in() 
 func test_the_controller_is_a_name_from_the_one_list() -> void:
 	var bike := BikeSimulation.new()
 	assert_eq(
-		BikeSimulation.controller_names(), PackedStringArray(["optimizer", "combined", "arcade"])
+		BikeSimulation.controller_names(),
+		PackedStringArray(["optimizer", "combined", "arcade", "sampling", "mppi"])
 	)
 	assert_eq(bike.controller, "arcade", "the default")
 	for name: String in Array(BikeSimulation.controller_names()) + ["manual"]:
@@ -155,6 +156,7 @@ func test_the_controller_is_a_name_from_the_one_list() -> void:
 		assert_eq(bike.get_controller_name(), name)
 		assert_ne(BikeSimulation.controller_label(name), "")
 	assert_true(BikeSimulation.controller_plans("combined"))
+	assert_true(BikeSimulation.controller_plans("mppi"))
 	assert_false(BikeSimulation.controller_plans("arcade"))
 	assert_eq(BikeSimulation.controller_label("autopilot"), "")
 	bike.free()

@@ -79,9 +79,9 @@ def _parser() -> argparse.ArgumentParser:
                         "(default 10,15,20,25)")
     parser.add_argument("--controllers", type=parse_controllers,
                         default=None,
-                        help="comma-separated: arcade, optimizer-N, combined-N, each with "
-                        ":exact for the exact physics model (default arcade and both "
-                        "planners with N = 5, 10, 15, classic)")
+                        help="comma-separated: arcade, optimizer-N, combined-N, sampling-N, "
+                        "mppi-N, each with :exact for the exact physics model (default "
+                        "arcade and both C-PBP planners with N = 5, 10, 15, classic)")
     parser.add_argument("--seed", type=_whole(0, 1_000_000_000), default=1000,
                         help="attempt i meets the bumps of seed SEED + i (default 1000)")
     parser.add_argument("--jobs", type=_whole(1, 256), default=os.cpu_count() or 1,

@@ -15,6 +15,10 @@ THESIS_CONTROLLERS = (
     "combined-10",
     "combined-15",
 )
+# The registry's planning controllers (cpbp_core::ride::ControllerKind): C-PBP alone and
+# warm-started, then the baselines predictive sampling and MPPI. The worker refuses a name
+# the registry does not know, so this list cannot drift unnoticed.
+PLANNERS = ("optimizer", "combined", "sampling", "mppi")
 # The game's physics models (cpbp_core::physics::PhysicsModel); rows without one are
 # classic, the model every row was ridden in before the exact model existed.
 PHYSICS = ("classic", "exact")
@@ -24,7 +28,7 @@ TIMING_COUNTS = (5, 6, 8, 10, 15, 20, 32, 64, 128)
 
 @dataclass(frozen=True, order=True)
 class Controller:
-    """`arcade`, or a planner (`optimizer`, `combined`) with its trajectory count N, riding
+    """`arcade`, or a planner (one of PLANNERS) with its trajectory count N, riding
     in a physics model: `combined-5` is classic, `combined-5:exact` the exact model."""
 
     kind: str
@@ -49,10 +53,11 @@ class Controller:
         kind, _, count = name.partition("-")
         if kind == "arcade" and not count:
             return Controller("arcade", 0, physics)
-        if kind in ("optimizer", "combined") and count.isdigit() and 1 <= int(count) <= 256:
+        if kind in PLANNERS and count.isdigit() and 1 <= int(count) <= 256:
             return Controller(kind, int(count), physics)
+        planners = ", ".join(f"{p}-N" for p in PLANNERS)
         raise ValueError(
-            f"unknown controller '{label}': use arcade, optimizer-N or combined-N (N in 1–256), "
+            f"unknown controller '{label}': use arcade or {planners} (N in 1–256), "
             "with :exact for the exact physics"
         )
 
@@ -76,9 +81,9 @@ def parse_controllers(text: str) -> list[Controller]:
 
 
 def display_order(controller: Controller) -> tuple[int, int, int]:
-    """The thesis's order: arcade, then the optimizer, then combined, each by N, each
-    physics model beside the classic one."""
-    return (["arcade", "optimizer", "combined"].index(controller.kind), controller.trajectories,
+    """The thesis's order: arcade, then the optimizer, then combined (then the baselines),
+    each by N, each physics model beside the classic one."""
+    return ((("arcade",) + PLANNERS).index(controller.kind), controller.trajectories,
             PHYSICS.index(controller.physics))
 
 

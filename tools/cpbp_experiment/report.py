@@ -9,7 +9,7 @@ from collections import defaultdict
 from dataclasses import dataclass
 from pathlib import Path
 
-from .configs import Config, Controller, display_order
+from .configs import PLANNERS, Config, Controller, display_order
 from .results import Attempt
 from .stats import mcnemar_exact, mean, wilson_interval
 
@@ -242,7 +242,8 @@ def success_chart(summaries: dict[Config, Summary], path: Path) -> None:
 def _controller_colours(controllers: list[Controller]) -> dict[Controller, str]:
     import matplotlib
 
-    families = {"arcade": "Greys", "optimizer": "Blues", "combined": "Oranges"}
+    families = {"arcade": "Greys", "optimizer": "Blues", "combined": "Oranges",
+                "sampling": "Greens", "mppi": "Purples"}
     colours = {}
     for kind, cmap_name in families.items():
         members = [c for c in controllers if c.kind == kind]
@@ -294,7 +295,7 @@ def timing_table(rows: list[dict]) -> str:
 
 
 def _kinds(rows: list[dict]) -> list[str]:
-    return [k for k in ("optimizer", "combined") if any(r["controller"] == k for r in rows)]
+    return [k for k in PLANNERS if any(r["controller"] == k for r in rows)]
 
 
 def planning_chart(rows: list[dict], machine: str, path: Path) -> None:
@@ -304,7 +305,8 @@ def planning_chart(rows: list[dict], machine: str, path: Path) -> None:
     import matplotlib.pyplot as plt
 
     fig, (rate_ax, ms_ax) = plt.subplots(1, 2, figsize=(11, 4.6), dpi=110)
-    styles = {"optimizer": ("tab:blue", "o"), "combined": ("tab:orange", "s")}
+    styles = {"optimizer": ("tab:blue", "o"), "combined": ("tab:orange", "s"),
+              "sampling": ("tab:green", "^"), "mppi": ("tab:purple", "D")}
     for kind in _kinds(rows):
         mine = sorted((r for r in rows if r["controller"] == kind), key=lambda r: r["trajectories"])
         ns = [r["trajectories"] for r in mine]

@@ -1,67 +1,10 @@
 //! The C-PBP planner balancing an inverted pendulum simulated in ODE: the smallest
 //! unstable system with real contacts-free rigid-body dynamics, cloned worlds and motors.
 
-use cpbp_core::bike::to_quat;
+mod common;
+
+use common::pendulum::{Pendulum, DT};
 use cpbp_core::control::cpbp::{Planner, PlannerConfig, Priors, RolloutSystem, WarmStart};
-use cpbp_core::ode::{JointId, Mass, World, WorldState};
-use glam::DQuat;
-
-const DT: f64 = 1.0 / 30.0;
-const SUBSTEPS: usize = 2;
-const MAX_TORQUE: f64 = 6.0;
-
-/// A 1 kg rod, 1 m long, hinged at its foot to the world; a velocity motor at the hinge.
-struct Pendulum {
-    world: World,
-    hinge: JointId,
-}
-
-impl Pendulum {
-    /// Built upright (so the hinge angle is the tilt from upright), then tilted by `tilt`.
-    fn new(tilt: f64) -> Self {
-        let mut world = World::new([0.0, -9.81, 0.0]);
-        let rod = world.add_body(Mass::capsule(1.0, 0.03, 1.0), [0.0, 0.5, 0.0]);
-        let hinge = world.add_hinge(rod, None, [0.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
-        let rotation = DQuat::from_rotation_z(tilt);
-        let centre = rotation * glam::DVec3::new(0.0, 0.5, 0.0);
-        world.set_body_quaternion(rod, to_quat(rotation));
-        world.set_body_position(rod, centre.to_array());
-        Self { world, hinge }
-    }
-
-    fn tilt(&self) -> f64 {
-        self.world.joint_angle(self.hinge, 0)
-    }
-
-    fn advance(&mut self, velocity: f64) {
-        self.world.set_motor(self.hinge, 0, velocity, MAX_TORQUE);
-        for _ in 0..SUBSTEPS {
-            self.world.step(DT / SUBSTEPS as f64);
-        }
-    }
-}
-
-impl RolloutSystem for Pendulum {
-    type State = WorldState;
-
-    fn save(&self) -> WorldState {
-        self.world.snapshot()
-    }
-
-    fn restore(&mut self, state: &WorldState) {
-        self.world.restore(state).expect("built alike");
-    }
-
-    fn step(&mut self, u: &[f64], _step: usize) -> Option<f64> {
-        self.advance(u[0]);
-        let tilt = self.tilt();
-        tilt.is_finite().then(|| (tilt / 0.05).powi(2))
-    }
-
-    fn features(&self) -> Vec<f64> {
-        vec![self.tilt() / 0.1, self.world.hinge_rate(self.hinge)]
-    }
-}
 
 fn planner() -> Planner {
     let priors = Priors::uniform(1, 2.0, 1.0, 0.2, 4.0);

@@ -29,7 +29,18 @@ fn every_controller_has_a_stable_name_and_a_label() {
         assert!(!kind.label().is_empty());
     }
     let names: Vec<_> = ControllerKind::ALL.iter().map(|k| k.name()).collect();
-    assert_eq!(names, ["optimizer", "combined", "arcade", "manual"]);
+    assert_eq!(
+        names,
+        [
+            "optimizer",
+            "combined",
+            "arcade",
+            "sampling",
+            "mppi",
+            "manual"
+        ]
+    );
+    assert!(ControllerKind::Sampling.plans() && ControllerKind::Mppi.offered());
     assert_eq!(ControllerKind::from_name("autopilot"), None);
     assert!(!ControllerKind::Manual.offered() && ControllerKind::Combined.offered());
 }

@@ -15,6 +15,8 @@ pub enum BikeController {
     optimizer,
     combined,
     arcade,
+    sampling,
+    mppi,
     manual,
 }
 
@@ -24,6 +26,8 @@ impl From<BikeController> for ControllerKind {
             BikeController::optimizer => ControllerKind::Optimizer,
             BikeController::combined => ControllerKind::Combined,
             BikeController::arcade => ControllerKind::Arcade,
+            BikeController::sampling => ControllerKind::Sampling,
+            BikeController::mppi => ControllerKind::Mppi,
             BikeController::manual => ControllerKind::Manual,
         }
     }
@@ -35,6 +39,8 @@ impl From<ControllerKind> for BikeController {
             ControllerKind::Optimizer => BikeController::optimizer,
             ControllerKind::Combined => BikeController::combined,
             ControllerKind::Arcade => BikeController::arcade,
+            ControllerKind::Sampling => BikeController::sampling,
+            ControllerKind::Mppi => BikeController::mppi,
             ControllerKind::Manual => BikeController::manual,
         }
     }

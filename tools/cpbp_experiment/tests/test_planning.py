@@ -39,8 +39,9 @@ class PlanBlocksTest(unittest.TestCase):
 
 class ParseTest(unittest.TestCase):
     def test_controllers_in_the_thesis_order(self):
-        labels = [c.label for c in parse_controllers("combined-5,arcade,optimizer-10,combined-5")]
-        self.assertEqual(labels, ["arcade", "optimizer-10", "combined-5"])
+        labels = [c.label for c in
+                  parse_controllers("mppi-10,combined-5,arcade,sampling-5,optimizer-10,combined-5")]
+        self.assertEqual(labels, ["arcade", "optimizer-10", "combined-5", "sampling-5", "mppi-10"])
 
     def test_bad_names_and_speeds_are_explained(self):
         for text in ("arcade-5", "combined", "combined-0", "mpc-5"):

@@ -56,7 +56,8 @@ class ReportTest(unittest.TestCase):
                          "no exact arcade attempts to pair with")
 
     def test_controller_labels_name_the_physics_and_parse_back(self):
-        for label in ("arcade", "arcade:exact", "combined-15:exact", "optimizer-5"):
+        for label in ("arcade", "arcade:exact", "combined-15:exact", "optimizer-5",
+                      "sampling-10:exact", "mppi-64"):
             self.assertEqual(Controller.parse(label).label, label)
         self.assertEqual(Controller.parse("combined-5:classic"), COMBINED)
         with self.assertRaisesRegex(ValueError, "unknown physics 'fast'"):

@@ -47,7 +47,8 @@ pub struct Plan {
     epoch: u64,
     /// The master step its first control is for.
     pub step: u64,
-    /// The best trajectory's controls, one per control step from `step` on.
+    /// The chosen sequence's controls (the best trajectory's, or MPPI's average), one per
+    /// control step from `step` on.
     pub sequence: Vec<Controls>,
     pub best_cost: f64,
     pub resamples: usize,
@@ -303,7 +304,7 @@ fn plan_requests(mut replica: Simulation, requests: Receiver<Message>, replies: 
         let plan = Plan {
             epoch: request.epoch,
             step: request.step,
-            sequence: optimizer.best_sequence(),
+            sequence: optimizer.chosen_sequence(),
             best_cost: result.best_cost,
             resamples: result.resamples,
             blowups: result.blowups,

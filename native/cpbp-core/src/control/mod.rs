@@ -7,6 +7,7 @@ pub mod cpbp;
 pub mod fidelity;
 mod lean;
 mod optimizer;
+pub mod sampling;
 
 pub use anytime::{AnytimeOptimizer, HandoverStats, Plan, PlanWait};
 pub use arcade::{eq_4_12, eq_4_8, ArcadeController, ArcadeGains};

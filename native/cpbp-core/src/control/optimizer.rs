@@ -1,11 +1,13 @@
-//! The optimizer and combined controllers (thesis §4.3): C-PBP plans in rollout worlds
-//! cloned from the master; combined mode warm-starts it with the arcade controller's own
-//! rollout (particle 1), optimizer mode without one.
+//! The planning controllers: the optimizer and combined (thesis §4.3: C-PBP plans in
+//! rollout worlds cloned from the master; combined mode warm-starts it with the arcade
+//! controller's own rollout, particle 1, optimizer mode without one), and the baselines
+//! predictive sampling and MPPI in the same worlds with the same cost.
 
 use super::arcade::ArcadeController;
 use super::bike_rollout::{bike_priors, BikeRollout, LeanGoal};
 use super::cpbp::{PlanResult, Planner, PlannerConfig, WarmStart};
-use crate::bike::{Controls, DriveInput};
+use super::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
+use crate::bike::{index, Controls, DriveInput, CONTROL_DIM};
 use crate::ode::Solver;
 use crate::physics::PhysicsModel;
 use crate::simulation::Simulation;
@@ -16,6 +18,36 @@ pub enum OptimizerMode {
     Optimizer,
     /// C-PBP warm-started with the arcade controller's trajectory.
     Combined,
+    /// MuJoCo MPC's predictive sampling: the cheapest of a nominal plan and its
+    /// perturbations becomes the plan.
+    Sampling,
+    /// MPPI: the cost-weighted average of the perturbations becomes the plan.
+    Mppi,
+}
+
+/// What the baseline planners (predictive sampling, MPPI) sample and how widely.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BaselineSettings {
+    /// Knots of a plan over the horizon.
+    pub knots: usize,
+    /// A knot's perturbation σ as a share of the priors' static σ (steering: 4 rad/s).
+    pub noise: f64,
+    /// MPPI's temperature, relative to the spread of the totals (median − cheapest).
+    pub temperature: f64,
+    /// Plan the steering alone, the rider holding the riding pose with the pose PD (the
+    /// pose prior's mean), instead of every joint.
+    pub steering_only: bool,
+}
+
+impl Default for BaselineSettings {
+    fn default() -> Self {
+        Self {
+            knots: 6,
+            noise: 0.25,
+            temperature: 0.1,
+            steering_only: true,
+        }
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -45,6 +77,8 @@ pub struct OptimizerConfig {
     pub seed: u64,
     /// Rollout threads (0: one per core).
     pub threads: usize,
+    /// Settings of the baseline planners (ignored by C-PBP).
+    pub baseline: BaselineSettings,
 }
 
 impl Default for OptimizerConfig {
@@ -60,6 +94,7 @@ impl Default for OptimizerConfig {
             control_cost_weight: 0.01,
             seed: 2015,
             threads: 0,
+            baseline: BaselineSettings::default(),
         }
     }
 }
@@ -75,10 +110,16 @@ impl OptimizerConfig {
     }
 }
 
+/// How a mode searches: C-PBP, or one of the baselines.
+enum Search {
+    Cpbp(Planner),
+    Sampling(SamplingPlanner),
+}
+
 /// The planner, its rollout worlds, and the arcade controller it can lean on.
 pub struct BikeOptimizer {
     pub config: OptimizerConfig,
-    planner: Planner,
+    search: Search,
     rollouts: Vec<BikeRollout>,
     arcade: ArcadeController,
     last: Option<PlanResult>,
@@ -104,17 +145,8 @@ impl BikeOptimizer {
             drive: DriveInput::default(),
             policy: None,
         };
-        let planner_config = PlannerConfig {
-            particles: config.particles.max(1),
-            steps,
-            seed: config.seed,
-            threads: config.threads,
-            refine: config.mode == OptimizerMode::Optimizer,
-            control_cost_weight: config.control_cost_weight,
-            ..PlannerConfig::default()
-        };
         Self {
-            planner: Planner::new(planner_config, bike_priors(config.mutation_scale)),
+            search: search_for(&config, steps),
             rollouts: (0..config.particles.max(1)).map(|_| rollout()).collect(),
             arcade: ArcadeController::default(),
             last: None,
@@ -124,7 +156,10 @@ impl BikeOptimizer {
 
     /// Forgets previous plans (after a reset or a lift).
     pub fn reset(&mut self) {
-        self.planner.reset();
+        match &mut self.search {
+            Search::Cpbp(planner) => planner.reset(),
+            Search::Sampling(planner) => planner.reset(),
+        }
         self.arcade.reset();
         self.last = None;
     }
@@ -134,13 +169,25 @@ impl BikeOptimizer {
         self.last.as_ref()
     }
 
-    /// The last plan's best trajectory as controls, one per control step (the first is
-    /// what `controls` returned), with the player's throttle and brake.
-    pub fn best_sequence(&self) -> Vec<Controls> {
-        let Some(plan) = &self.last else {
-            return Vec::new();
-        };
-        plan.sequences[plan.best]
+    /// The last plan's chosen sequence (the best trajectory's, or MPPI's average) as
+    /// controls, one per control step (the first is what `controls` returned), with the
+    /// player's throttle and brake.
+    pub fn chosen_sequence(&self) -> Vec<Controls> {
+        self.last
+            .as_ref()
+            .map_or_else(Vec::new, |plan| self.as_controls(&plan.chosen))
+    }
+
+    /// Every final trajectory of the last plan as controls, as `chosen_sequence` gives the
+    /// chosen one (for replaying the plan's rollouts without the planner).
+    pub fn sequences(&self) -> Vec<Vec<Controls>> {
+        self.last.as_ref().map_or_else(Vec::new, |plan| {
+            plan.sequences.iter().map(|s| self.as_controls(s)).collect()
+        })
+    }
+
+    fn as_controls(&self, sequence: &[f64]) -> Vec<Controls> {
+        sequence
             .chunks_exact(crate::bike::CONTROL_DIM)
             .map(|u| self.rollouts[0].controls_for(u))
             .collect()
@@ -149,7 +196,10 @@ impl BikeOptimizer {
     /// Tells the planner which controls the master really applied last (when that was
     /// not its own first control: a fallback, or a plan that arrived late).
     pub fn note_applied(&mut self, controls: &Controls) {
-        self.planner.note_applied(controls.values());
+        match &mut self.search {
+            Search::Cpbp(planner) => planner.note_applied(controls.values()),
+            Search::Sampling(planner) => planner.note_applied(controls.values()),
+        }
     }
 
     /// Plans one control step of `sim` towards `desired_lean` with the player's `drive`.
@@ -179,13 +229,58 @@ impl BikeOptimizer {
         self.arcade.controls_of(sim, desired_lean, drive);
         // Particle 1: combined mode follows the arcade controller live; the optimizer
         // alone replays last frame's refinement.
-        let warm = match self.config.mode {
-            OptimizerMode::Combined => WarmStart::Policy,
-            OptimizerMode::Optimizer => WarmStart::Refinement,
+        let result = match &mut self.search {
+            Search::Cpbp(planner) => {
+                let warm = match self.config.mode {
+                    OptimizerMode::Combined => WarmStart::Policy,
+                    _ => WarmStart::Refinement,
+                };
+                planner.plan(&mut self.rollouts, &start, warm)
+            }
+            Search::Sampling(planner) => planner.plan(&mut self.rollouts, &start),
         };
-        let result = self.planner.plan(&mut self.rollouts, &start, warm);
         let controls = self.rollouts[0].controls_for(&result.control);
         self.last = Some(result);
         controls
     }
+}
+
+/// The search `config.mode` names, planning `steps` steps ahead.
+fn search_for(config: &OptimizerConfig, steps: usize) -> Search {
+    let priors = bike_priors(config.mutation_scale);
+    let update = match config.mode {
+        OptimizerMode::Optimizer | OptimizerMode::Combined => {
+            let planner_config = PlannerConfig {
+                particles: config.particles.max(1),
+                steps,
+                seed: config.seed,
+                threads: config.threads,
+                refine: config.mode == OptimizerMode::Optimizer,
+                control_cost_weight: config.control_cost_weight,
+                ..PlannerConfig::default()
+            };
+            return Search::Cpbp(Planner::new(planner_config, priors));
+        }
+        OptimizerMode::Sampling => SamplingUpdate::Best,
+        OptimizerMode::Mppi => SamplingUpdate::Weighted {
+            temperature: config.baseline.temperature,
+        },
+    };
+    let baseline = &config.baseline;
+    let sampled = baseline
+        .steering_only
+        .then(|| (0..CONTROL_DIM).map(|d| d == index::STEER).collect());
+    let sampling_config = SamplingConfig {
+        samples: config.particles.max(1),
+        steps,
+        knots: baseline.knots.max(2),
+        noise: baseline.noise,
+        update,
+        sampled,
+        control_cost_weight: config.control_cost_weight,
+        seed: config.seed,
+        threads: config.threads,
+        ..SamplingConfig::default()
+    };
+    Search::Sampling(SamplingPlanner::new(sampling_config, priors))
 }

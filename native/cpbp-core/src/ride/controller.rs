@@ -70,12 +70,22 @@ pub enum ControllerKind {
     Optimizer,
     /// C-PBP warm-started with the arcade controller's trajectory.
     Combined,
+    /// MuJoCo MPC's predictive sampling (a baseline planner).
+    Sampling,
+    /// MPPI (a baseline planner).
+    Mppi,
 }
 
 impl ControllerKind {
     /// In the order the menus list them and the game cycles through them.
-    pub const ALL: [ControllerKind; 4] =
-        [Self::Optimizer, Self::Combined, Self::Arcade, Self::Manual];
+    pub const ALL: [ControllerKind; 6] = [
+        Self::Optimizer,
+        Self::Combined,
+        Self::Arcade,
+        Self::Sampling,
+        Self::Mppi,
+        Self::Manual,
+    ];
 
     /// The name settings files, the experiment's CSV and the command line use.
     pub fn name(self) -> &'static str {
@@ -84,6 +94,8 @@ impl ControllerKind {
             Self::Manual => "manual",
             Self::Optimizer => "optimizer",
             Self::Combined => "combined",
+            Self::Sampling => "sampling",
+            Self::Mppi => "mppi",
         }
     }
 
@@ -94,6 +106,8 @@ impl ControllerKind {
             Self::Manual => "Manual (nobody balances)",
             Self::Optimizer => "Optimizer (C-PBP)",
             Self::Combined => "Combined (C-PBP + arcade)",
+            Self::Sampling => "Predictive sampling (baseline)",
+            Self::Mppi => "MPPI (baseline)",
         }
     }
 
@@ -108,17 +122,27 @@ impl ControllerKind {
 
     /// Whether it plans with trajectories (and so has plans to draw and time).
     pub fn plans(self) -> bool {
-        matches!(self, Self::Optimizer | Self::Combined)
+        self.planner_mode().is_some()
+    }
+
+    /// The planning mode behind a planning controller.
+    pub fn planner_mode(self) -> Option<OptimizerMode> {
+        match self {
+            Self::Optimizer => Some(OptimizerMode::Optimizer),
+            Self::Combined => Some(OptimizerMode::Combined),
+            Self::Sampling => Some(OptimizerMode::Sampling),
+            Self::Mppi => Some(OptimizerMode::Mppi),
+            Self::Arcade | Self::Manual => None,
+        }
     }
 
     /// A new controller of this kind for `sim`.
     pub fn build(self, sim: &Simulation, planner: &PlannerSettings) -> Box<dyn Controller> {
         use super::drivers::{ArcadeDriver, ManualDriver, PlannerDriver};
-        match self {
-            Self::Arcade => Box::<ArcadeDriver>::default(),
-            Self::Manual => Box::new(ManualDriver),
-            Self::Optimizer => Box::new(PlannerDriver::new(sim, OptimizerMode::Optimizer, planner)),
-            Self::Combined => Box::new(PlannerDriver::new(sim, OptimizerMode::Combined, planner)),
+        match (self, self.planner_mode()) {
+            (_, Some(mode)) => Box::new(PlannerDriver::new(sim, mode, planner)),
+            (Self::Manual, None) => Box::new(ManualDriver),
+            _ => Box::<ArcadeDriver>::default(),
         }
     }
 }

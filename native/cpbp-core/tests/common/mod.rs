@@ -5,6 +5,8 @@
 // Each test crate uses its own subset of these helpers.
 #![allow(dead_code)]
 
+pub mod pendulum;
+
 use std::sync::Arc;
 
 use cpbp_core::bike::{DriveInput, Placement};

@@ -83,34 +83,34 @@ fn main() {
 }
 
 /// The combined planner's cost in `model`'s physics on flat ground at 15 km/h: ms per
-/// control step for N trajectories on 1 and 2 threads, the efficiency (planning steps per
-/// second against bare rollout stepping on 2 threads) and the largest real-time N.
+/// control step for N trajectories on 1 and 2 threads, the same rollouts stepped without
+/// the planner, the efficiency (the second over the first, both on 2 threads) and the
+/// largest real-time N.
 /// `references`: one classic bike step and one 15-sphere step (µs), for the cost of a
 /// planning step as a ratio.
 fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
     let flat = rolling_bike(Arc::new(Terrain::flat()), model);
     let substeps = model.rollout_substeps();
     let solver = model.rollout_solver();
-    let bare = median(|| parallel_planning_steps_per_second(&flat, 16, 2));
     println!();
     println!(
         "C-PBP, combined mode, {} physics: 1.2 s horizon (36 steps x {substeps} {solver:?} steps), 15 km/h:",
         model.name()
     );
-    println!("bare rollout stepping, 16 worlds on 2 threads: {bare:.0} planning steps/s");
     println!(
-        "{:<14} {:>16} {:>16} {:>12}",
-        "trajectories", "1 thread (ms)", "2 threads (ms)", "efficiency"
+        "{:<14} {:>16} {:>16} {:>18} {:>12}",
+        "trajectories", "1 thread (ms)", "2 threads (ms)", "rollouts alone", "efficiency"
     );
     let (mut largest_real_time, mut one_thread_64) = (0, 0.0);
     for n in [5, 10, 15, 32, 64, 128] {
-        let one = planning_ms(&flat, n, 1);
+        let (one, _) = planning_ms(&flat, n, 1);
         if n == 64 {
             one_thread_64 = one;
         }
-        let two = planning_ms(&flat, n, 2);
-        let efficiency = (n * 36) as f64 / (two / 1000.0) / bare;
-        println!("{n:<14} {one:>16.1} {two:>16.1} {efficiency:>12.2}");
+        let (two, sequences) = planning_ms(&flat, n, 2);
+        let alone = median(|| rollouts_alone_ms(&flat, &sequences, 2));
+        let efficiency = alone / two;
+        println!("{n:<14} {one:>16.1} {two:>16.1} {alone:>15.1} ms {efficiency:>12.2}");
         if two <= 1000.0 / 30.0 {
             largest_real_time = n;
         }
@@ -128,8 +128,8 @@ fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
 }
 
 /// Median milliseconds per control step of the combined planner with `n` trajectories,
-/// rolling out in the simulation's physics model.
-fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> f64 {
+/// rolling out in the simulation's physics model, and the last plan's final trajectories.
+fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> (f64, Vec<Vec<Controls>>) {
     let model = sim.config().physics;
     let config = OptimizerConfig {
         mode: OptimizerMode::Combined,
@@ -155,7 +155,7 @@ fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> f64 {
         })
         .collect();
     samples.sort_by(f64::total_cmp);
-    samples[samples.len() / 2]
+    (samples[samples.len() / 2], optimizer.sequences())
 }
 
 /// Rides 6 s in real time with the planner on its own thread, waiting at most 10 ms at a
@@ -295,36 +295,44 @@ fn snapshot_costs(sim: &Simulation) -> (f64, f64) {
     (snapshot, restore)
 }
 
-/// Planning steps (1/30 s in the model's rollout physics) per second when `worlds` bike
-/// worlds are split over `thread_count` threads, each restoring from the master and
-/// stepping a 1.2 s horizon: the planner's workload without the planner.
-fn parallel_planning_steps_per_second(sim: &Simulation, worlds: usize, thread_count: usize) -> f64 {
+/// Milliseconds to step a plan's final trajectories from the master's state in the
+/// model's rollout physics, one world each, split over `thread_count` threads: the
+/// planner's physics without the planner (no sampling, costs, resampling or restores).
+fn rollouts_alone_ms(sim: &Simulation, sequences: &[Vec<Controls>], thread_count: usize) -> f64 {
     let model = sim.config().physics;
     let state = sim.world().snapshot();
-    let mut all: Vec<World> = (0..worlds)
+    let mut worlds: Vec<World> = sequences
+        .iter()
         .map(|_| {
             let mut world = sim.new_world();
             world.set_solver(model.rollout_solver());
             world
         })
         .collect();
-    let (horizon, substeps) = (36, model.rollout_substeps());
+    let substeps = model.rollout_substeps();
     let dt = sim.config().control_dt / substeps as f64;
+    let per_thread = sequences.len().div_ceil(thread_count);
     let start = Instant::now();
     std::thread::scope(|scope| {
-        for chunk in all.chunks_mut(worlds.div_ceil(thread_count)) {
-            let state = &state;
+        for (worlds, sequences) in worlds
+            .chunks_mut(per_thread)
+            .zip(sequences.chunks(per_thread))
+        {
+            let (state, bike) = (&state, sim.bike());
             scope.spawn(move || {
-                for world in chunk {
+                for (world, sequence) in worlds.iter_mut().zip(sequences) {
                     world.restore(state).expect("same model");
-                    for _ in 0..horizon * substeps {
-                        world.step(dt);
+                    for controls in sequence {
+                        bike.apply(world, controls);
+                        for _ in 0..substeps {
+                            world.step(dt);
+                        }
                     }
                 }
             });
         }
     });
-    (worlds * horizon) as f64 / start.elapsed().as_secs_f64()
+    start.elapsed().as_secs_f64() * 1000.0
 }
 
 fn time_per_call(calls: usize, mut f: impl FnMut()) -> f64 {

@@ -74,6 +74,9 @@ pub struct PlanResult {
     /// Each final particle's control sequence (K·D values) and total cost.
     pub sequences: Vec<Vec<f64>>,
     pub costs: Vec<f64>,
+    /// The sequence (K·D values) the controller applies, `control` first: the best
+    /// trajectory's, or MPPI's cost-weighted average of all of them.
+    pub chosen: Vec<f64>,
     /// How many of the K steps resampled.
     pub resamples: usize,
     /// Rollouts that blew up (restored and given `blowup_cost`).

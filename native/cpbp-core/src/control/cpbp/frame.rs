@@ -216,7 +216,7 @@ pub(super) fn draw(weights: &[f64], rng: &mut Pcg64) -> usize {
 
 /// A seed for one stream: the same (seed, frame, stream) always gives the same draws,
 /// whichever thread uses it.
-pub(super) fn mix(seed: u64, frame: u64, stream: u64) -> u64 {
+pub(crate) fn mix(seed: u64, frame: u64, stream: u64) -> u64 {
     let mut z = seed
         ^ frame.wrapping_mul(0x9E37_79B9_7F4A_7C15)
         ^ stream.wrapping_mul(0xD1B5_4A32_D192_ED03);

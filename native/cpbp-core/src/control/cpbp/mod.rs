@@ -16,6 +16,7 @@ mod rollout;
 mod sequences;
 
 pub use config::{PlanResult, PlannerConfig, WarmStart};
+pub(crate) use frame::mix;
 pub use planner::Planner;
 pub use priors::Priors;
 pub use rollout::RolloutSystem;

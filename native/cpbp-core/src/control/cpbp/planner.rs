@@ -250,6 +250,7 @@ impl Planner {
             control,
             best_cost: totals[best],
             best,
+            chosen: sequences[best].clone(),
             sequences,
             costs: totals,
             resamples: records.iter().skip(1).filter(|r| r.resampled).count(),

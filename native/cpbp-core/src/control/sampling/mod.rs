@@ -1,0 +1,9 @@
+//! The baseline planners of MuJoCo MPC's kind (issue 17): predictive sampling and MPPI,
+//! planning over the same [`RolloutSystem`](super::cpbp::RolloutSystem)s, priors and cost
+//! as C-PBP, so the three differ only in how they search.
+
+mod planner;
+mod spline;
+
+pub use planner::{SamplingConfig, SamplingPlanner, SamplingUpdate};
+pub use spline::Knots;
