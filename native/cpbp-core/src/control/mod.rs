@@ -15,4 +15,4 @@ pub use bike_rollout::{bike_priors, BikeRollout, LeanGoal};
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };
-pub use optimizer::{BikeOptimizer, OptimizerConfig, OptimizerMode};
+pub use optimizer::{BaselineSettings, BikeOptimizer, OptimizerConfig, OptimizerMode};
