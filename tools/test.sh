@@ -35,6 +35,7 @@ step "controller rides (release)" tools/cargo test --release -p cpbp-core --test
 step "bicycle benchmark"    env PYTHONPATH=tools .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
 # The experiment's statistics, results file and scheduling (no Godot needed).
 step "experiment unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest discover -s tools/cpbp_experiment/tests -t tools
+step "planner scenario unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest planner_scenarios.tests.test_planner_scenarios
 step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdlint"
 step "gdformat"             bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdformat --check"
 step "test runner self-test" tools/test-runner-selftest.sh

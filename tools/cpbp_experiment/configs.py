@@ -19,6 +19,7 @@ THESIS_CONTROLLERS = (
 # warm-started, then the baselines predictive sampling and MPPI. The worker refuses a name
 # the registry does not know, so this list cannot drift unnoticed.
 PLANNERS = ("optimizer", "combined", "sampling", "mppi")
+BASELINES = PLANNERS[2:]
 # The game's physics models (cpbp_core::physics::PhysicsModel); rows without one are
 # classic, the model every row was ridden in before the exact model existed.
 PHYSICS = ("classic", "exact")

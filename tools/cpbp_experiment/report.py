@@ -9,7 +9,7 @@ from collections import defaultdict
 from dataclasses import dataclass
 from pathlib import Path
 
-from .configs import PLANNERS, Config, Controller, display_order
+from .configs import BASELINES, PLANNERS, Config, Controller, display_order
 from .results import Attempt
 from .stats import mcnemar_exact, mean, wilson_interval
 
@@ -130,15 +130,18 @@ def cost_table(summaries: dict[Config, Summary], attempts: list[Attempt]) -> str
 
 
 def paired_table(attempts: list[Attempt]) -> str:
-    """Each planner against arcade, and combined against the optimizer at the same N (in
-    the same physics), and each controller in the exact physics against itself in the
-    classic, on the attempts both rode (the same bumps), with the exact McNemar test."""
+    """Each planner against arcade, combined against the optimizer and each baseline
+    (sampling, MPPI) against both C-PBP planners at the same N (in the same physics), and
+    each controller in the exact physics against itself in the classic, on the attempts
+    both rode (the same bumps), with the exact McNemar test."""
     outcome = {(a.config, a.attempt): a.outcome == "goal" for a in attempts}
     configs = {a.config for a in attempts}
     controllers = sorted({c.controller for c in configs}, key=display_order)
     pairs = [(c, Controller("arcade", 0, c.physics)) for c in controllers if c.kind != "arcade"]
     pairs += [(c, Controller("optimizer", c.trajectories, c.physics)) for c in controllers
               if c.kind == "combined"]
+    pairs += [(c, Controller(cpbp, c.trajectories, c.physics)) for c in controllers
+              if c.kind in BASELINES for cpbp in ("optimizer", "combined")]
     pairs += [(c, c.in_physics("classic")) for c in controllers if c.physics != "classic"]
     lines = [
         "| speed | A | B | pairs | both goal | only A | only B | neither | McNemar p |",

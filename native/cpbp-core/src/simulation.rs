@@ -174,6 +174,20 @@ impl Simulation {
         self.airborne_for = 0.0;
     }
 
+    /// Shoves the bike with an impulse (N·s, world frame) through the frame's centre of
+    /// mass, as a push or a glancing blow would; the joints share it out over the next
+    /// step. A non-finite impulse is ignored.
+    pub fn push(&mut self, impulse: DVec3) {
+        if !impulse.is_finite() {
+            return;
+        }
+        let frame = self.bike.body(Part::Frame);
+        let mass = self.world.body_mass(frame);
+        let velocity = DVec3::from_array(self.world.body_linear_velocity(frame));
+        self.world
+            .set_body_linear_velocity(frame, (velocity + impulse / mass).to_array());
+    }
+
     /// Stands the bike up where it is, facing where it was heading, a little above the
     /// ground it was on, at rest. The spawn point stays as it was.
     pub fn lift_upright(&mut self) {

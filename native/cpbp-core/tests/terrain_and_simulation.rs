@@ -254,6 +254,28 @@ fn swapping_the_terrain_keeps_the_ride() {
 }
 
 #[test]
+fn a_push_moves_the_bike_sideways_and_a_bad_one_is_ignored() {
+    let mut sim = Simulation::new(SimulationConfig::default(), flat(), spawn_at(0.0));
+    settle(&mut sim, 0.5);
+    let before = sim.world().snapshot();
+    sim.push(DVec3::new(f64::NAN, 0.0, 0.0));
+    sim.push(DVec3::splat(f64::INFINITY));
+    assert_eq!(
+        sim.world().snapshot(),
+        before,
+        "a non-finite push changes nothing"
+    );
+    let frame = sim.bike().body(Part::Frame);
+    sim.push(DVec3::new(0.0, 0.0, 50.0));
+    let velocity = sim.world().body_linear_velocity(frame);
+    let expected = 50.0 / sim.world().body_mass(frame);
+    assert!((velocity[2] - before.bodies[frame.0].linear_velocity[2] - expected).abs() < 1e-9);
+    sim.step();
+    let com = sim.bike().center_of_mass(sim.world());
+    assert!(com.z > 0.0, "the bike moved along the push: {com}");
+}
+
+#[test]
 fn landing_after_a_drop_is_reported_once() {
     let mut sim = Simulation::new(SimulationConfig::default(), flat(), spawn_at(1.5));
     let landings: usize = (0..60).map(|_| usize::from(sim.step().landed)).sum();

@@ -55,6 +55,13 @@ class ReportTest(unittest.TestCase):
         self.assertNotIn("| 25 km/h | combined-5:exact | arcade", paired,
                          "no exact arcade attempts to pair with")
 
+    def test_a_baseline_pairs_with_both_cpbp_planners_at_its_n(self):
+        mppi = Controller("mppi", 5)
+        paired = report.paired_table(self.attempts + attempts(Config(25, mppi), 25, 4))
+        # Attempts 0–28 at 25 km/h: combined-5 reached the goal on all, MPPI on 0–24.
+        self.assertIn("| 25 km/h | mppi-5 | combined-5 | 29 | 25 | 0 | 4 | 0 | 0.12 |", paired)
+        self.assertNotIn("| 25 km/h | mppi-5 | optimizer-5", paired, "no optimizer rows")
+
     def test_controller_labels_name_the_physics_and_parse_back(self):
         for label in ("arcade", "arcade:exact", "combined-15:exact", "optimizer-5",
                       "sampling-10:exact", "mppi-64"):

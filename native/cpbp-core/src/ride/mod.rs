@@ -10,6 +10,8 @@ pub use controller::{Controller, ControllerKind, Intent, PlannerSettings, RideSt
 
 use std::sync::Arc;
 
+use glam::DVec3;
+
 use crate::bike::{Controls, Placement};
 use crate::control::{HandoverStats, Plan, TurnIntent};
 use crate::simulation::{Simulation, StepEvents};
@@ -186,6 +188,11 @@ impl Ride {
         self.started = false;
         self.steps = 0;
         self.late_plans = 0;
+    }
+
+    /// Shoves the bike (see `Simulation::push`); the controller carries on.
+    pub fn push(&mut self, impulse: DVec3) {
+        self.sim.push(impulse);
     }
 
     /// Stands a fallen bike up where it lies.

@@ -1,0 +1,260 @@
+//! The planners side by side on scripted manoeuvres (issue 17): `cpbp-scenarios
+//! --controllers combined,optimizer,sampling,mppi --counts 5,10,20 --seeds 0-9
+//! [--scenarios turn,slalom,push,walk] [--physics exact] [--skip FILE]` rides every controller with every N on every
+//! scenario and seed, on flat ground, and prints one CSV row per ride as it ends (`tools/
+//! experiment scenarios` saves them and computes the paired statistics). Seed i sets the
+//! planner's seed, the bike's heading and the scenario's own draw (the push's strength
+//! and side, the slalom's first side), so every controller meets the same ride i.
+//!
+//! Scenarios: `turn` (3 s straight at 20 km/h, then 15° right; the RMS lean error over
+//! the last 5 s), `slalom` (20 km/h, ±15° every 2 s for 12 s; RMS over the last 10 s),
+//! `push` (15 km/h, a sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s
+//! after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h).
+
+use std::collections::HashSet;
+use std::sync::Arc;
+
+use cpbp_core::bike::{DriveInput, Placement};
+use cpbp_core::control::PlanWait;
+use cpbp_core::physics::PhysicsModel;
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::simulation::{Simulation, SimulationConfig};
+use cpbp_core::terrain::Terrain;
+use glam::{DQuat, DVec3};
+
+const SCENARIOS: [&str; 4] = ["turn", "slalom", "push", "walk"];
+const STEPS_PER_SECOND: f64 = 30.0;
+
+struct Args {
+    controllers: Vec<ControllerKind>,
+    counts: Vec<usize>,
+    seeds: Vec<u64>,
+    scenarios: Vec<&'static str>,
+    physics: PhysicsModel,
+    /// Rows already saved ("scenario,controller,N,seed,physics"): not ridden again.
+    skip: HashSet<String>,
+}
+
+/// What one ride measured.
+struct Outcome {
+    fell: bool,
+    metric: f64,
+    planning_ms: f64,
+}
+
+fn main() {
+    let args = match parse(std::env::args().skip(1).collect()) {
+        Ok(args) => args,
+        Err(why) => {
+            eprintln!("cpbp-scenarios: {why}");
+            std::process::exit(2);
+        }
+    };
+    println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms");
+    for &scenario in &args.scenarios {
+        for &kind in &args.controllers {
+            for &n in &args.counts {
+                for &seed in &args.seeds {
+                    let physics = args.physics.name();
+                    let key = format!("{scenario},{},{n},{seed},{physics}", kind.name());
+                    if args.skip.contains(&key) {
+                        continue;
+                    }
+                    let o = ride_scenario(scenario, kind, n, seed, args.physics);
+                    println!("{key},{},{:.4},{:.3}", o.fell, o.metric, o.planning_ms);
+                }
+            }
+        }
+    }
+}
+
+fn parse(arguments: Vec<String>) -> Result<Args, String> {
+    let value = |flag: &str| {
+        arguments
+            .iter()
+            .position(|a| a == flag)
+            .map(|i| {
+                arguments
+                    .get(i + 1)
+                    .cloned()
+                    .ok_or(format!("{flag} needs a value"))
+            })
+            .transpose()
+    };
+    let controllers = value("--controllers")?
+        .unwrap_or("combined,optimizer,sampling,mppi".into())
+        .split(',')
+        .map(|name| {
+            ControllerKind::from_name(name)
+                .filter(|k| k.plans())
+                .ok_or(format!("not a planning controller: {name}"))
+        })
+        .collect::<Result<_, _>>()?;
+    let counts = value("--counts")?
+        .unwrap_or("5,10,20".into())
+        .split(',')
+        .map(|n| match n.parse() {
+            Ok(n @ 1..=256) => Ok(n),
+            _ => Err(format!("trajectory counts are 1–256, not {n}")),
+        })
+        .collect::<Result<_, _>>()?;
+    let seeds = value("--seeds")?.unwrap_or("0-9".into());
+    let (first, last) = seeds.split_once('-').unwrap_or((&seeds, &seeds));
+    let (first, last): (u64, u64) = match (first.parse(), last.parse()) {
+        (Ok(a), Ok(b)) if a <= b => (a, b),
+        _ => return Err(format!("--seeds is FIRST-LAST, not {seeds}")),
+    };
+    let scenarios = value("--scenarios")?
+        .unwrap_or(SCENARIOS.join(","))
+        .split(',')
+        .map(|name| {
+            SCENARIOS.into_iter().find(|s| *s == name).ok_or(format!(
+                "scenarios are {}, not {name}",
+                SCENARIOS.join(", ")
+            ))
+        })
+        .collect::<Result<_, _>>()?;
+    let physics = value("--physics")?.unwrap_or("exact".into());
+    let physics = PhysicsModel::from_name(&physics)
+        .ok_or(format!("--physics is classic or exact, not {physics}"))?;
+    let skip = match value("--skip")? {
+        Some(path) => std::fs::read_to_string(&path)
+            .map_err(|e| format!("cannot read {path}: {e}"))?
+            .lines()
+            .map(|line| line.splitn(6, ',').take(5).collect::<Vec<_>>().join(","))
+            .collect(),
+        None => HashSet::new(),
+    };
+    Ok(Args {
+        controllers,
+        counts,
+        seeds: (first..=last).collect(),
+        scenarios,
+        physics,
+        skip,
+    })
+}
+
+/// A number in [0, 1) drawn from `seed` for `what`: the same for every controller.
+fn draw(seed: u64, what: u64) -> f64 {
+    let mut z = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ what.wrapping_mul(0xD1B5_4A32_D192_ED03);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+}
+
+fn ride_scenario(
+    scenario: &str,
+    kind: ControllerKind,
+    n: usize,
+    seed: u64,
+    physics: PhysicsModel,
+) -> Outcome {
+    let kmh = match scenario {
+        "walk" => 8.0,
+        "push" => 15.0,
+        _ => 20.0,
+    };
+    let mut ride = new_ride(kind, n, seed, physics, kmh);
+    let mut planning = Vec::new();
+    let mut run = |ride: &mut Ride, seconds: f64, lean: f64, each: &mut dyn FnMut(&Ride)| {
+        ride.set_intent(Intent {
+            lean: Some(lean),
+            ..*ride.intent()
+        });
+        for _ in 0..(seconds * STEPS_PER_SECOND).round() as usize {
+            ride.step();
+            planning.extend(ride.plan().map(|p| p.planning_ms));
+            each(ride);
+        }
+    };
+    let lean_of = |ride: &Ride| {
+        let sim = ride.sim();
+        sim.bike().lean(sim.world(), sim.up())
+    };
+    let mut samples = Vec::new();
+    let want = 15f64.to_radians();
+    match scenario {
+        "turn" => {
+            run(&mut ride, 3.0, 0.0, &mut |_| {});
+            run(&mut ride, 2.0, want, &mut |_| {});
+            run(&mut ride, 5.0, want, &mut |r| {
+                samples.push(lean_of(r) - want)
+            });
+        }
+        "slalom" => {
+            run(&mut ride, 3.0, 0.0, &mut |_| {});
+            let first = if draw(seed, 1) < 0.5 { 1.0 } else { -1.0 };
+            for gate in 0..6 {
+                let target = want * if gate % 2 == 0 { first } else { -first };
+                let measured = gate > 0;
+                run(&mut ride, 2.0, target, &mut |r| {
+                    if measured {
+                        samples.push(lean_of(r) - target);
+                    }
+                });
+            }
+        }
+        "push" => {
+            run(&mut ride, 3.0, 0.0, &mut |_| {});
+            let sim = ride.sim();
+            let forward = sim.bike().frame_rotation(sim.world()) * DVec3::X;
+            let side = forward.cross(sim.up()).normalize_or_zero();
+            let sign = if draw(seed, 2) < 0.5 { 1.0 } else { -1.0 };
+            ride.push(side * sign * (100.0 + 150.0 * draw(seed, 3)));
+            run(&mut ride, 5.0, 0.0, &mut |r| samples.push(lean_of(r)));
+        }
+        _ => {
+            run(&mut ride, 10.0, 0.0, &mut |_| {});
+            run(&mut ride, 10.0, 0.0, &mut |r| {
+                let sim = r.sim();
+                samples.push(sim.bike().forward_speed(sim.world(), sim.up()) * 3.6);
+            });
+        }
+    }
+    let metric = match scenario {
+        "turn" | "slalom" => (samples.iter().map(|e| e * e).sum::<f64>() / samples.len() as f64)
+            .sqrt()
+            .to_degrees(),
+        "push" => samples
+            .iter()
+            .fold(0.0, |m: f64, l| m.max(l.abs()))
+            .to_degrees(),
+        _ => samples.iter().sum::<f64>() / samples.len() as f64,
+    };
+    Outcome {
+        fell: ride.sim().crashed().is_some(),
+        metric,
+        planning_ms: planning.iter().sum::<f64>() / planning.len().max(1) as f64,
+    }
+}
+
+/// A ride on flat ground heading where seed `seed` says, waiting for every plan so the
+/// outcome does not depend on the machine, full throttle towards `kmh`.
+fn new_ride(kind: ControllerKind, n: usize, seed: u64, physics: PhysicsModel, kmh: f64) -> Ride {
+    let spawn = Placement {
+        position: DVec3::new(0.0, 0.02, 0.0),
+        rotation: DQuat::from_rotation_y(std::f64::consts::TAU * draw(seed, 0)),
+    };
+    let config = SimulationConfig {
+        physics,
+        ..SimulationConfig::default()
+    };
+    let mut ride = Ride::new(
+        Simulation::new(config, Arc::new(Terrain::flat()), spawn),
+        kind,
+    );
+    ride.planner.optimizer.particles = n;
+    ride.planner.optimizer.seed = seed;
+    ride.planner.wait = PlanWait::EveryPlan;
+    ride.set_intent(Intent {
+        drive: DriveInput {
+            throttle: 1.0,
+            brake: 0.0,
+            max_speed: kmh / 3.6,
+        },
+        lean: Some(0.0),
+        ..Intent::default()
+    });
+    ride
+}

@@ -1,0 +1,75 @@
+"""Command line: ride the scenarios (resumable) and write the paired report."""
+
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+from pathlib import Path
+
+from .report import write_report
+from .rows import FIELDS, ScenarioRows
+
+PROJECT_ROOT = Path(__file__).resolve().parents[2]
+BINARY = PROJECT_ROOT / "native" / "target" / "release" / "cpbp-scenarios"
+ROWS = "scenarios.csv"
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    rows = ScenarioRows(out / ROWS)
+    try:
+        rows.load()
+        if args.command in ("run", "all"):
+            ride(args, rows)
+        if args.command in ("report", "all"):
+            write_report(rows.load(), out)
+            print(f"planner-scenarios: report written to {out / 'scenarios.md'}", file=sys.stderr)
+    except (ValueError, OSError, subprocess.CalledProcessError) as error:
+        print(f"planner-scenarios: {error}", file=sys.stderr)
+        return 2
+    return 0
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="tools/planner-scenarios",
+        description="C-PBP, predictive sampling and MPPI on the same scripted rides (a "
+                    "turn, a slalom, a push, walking pace), paired by seed. Rows are "
+                    "appended to OUT/scenarios.csv as each ride ends; rerunning resumes.")
+    parser.add_argument("command", nargs="?", choices=("all", "run", "report"), default="all")
+    parser.add_argument("--out", default="docs/scenarios", help="directory of scenarios.csv "
+                        "and the report (default docs/scenarios)")
+    parser.add_argument("--controllers", default="combined,optimizer,sampling,mppi",
+                        help="planning controllers of the registry, comma-separated")
+    parser.add_argument("--counts", default="5,10", help="trajectory counts N")
+    parser.add_argument("--seeds", default="0-9", help="FIRST-LAST: ride i for each")
+    parser.add_argument("--scenarios", default="turn,slalom,push,walk")
+    parser.add_argument("--physics", default="exact", choices=("classic", "exact"))
+    return parser
+
+
+def ride(args: argparse.Namespace, rows: ScenarioRows) -> None:
+    """Builds cpbp-scenarios and streams its rows into the file, skipping saved ones."""
+    subprocess.run([str(PROJECT_ROOT / "tools" / "cargo"), "build", "--quiet", "--release",
+                    "-p", "cpbp-core", "--bin", "cpbp-scenarios"], check=True)
+    command = [str(BINARY), "--controllers", args.controllers, "--counts", args.counts,
+               "--seeds", args.seeds, "--scenarios", args.scenarios, "--physics", args.physics]
+    if rows.path.exists():
+        command += ["--skip", str(rows.path)]
+    with subprocess.Popen(command, stdout=subprocess.PIPE, text=True) as process:
+        assert process.stdout is not None
+        header = process.stdout.readline().strip().split(",")
+        if header != list(FIELDS):
+            process.kill()
+            raise ValueError(f"cpbp-scenarios printed columns {header}, expected {FIELDS}")
+        for line in process.stdout:
+            row = rows.append(line)
+            print(f"planner-scenarios: {row['scenario']} {row['controller']}-"
+                  f"{row['trajectories']} seed {row['seed']}: "
+                  f"{'fell' if row['fell'] else 'up'}, {row['metric']:.2f}",
+                  file=sys.stderr, flush=True)
+    if process.returncode != 0:
+        raise ValueError(f"cpbp-scenarios stopped with status {process.returncode}")

@@ -1,0 +1,106 @@
+"""The scenario report: per scenario, each planner and N with its falls, its metric's mean
+and 95 % interval over the rides that stayed up, and its paired difference from combined
+(C-PBP warm-started, the game's planner) at the same N over the seeds both stayed up."""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from pathlib import Path
+
+from .stats import paired_difference, t_interval
+
+METRICS = {
+    "turn": "RMS lean error in a 15° turn at 20 km/h (°)",
+    "slalom": "RMS lean error in a ±15° slalom at 20 km/h (°)",
+    "push": "largest lean in the 5 s after a 100–250 N·s shove at 15 km/h (°)",
+    "walk": "speed held at walking pace, asked 8 km/h (km/h)",
+}
+ORDER = ("combined", "optimizer", "sampling", "mppi")
+REFERENCE = "combined"
+
+
+def _order(controller: str) -> int:
+    return ORDER.index(controller) if controller in ORDER else len(ORDER)
+
+
+def scenario_table(rows: list[dict], scenario: str) -> str:
+    groups: dict[tuple[str, int], list[dict]] = defaultdict(list)
+    for row in rows:
+        if row["scenario"] == scenario:
+            groups[(row["controller"], row["trajectories"])].append(row)
+    lines = [
+        f"**{METRICS.get(scenario, scenario)}**",
+        "",
+        "| planner | N | rides | falls | mean (95 % CI), rides that stayed up | "
+        f"paired difference from {REFERENCE} (95 % CI) | planning per step |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for (controller, n) in sorted(groups, key=lambda k: (k[1], _order(k[0]))):
+        mine = groups[(controller, n)]
+        up = {r["seed"]: r["metric"] for r in mine if not r["fell"]}
+        reference = {r["seed"]: r["metric"] for r in groups.get((REFERENCE, n), [])
+                     if not r["fell"]}
+        difference = ("–" if controller == REFERENCE
+                      else paired_difference(up, reference).text(2))
+        planning = sum(r["planning_ms"] for r in mine) / len(mine)
+        lines.append(f"| {controller} | {n} | {len(mine)} | {sum(r['fell'] for r in mine)} | "
+                     f"{t_interval(list(up.values())).text(2)} | {difference} | "
+                     f"{planning:.1f} ms |")
+    return "\n".join(lines)
+
+
+def write_report(rows: list[dict], out: Path) -> None:
+    scenarios = [s for s in METRICS if any(r["scenario"] == s for r in rows)]
+    physics = sorted({r["physics"] for r in rows})
+    parts = [
+        "# Planners side by side on scripted rides",
+        "",
+        "Made by `tools/planner-scenarios` from `scenarios.csv` "
+        f"({len(rows)} rides, {', '.join(physics) or 'no'} physics, flat ground). Seed *i* "
+        "sets the heading, the planner's seed and the scenario's draw, so every planner "
+        "meets the same ride *i*; paired differences are over the seeds on which both "
+        "stayed up. A negative difference in a lean error or a lean is better than "
+        f"{REFERENCE}.",
+        "",
+        "![Scenario metrics by planner and N](scenarios.png)",
+    ]
+    for scenario in scenarios:
+        parts += ["", scenario_table(rows, scenario)]
+    (out / "scenarios.md").write_text("\n".join(parts) + "\n")
+    if rows:
+        chart(rows, scenarios, out / "scenarios.png")
+
+
+def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    styles = {"combined": ("tab:orange", "s"), "optimizer": ("tab:blue", "o"),
+              "sampling": ("tab:green", "^"), "mppi": ("tab:purple", "D")}
+    fig, axes = plt.subplots(1, len(scenarios), figsize=(4.2 * len(scenarios), 4), dpi=110,
+                             squeeze=False)
+    for ax, scenario in zip(axes[0], scenarios):
+        mine = [r for r in rows if r["scenario"] == scenario]
+        controllers = sorted({r["controller"] for r in mine}, key=_order)
+        for k, controller in enumerate(controllers):
+            ns = sorted({r["trajectories"] for r in mine if r["controller"] == controller})
+            intervals = [t_interval([r["metric"] for r in mine if r["controller"] == controller
+                                     and r["trajectories"] == n and not r["fell"]]) for n in ns]
+            colour, marker = styles.get(controller, ("tab:gray", "x"))
+            offset = [n * (1 + 0.04 * (k - len(controllers) / 2)) for n in ns]
+            ax.errorbar(offset, [i.mean for i in intervals],
+                        yerr=[[i.mean - i.low for i in intervals],
+                              [i.high - i.mean for i in intervals]],
+                        color=colour, marker=marker, capsize=3, label=controller)
+        ax.set_xscale("log")
+        ax.set_xticks(sorted({r["trajectories"] for r in mine}))
+        ax.get_xaxis().set_major_formatter(matplotlib.ticker.ScalarFormatter())
+        ax.set_xlabel("trajectories N")
+        ax.set_title(METRICS[scenario], fontsize=8.5, wrap=True)
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)

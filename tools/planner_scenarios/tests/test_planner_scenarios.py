@@ -1,0 +1,80 @@
+import tempfile
+import unittest
+from pathlib import Path
+
+from planner_scenarios import report
+from planner_scenarios.rows import FIELDS, ScenarioRows, parse
+from planner_scenarios.stats import paired_difference, t_interval
+
+
+def line(scenario, controller, n, seed, fell, metric):
+    return f"{scenario},{controller},{n},{seed},exact,{'true' if fell else 'false'},{metric},9.5"
+
+
+class StatsTest(unittest.TestCase):
+    def test_the_t_interval_of_a_known_sample(self):
+        # Mean 2, sd 1, n 3: half-width t(0.975, 2) · 1/√3 = 4.3027 · 0.57735 = 2.4841.
+        interval = t_interval([1.0, 2.0, 3.0])
+        self.assertAlmostEqual(interval.mean, 2.0)
+        self.assertAlmostEqual(interval.high - interval.mean, 2.4841, places=4)
+
+    def test_a_paired_difference_uses_only_the_shared_seeds(self):
+        difference = paired_difference({0: 5.0, 1: 7.0, 2: 9.0}, {0: 4.0, 1: 5.0, 3: 1.0})
+        self.assertEqual(difference.n, 2)
+        self.assertAlmostEqual(difference.mean, 1.5)
+
+    def test_too_few_values_say_so(self):
+        self.assertEqual(t_interval([]).text(), "–")
+        self.assertEqual(t_interval([3.0]).text(), "3.0 (n = 1)")
+
+
+class RowsTest(unittest.TestCase):
+    def test_rows_append_and_read_back_and_a_cut_line_is_dropped(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            rows = ScenarioRows(Path(tmp) / "scenarios.csv")
+            rows.append(line("turn", "mppi", 5, 0, False, 4.5))
+            rows.append(line("turn", "mppi", 5, 1, True, 30.0))
+            with rows.path.open("a") as file:
+                file.write("turn,mppi,5,2,ex")  # killed mid-write
+            loaded = rows.load()
+            self.assertEqual([r["seed"] for r in loaded], [0, 1])
+            self.assertTrue(loaded[1]["fell"])
+            self.assertTrue(rows.path.read_text().endswith("\n"))
+
+    def test_malformed_rows_and_foreign_files_are_errors(self):
+        with self.assertRaisesRegex(ValueError, "fell is true or false"):
+            parse("turn,mppi,5,0,exact,maybe,1.0,2.0")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "scenarios.csv"
+            path.write_text("speed_kmh,controller\n")
+            with self.assertRaisesRegex(ValueError, "not a scenarios file"):
+                ScenarioRows(path).load()
+        self.assertEqual(FIELDS[0], "scenario")
+
+
+class ReportTest(unittest.TestCase):
+    def test_the_table_pairs_each_planner_with_combined_at_its_n(self):
+        rows = [parse(line("push", "combined", 5, s, False, m))
+                for s, m in enumerate([4.0, 6.0, 5.0])]
+        rows += [parse(line("push", "sampling", 5, s, s == 2, m))
+                 for s, m in enumerate([10.0, 12.0, 80.0])]
+        table = report.scenario_table(rows, "push")
+        self.assertIn("| combined | 5 | 3 | 0 | 5.00 (2.52 to 7.48) | – | 9.5 ms |", table)
+        # Seeds 0 and 1 both stayed up: differences 6 and 6, so the interval is a point.
+        self.assertIn("| sampling | 5 | 3 | 1 | 11.00 (-1.71 to 23.71) | 6.00 (6.00 to 6.00) |",
+                      table)
+
+    def test_the_report_and_chart_are_written(self):
+        rows = [parse(line(sc, c, n, s, False, 1.0 + s + n))
+                for sc in ("turn", "walk") for c in ("combined", "mppi") for n in (5, 10)
+                for s in range(3)]
+        with tempfile.TemporaryDirectory() as tmp:
+            report.write_report(rows, Path(tmp))
+            text = (Path(tmp) / "scenarios.md").read_text()
+            self.assertIn("24 rides, exact physics", text)
+            self.assertIn("speed held at walking pace", text)
+            self.assertGreater((Path(tmp) / "scenarios.png").stat().st_size, 10_000)
+
+
+if __name__ == "__main__":
+    unittest.main()
