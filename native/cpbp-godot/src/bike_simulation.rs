@@ -49,8 +49,9 @@ pub struct BikeSimulation {
     pub(crate) physics: BikePhysics,
     /// Who balances and steers, by name: `arcade` (the PD controller of the thesis,
     /// §4.3.2), `manual` (nobody: the bar follows `set_steer_rate`, for inspecting the
-    /// physics), `optimizer` (C-PBP) or `combined` (C-PBP warm-started with the arcade
-    /// controller). `controller_names()` lists those players pick.
+    /// physics), `optimizer` (C-PBP), `combined` (C-PBP warm-started with the arcade
+    /// controller), `sampling` or `mppi` (the baseline planners, MuJoCo MPC's predictive
+    /// sampling and MPPI). `controller_names()` lists those players pick.
     #[export]
     pub(crate) controller: BikeController,
     /// Trajectories the optimizer simulates each control step (N).

@@ -57,6 +57,8 @@ fn main() {
         planning_table(model, [bike_step, spheres]);
     }
 
+    planners_side_by_side();
+
     for model in PhysicsModel::ALL {
         fidelity::rollout_fidelity(model, &bump_field());
     }
@@ -103,11 +105,11 @@ fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
     );
     let (mut largest_real_time, mut one_thread_64) = (0, 0.0);
     for n in [5, 10, 15, 32, 64, 128] {
-        let (one, _) = planning_ms(&flat, n, 1);
+        let (one, _) = planning_ms(&flat, OptimizerMode::Combined, n, 1);
         if n == 64 {
             one_thread_64 = one;
         }
-        let (two, sequences) = planning_ms(&flat, n, 2);
+        let (two, sequences) = planning_ms(&flat, OptimizerMode::Combined, n, 2);
         let alone = median(|| rollouts_alone_ms(&flat, &sequences, 2));
         let efficiency = alone / two;
         println!("{n:<14} {one:>16.1} {two:>16.1} {alone:>15.1} ms {efficiency:>12.2}");
@@ -127,12 +129,44 @@ fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
     );
 }
 
-/// Median milliseconds per control step of the combined planner with `n` trajectories,
+/// Every planning mode's cost per control step in the game's physics on 2 threads.
+fn planners_side_by_side() {
+    let flat = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
+    let modes = [
+        OptimizerMode::Combined,
+        OptimizerMode::Optimizer,
+        OptimizerMode::Sampling,
+        OptimizerMode::Mppi,
+    ];
+    println!();
+    println!(
+        "Planners side by side ({} physics, 2 threads), ms per control step:",
+        PhysicsModel::default().name()
+    );
+    println!(
+        "{:<14} {:>10} {:>10} {:>10} {:>10}",
+        "trajectories", "combined", "optimizer", "sampling", "mppi"
+    );
+    for n in [5, 10, 20, 64] {
+        let cells: Vec<String> = modes
+            .iter()
+            .map(|&mode| format!("{:>10.1}", planning_ms(&flat, mode, n, 2).0))
+            .collect();
+        println!("{n:<14} {}", cells.join(" "));
+    }
+}
+
+/// Median milliseconds per control step of planner `mode` with `n` trajectories,
 /// rolling out in the simulation's physics model, and the last plan's final trajectories.
-fn planning_ms(sim: &Simulation, n: usize, threads: usize) -> (f64, Vec<Vec<Controls>>) {
+fn planning_ms(
+    sim: &Simulation,
+    mode: OptimizerMode,
+    n: usize,
+    threads: usize,
+) -> (f64, Vec<Vec<Controls>>) {
     let model = sim.config().physics;
     let config = OptimizerConfig {
-        mode: OptimizerMode::Combined,
+        mode,
         particles: n,
         threads,
         ..OptimizerConfig::default()
