@@ -77,6 +77,25 @@ func test_bad_input_is_rejected_or_clamped_without_a_crash() -> void:
 	assert_true(_bike.get_body_transform(0).origin.is_finite())
 
 
+func test_the_baseline_planners_plan_with_their_settings_and_survive_bad_ones() -> void:
+	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
+	_bike.controller = "mppi"
+	_bike.trajectories = 6
+	_bike.plan_wait_ms = 1000.0
+	_bike.baseline_knots = 4
+	_bike.baseline_noise = NAN
+	_bike.mppi_temperature = -3.0
+	_bike.set_drive(1.0, 0.0)
+	await wait_physics_frames(60)
+	assert_eq(_bike.get_trajectory_paths().size(), 6, "one path per candidate")
+	_bike.controller = "sampling"
+	_bike.baseline_steering_only = false
+	await wait_physics_frames(30)
+	assert_eq(_bike.get_controller_name(), "sampling")
+	assert_eq(_bike.get_trajectory_paths().size(), 6)
+	assert_true(_bike.get_body_transform(0).origin.is_finite(), "bad settings were clamped")
+
+
 func test_the_optimizer_settings_shape_its_plans() -> void:
 	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
 	_bike.controller = "combined"

@@ -3,12 +3,10 @@
 //! are in bike_queries.rs, its step events in bike_events.rs.
 
 use std::sync::Arc;
-use std::time::Duration;
 
 use cpbp_core::bike::{Controls, DriveInput, Part, CONTROL_DIM};
-use cpbp_core::control::{OptimizerConfig, PlanWait};
-use cpbp_core::physics::PhysicsModel;
-use cpbp_core::ride::{ControllerKind, Intent, PlannerSettings, Ride};
+use cpbp_core::control::BaselineSettings;
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
@@ -56,40 +54,52 @@ pub struct BikeSimulation {
     pub(crate) controller: BikeController,
     /// Trajectories the optimizer simulates each control step (N).
     #[export(range = (1.0, 256.0))]
-    trajectories: i32,
+    pub(crate) trajectories: i32,
     /// How far ahead the optimizer plans (s); the thesis used 1.2 s.
     #[export(range = (0.2, 3.0, 0.1, suffix = "s"))]
-    horizon: f64,
+    pub(crate) horizon: f64,
     /// Lean error (degrees) that costs as much as one unit (eq. 4.7's s): smaller tracks
     /// the requested lean more strictly.
     #[export(range = (1.0, 30.0, 0.5, suffix = "°"))]
-    lean_tolerance_deg: f64,
+    pub(crate) lean_tolerance_deg: f64,
     /// ODE steps per planning step in the rollouts; 0 takes the physics model's own (4 in
     /// classic, 1 in exact). Fewer plan faster but predict a different bike.
     #[export(range = (0.0, 8.0))]
-    rollout_substeps: i32,
+    pub(crate) rollout_substeps: i32,
     /// Longest the game waits at a control step for the planning thread (ms); a later
     /// plan is taken over at a later step while the last best trajectory plays on.
     #[export(range = (0.0, 1000.0, 1.0, suffix = "ms"))]
-    plan_wait_ms: f64,
+    pub(crate) plan_wait_ms: f64,
     /// Wait at every control step until its plan comes, however long that takes (headless
     /// tests and experiments): no step uses a late plan, so a ride repeats exactly for its
     /// seed on a loaded machine too. Off in the game, where a slow plan must not stall.
     #[export]
-    wait_for_every_plan: bool,
+    pub(crate) wait_for_every_plan: bool,
     /// Threads that simulate the optimizer's trajectories (0: one per core). The
     /// experiment runs one bike per core with one thread each.
     #[export(range = (0.0, 64.0))]
-    planning_threads: i32,
+    pub(crate) planning_threads: i32,
     /// Seed of the optimizer's random draws: the same seed, start and inputs give the same
     /// ride.
     #[export]
-    planner_seed: i64,
+    pub(crate) planner_seed: i64,
+    /// The baseline planners (`sampling`, `mppi`): knots of a plan over the horizon.
+    #[export(range = (2.0, 36.0))]
+    pub(crate) baseline_knots: i32,
+    /// The baselines' knot perturbation, as a share of the steering prior's σ (4 rad/s).
+    #[export(range = (0.05, 2.0, 0.05))]
+    pub(crate) baseline_noise: f64,
+    /// MPPI's temperature, relative to the spread of its candidates' costs.
+    #[export(range = (0.001, 1.0, 0.001))]
+    pub(crate) mppi_temperature: f64,
+    /// The baselines plan the steering alone, the rider on the pose PD (else every joint).
+    #[export]
+    pub(crate) baseline_steering_only: bool,
     /// Hold the bike still where it was placed until the first throttle (and again after
     /// each reset): standing still, no steering can balance a bike, so the ride starts
     /// when the player does.
     #[export]
-    wait_for_throttle: bool,
+    pub(crate) wait_for_throttle: bool,
     pub(crate) ride: Option<Ride>,
     /// The player's intent as set so far (also before the ride is built).
     intent: Intent,
@@ -118,6 +128,10 @@ impl INode3D for BikeSimulation {
             wait_for_every_plan: false,
             planning_threads: 0,
             planner_seed: 2015,
+            baseline_knots: BaselineSettings::default().knots as i32,
+            baseline_noise: BaselineSettings::default().noise,
+            mppi_temperature: BaselineSettings::default().temperature,
+            baseline_steering_only: BaselineSettings::default().steering_only,
             wait_for_throttle: false,
             ride: None,
             intent: Intent::default(),
@@ -325,42 +339,6 @@ impl BikeSimulation {
         let events = self.ride.as_mut().map(Ride::step).unwrap_or_default();
         self.emit(events);
         self.report_failure();
-    }
-
-    /// The exports, as the ride's settings: GDScript may change them at any time.
-    fn sync_settings(&mut self) {
-        let kind = self.controller_kind();
-        // The built ride's physics: a change of the export waits for the next build.
-        let physics = self
-            .sim()
-            .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
-        let mut optimizer = OptimizerConfig {
-            particles: self.trajectories.clamp(1, 256) as usize,
-            horizon: self.horizon.clamp(0.2, 3.0),
-            lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
-            threads: self.planning_threads.clamp(0, 64) as usize,
-            seed: self.planner_seed as u64,
-            ..OptimizerConfig::default()
-        }
-        .rolling_out_in(physics);
-        if self.rollout_substeps > 0 {
-            optimizer.rollout_substeps = self.rollout_substeps.min(8) as usize;
-        }
-        let planner = PlannerSettings {
-            optimizer,
-            wait: if self.wait_for_every_plan {
-                PlanWait::EveryPlan
-            } else {
-                PlanWait::AtMost(Duration::from_secs_f64(
-                    self.plan_wait_ms.clamp(0.0, 1000.0) / 1000.0,
-                ))
-            },
-        };
-        if let Some(ride) = &mut self.ride {
-            ride.set_controller(kind);
-            ride.planner = planner;
-            ride.wait_for_throttle = self.wait_for_throttle;
-        }
     }
 
     pub(crate) fn sim(&self) -> Option<&Simulation> {
