@@ -97,6 +97,7 @@ def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
         ax.set_xscale("log")
         ax.set_xticks(sorted({r["trajectories"] for r in mine}))
         ax.get_xaxis().set_major_formatter(matplotlib.ticker.ScalarFormatter())
+        ax.get_xaxis().set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_xlabel("trajectories N")
         ax.set_title(METRICS[scenario], fontsize=8.5, wrap=True)
         ax.grid(alpha=0.3)
