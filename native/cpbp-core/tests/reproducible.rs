@@ -77,3 +77,13 @@ fn a_combined_ride_does_not_depend_on_its_thread() {
 fn an_optimizer_ride_does_not_depend_on_its_thread() {
     assert_repeats(ControllerKind::Optimizer);
 }
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "slow in debug builds; make test runs it in release"
+)]
+fn the_baseline_planners_rides_do_not_depend_on_their_thread() {
+    assert_repeats(ControllerKind::Sampling);
+    assert_repeats(ControllerKind::Mppi);
+}
