@@ -9,7 +9,7 @@
 
 use std::sync::Arc;
 
-use cpbp_core::bike::{DriveInput, Placement};
+use cpbp_core::bike::Placement;
 use cpbp_core::control::{BaselineSettings, PlanWait};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -126,15 +126,7 @@ fn ride(kind: ControllerKind, n: usize, settings: &BaselineSettings, seed: u64, 
     ride.planner.optimizer.seed = seed;
     ride.planner.optimizer.baseline = settings.clone();
     ride.planner.wait = PlanWait::EveryPlan;
-    ride.set_intent(Intent {
-        drive: DriveInput {
-            throttle: 1.0,
-            brake: 0.0,
-            max_speed: kmh / 3.6,
-        },
-        lean: Some(0.0),
-        ..Intent::default()
-    });
+    ride.set_intent(Intent::cruise(kmh));
     ride
 }
 

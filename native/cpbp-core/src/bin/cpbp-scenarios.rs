@@ -14,7 +14,7 @@
 use std::collections::HashSet;
 use std::sync::Arc;
 
-use cpbp_core::bike::{DriveInput, Placement};
+use cpbp_core::bike::Placement;
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -247,14 +247,6 @@ fn new_ride(kind: ControllerKind, n: usize, seed: u64, physics: PhysicsModel, km
     ride.planner.optimizer.particles = n;
     ride.planner.optimizer.seed = seed;
     ride.planner.wait = PlanWait::EveryPlan;
-    ride.set_intent(Intent {
-        drive: DriveInput {
-            throttle: 1.0,
-            brake: 0.0,
-            max_speed: kmh / 3.6,
-        },
-        lean: Some(0.0),
-        ..Intent::default()
-    });
+    ride.set_intent(Intent::cruise(kmh));
     ride
 }

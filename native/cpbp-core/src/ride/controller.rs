@@ -24,6 +24,22 @@ pub struct Intent {
     pub steer_rate: f64,
 }
 
+impl Intent {
+    /// Full throttle towards `kmh`, asking for no lean: how scripted rides (tests, the
+    /// scenario runner, tools) set off.
+    pub fn cruise(kmh: f64) -> Self {
+        Self {
+            drive: DriveInput {
+                throttle: 1.0,
+                brake: 0.0,
+                max_speed: kmh / 3.6,
+            },
+            lean: Some(0.0),
+            ..Self::default()
+        }
+    }
+}
+
 /// What a controller sees of the ride at a control step.
 pub struct RideState<'a> {
     pub sim: &'a Simulation,

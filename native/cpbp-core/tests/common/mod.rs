@@ -59,11 +59,7 @@ pub fn ride_in(physics: PhysicsModel, kind: ControllerKind, kmh: f64, particles:
     let mut ride = Ride::new(flat_ride_in(physics), kind);
     ride.planner.optimizer.particles = particles;
     ride.planner.wait = PlanWait::EveryPlan;
-    ride.set_intent(Intent {
-        drive: auto_throttle(kmh),
-        lean: Some(0.0),
-        ..Intent::default()
-    });
+    ride.set_intent(Intent::cruise(kmh));
     ride
 }
 

@@ -17,7 +17,8 @@ mod sequences;
 
 pub use config::{PlanResult, PlannerConfig, WarmStart};
 pub(crate) use frame::mix;
+pub(crate) use planner::rollout_pool;
 pub use planner::Planner;
-pub use priors::Priors;
+pub use priors::{AppliedControls, Priors};
 pub use rollout::RolloutSystem;
 pub use sequences::shift_one_step;

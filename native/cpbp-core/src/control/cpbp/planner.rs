@@ -10,7 +10,7 @@ use rayon::prelude::*;
 use super::config::{PlanResult, PlannerConfig, WarmStart};
 use super::frame::{draw, lineages, mix, normalise, smoothed_beliefs};
 use super::frame::{Outcome, Particles, StepRecord};
-use super::priors::Priors;
+use super::priors::{AppliedControls, Priors};
 use super::refinement::{refine, StepSamples};
 use super::rollout::RolloutSystem;
 use super::sequences::shift_one_step;
@@ -49,26 +49,18 @@ pub struct Planner {
     pub priors: Priors,
     pool: rayon::ThreadPool,
     memory: Option<Memory>,
-    applied: Vec<f64>,
-    applied_before: Vec<f64>,
+    applied: AppliedControls,
     frame: u64,
 }
 
 impl Planner {
     pub fn new(config: PlannerConfig, priors: Priors) -> Self {
-        let rest = priors.mean.clone();
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(config.threads)
-            .thread_name(|i| format!("cpbp-rollout-{i}"))
-            .build()
-            .expect("the rollout threads could not start");
         Self {
+            applied: AppliedControls::at_rest(&priors.mean),
+            pool: rollout_pool(config.threads, "cpbp"),
             config,
             priors,
-            pool,
             memory: None,
-            applied: rest.clone(),
-            applied_before: rest,
             frame: 0,
         }
     }
@@ -76,15 +68,13 @@ impl Planner {
     /// Forgets the previous frames (after a reset or a teleport).
     pub fn reset(&mut self) {
         self.memory = None;
-        self.applied = self.priors.mean.clone();
-        self.applied_before = self.priors.mean.clone();
+        self.applied = AppliedControls::at_rest(&self.priors.mean);
     }
 
     /// Tells the planner which control was really applied (when something else than its
     /// own result was), so the next frame's smoothness priors start from it.
     pub fn note_applied(&mut self, control: &[f64]) {
-        self.applied_before = std::mem::replace(&mut self.applied, control.to_vec());
-        self.applied_before.truncate(self.priors.dim());
+        self.applied.note(control);
     }
 
     /// Plans one frame from `start` with one system per particle (`systems.len()` ≥ N);
@@ -111,7 +101,7 @@ impl Planner {
         } else {
             Vec::new()
         };
-        let mut particles = Particles::start(start, n, &self.applied, &self.applied_before);
+        let mut particles = Particles::start(start, n, &self.applied.last, &self.applied.before);
         let records: Vec<StepRecord> = (0..self.config.steps.max(1))
             .map(|k| {
                 let threshold = self.config.resample_threshold;
@@ -372,4 +362,14 @@ fn combine(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
     }
     let (pa, pb) = (1.0 / (a.1 * a.1), 1.0 / (b.1 * b.1));
     ((a.0 * pa + b.0 * pb) / (pa + pb), (pa + pb).recip().sqrt())
+}
+
+/// The worker threads a planner rolls out on (`threads` = 0: one per core), named
+/// `{planner}-rollout-i` in profilers and debuggers.
+pub(crate) fn rollout_pool(threads: usize, planner: &'static str) -> rayon::ThreadPool {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .thread_name(move |i| format!("{planner}-rollout-{i}"))
+        .build()
+        .expect("the rollout threads could not start")
 }

@@ -101,6 +101,31 @@ impl Priors {
     }
 }
 
+/// The controls the master really applied in the last two control steps: where a plan's
+/// smoothness terms start from. Both C-PBP and the baseline planners keep one.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AppliedControls {
+    pub last: Vec<f64>,
+    pub before: Vec<f64>,
+}
+
+impl AppliedControls {
+    /// As if `rest` had been applied for ever (a new or reset planner).
+    pub fn at_rest(rest: &[f64]) -> Self {
+        Self {
+            last: rest.to_vec(),
+            before: rest.to_vec(),
+        }
+    }
+
+    /// `control` was applied: it becomes the last, the last the one before.
+    pub fn note(&mut self, control: &[f64]) {
+        let dim = self.last.len();
+        self.before = std::mem::replace(&mut self.last, control.to_vec());
+        self.before.truncate(dim);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

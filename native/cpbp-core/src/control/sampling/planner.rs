@@ -10,7 +10,7 @@ use rand_pcg::Pcg64;
 use rayon::prelude::*;
 
 use super::spline::Knots;
-use crate::control::cpbp::{mix, PlanResult, Priors, RolloutSystem};
+use crate::control::cpbp::{mix, rollout_pool, AppliedControls, PlanResult, Priors, RolloutSystem};
 
 /// How a frame's candidates make the next nominal plan.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -80,24 +80,17 @@ pub struct SamplingPlanner {
     pub priors: Priors,
     pool: rayon::ThreadPool,
     nominal: Option<Knots>,
-    applied: Vec<f64>,
-    applied_before: Vec<f64>,
+    applied: AppliedControls,
     frame: u64,
 }
 
 impl SamplingPlanner {
     pub fn new(config: SamplingConfig, priors: Priors) -> Self {
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(config.threads)
-            .thread_name(|i| format!("sampling-rollout-{i}"))
-            .build()
-            .expect("the rollout threads could not start");
         Self {
-            applied: priors.mean.clone(),
-            applied_before: priors.mean.clone(),
+            applied: AppliedControls::at_rest(&priors.mean),
+            pool: rollout_pool(config.threads, "sampling"),
             config,
             priors,
-            pool,
             nominal: None,
             frame: 0,
         }
@@ -106,14 +99,12 @@ impl SamplingPlanner {
     /// Forgets the nominal plan (after a reset or a teleport).
     pub fn reset(&mut self) {
         self.nominal = None;
-        self.applied = self.priors.mean.clone();
-        self.applied_before = self.priors.mean.clone();
+        self.applied = AppliedControls::at_rest(&self.priors.mean);
     }
 
     /// The control really applied, for the smoothness terms of the next frame's cost.
     pub fn note_applied(&mut self, control: &[f64]) {
-        self.applied_before = std::mem::replace(&mut self.applied, control.to_vec());
-        self.applied_before.truncate(self.priors.dim());
+        self.applied.note(control);
     }
 
     fn sampled(&self, d: usize) -> bool {
@@ -205,7 +196,7 @@ impl SamplingPlanner {
     ) -> Rollout {
         let (dim, steps) = (self.priors.dim(), self.config.steps.max(1));
         system.restore(start);
-        let (mut previous, mut before) = (self.applied.clone(), self.applied_before.clone());
+        let (mut previous, mut before) = (self.applied.last.clone(), self.applied.before.clone());
         let mut rollout = Rollout {
             controls: Vec::with_capacity(steps * dim),
             path: Vec::with_capacity(steps),
