@@ -7,6 +7,7 @@ use common::{ask_lean, ride_at, FRAMES_PER_SECOND};
 use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::control::OptimizerConfig;
 use cpbp_core::ode::Solver;
+use cpbp_core::physics::RolloutStepping;
 use cpbp_core::ride::{ControllerKind, Ride};
 
 /// Half a second and the planning horizon (1.2 s), in control steps.
@@ -41,11 +42,11 @@ fn the_optimizers_rollouts_predict_the_master_far_better_than_two_substeps_do() 
     let config = OptimizerConfig::default();
     let chosen = RolloutPhysics {
         solver: config.rollout_solver,
-        substeps: config.rollout_substeps,
+        stepping: config.rollout_stepping,
     };
     let two = RolloutPhysics {
         solver: Solver::QuickStep,
-        substeps: 2,
+        stepping: RolloutStepping::uniform(2),
     };
     let chosen = divergence(ride.sim(), &recording, chosen, 36, 10, &AT);
     let two = divergence(ride.sim(), &recording, two, 36, 10, &AT);

@@ -1,7 +1,8 @@
 //! The exact physics model (direct solver, explicit wheel gyroscopics, arms weaker than
-//! the steering): every controller rides in it, and its one-step rollouts predict its
-//! master better than the classic model's two-substep rollouts predicted theirs. Heavy:
-//! `make test` runs these in a release build; debug builds skip them.
+//! the steering): every controller rides in it, and its rollouts (one direct step per
+//! planning step, two at first) predict its master better than the classic model's
+//! two-substep rollouts predicted theirs. Heavy: `make test` runs these in a release
+//! build; debug builds skip them.
 
 mod common;
 
@@ -11,20 +12,54 @@ use common::{
 };
 use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::ode::Solver;
-use cpbp_core::physics::PhysicsModel;
+use cpbp_core::physics::{PhysicsModel, RolloutStepping};
 use cpbp_core::ride::ControllerKind;
 
 const EXACT: PhysicsModel = PhysicsModel::Exact;
 
-/// Lean drift (rad) after 0.5 s of `physics` replaying an arcade ride of `model`'s
-/// master at 15 km/h (4 s straight, then 4 s in a 15° turn).
-fn drift_after_half_a_second(model: PhysicsModel, physics: RolloutPhysics) -> f64 {
+/// Lean drift (rad) after `steps` control steps of `physics` replaying an arcade ride of
+/// `model`'s master at 15 km/h (4 s straight, then 4 s in a 15° turn).
+fn drift_after(model: PhysicsModel, physics: RolloutPhysics, steps: usize) -> f64 {
     let mut r = ride_in(model, ControllerKind::Arcade, 15.0, 0);
     Recording::ride(&mut r, 3 * FRAMES_PER_SECOND);
     let mut recording = Recording::ride(&mut r, 4 * FRAMES_PER_SECOND);
     ask_lean(&mut r, 15f64.to_radians());
     recording.extend(Recording::ride(&mut r, 4 * FRAMES_PER_SECOND));
-    divergence(r.sim(), &recording, physics, 15, 10, &[15])[0].lean
+    divergence(r.sim(), &recording, physics, steps, 10, &[steps])[0].lean
+}
+
+fn drift_after_half_a_second(model: PhysicsModel, physics: RolloutPhysics) -> f64 {
+    drift_after(model, physics, 15)
+}
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "slow in debug builds; make test runs it in release"
+)]
+fn the_exact_rollouts_lead_steps_halve_the_drift_where_the_plan_is_decided() {
+    let stepping = EXACT.rollout_stepping();
+    let lead = stepping.lead_steps;
+    assert!(lead > 0 && stepping.lead_substeps > stepping.substeps);
+    let drift = |stepping| {
+        let physics = RolloutPhysics {
+            solver: EXACT.rollout_solver(),
+            stepping,
+        };
+        drift_after(EXACT, physics, lead)
+    };
+    let (chosen, one_step) = (drift(stepping), drift(RolloutStepping::uniform(1)));
+    println!(
+        "lean drift after {lead} steps: {:.2}° ({stepping}), {:.2}° (1 per step)",
+        chosen.to_degrees(),
+        one_step.to_degrees()
+    );
+    assert!(
+        chosen <= one_step / 2.0,
+        "after {lead} steps: {:.2}° against one step's {:.2}°",
+        chosen.to_degrees(),
+        one_step.to_degrees()
+    );
 }
 
 #[test]
@@ -37,19 +72,19 @@ fn the_exact_rollouts_predict_their_master_better_than_two_classic_substeps_did(
         EXACT,
         RolloutPhysics {
             solver: EXACT.rollout_solver(),
-            substeps: EXACT.rollout_substeps(),
+            stepping: EXACT.rollout_stepping(),
         },
     );
     let classic_two = drift_after_half_a_second(
         PhysicsModel::Classic,
         RolloutPhysics {
             solver: Solver::QuickStep,
-            substeps: 2,
+            stepping: RolloutStepping::uniform(2),
         },
     );
     assert!(
         exact > 0.0,
-        "one step per control step is not the master's physics"
+        "the exact rollouts are not the master's physics"
     );
     assert!(
         exact < classic_two,

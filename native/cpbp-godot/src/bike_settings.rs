@@ -5,7 +5,7 @@
 use std::time::Duration;
 
 use cpbp_core::control::{BaselineSettings, OptimizerConfig, PlanWait};
-use cpbp_core::physics::PhysicsModel;
+use cpbp_core::physics::{PhysicsModel, RolloutStepping};
 use cpbp_core::ride::PlannerSettings;
 
 use crate::bike_simulation::BikeSimulation;
@@ -36,7 +36,8 @@ impl BikeSimulation {
         }
         .rolling_out_in(physics);
         if self.rollout_substeps > 0 {
-            optimizer.rollout_substeps = self.rollout_substeps.min(8) as usize;
+            optimizer.rollout_stepping =
+                RolloutStepping::uniform(self.rollout_substeps.min(8) as usize);
         }
         let planner = PlannerSettings {
             optimizer,

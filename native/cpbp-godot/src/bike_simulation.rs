@@ -63,7 +63,8 @@ pub struct BikeSimulation {
     #[export(range = (1.0, 30.0, 0.5, suffix = "°"))]
     pub(crate) lean_tolerance_deg: f64,
     /// ODE steps per planning step in the rollouts; 0 takes the physics model's own (4 in
-    /// classic, 1 in exact). Fewer plan faster but predict a different bike.
+    /// classic; in exact 2 for the first planning steps, then 1). Fewer plan faster but
+    /// predict a different bike.
     #[export(range = (0.0, 8.0))]
     pub(crate) rollout_substeps: i32,
     /// Longest the game waits at a control step for the planning thread (ms); a later

@@ -11,6 +11,7 @@ use crate::bike::{
     index, Bike, Controls, DriveInput, ForceClass, CONTROL_DIM, LOWER, POSE_GAIN, UPPER,
 };
 use crate::ode::{World, WorldState};
+use crate::physics::RolloutStepping;
 
 /// What the rider wants during a plan: the lean, and how strictly (eq. 4.7's s).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,9 +39,9 @@ pub struct BikeRollout {
     pub gravity: DVec3,
     /// Against gravity.
     pub up: DVec3,
-    /// One planning step (s) and the ODE steps it takes.
+    /// One planning step (s), and the ODE steps each planning step of the horizon takes.
     pub step_dt: f64,
-    pub substeps: usize,
+    pub stepping: RolloutStepping,
     pub goal: LeanGoal,
     /// Throttle and brake go to the rear wheel directly, not through the planner.
     pub drive: DriveInput,
@@ -75,12 +76,13 @@ impl RolloutSystem for BikeRollout {
             .expect("every rollout world is built like the master");
     }
 
-    fn step(&mut self, u: &[f64], _step: usize) -> Option<f64> {
+    fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         let controls = self.controls_for(u);
         self.bike.apply(&mut self.world, &controls);
-        let dt = self.step_dt / self.substeps as f64;
+        let substeps = self.stepping.substeps_at(step);
+        let dt = self.step_dt / substeps as f64;
         let mut crash = 0.0;
-        for _ in 0..self.substeps {
+        for _ in 0..substeps {
             self.world.step(dt);
             if self.bike.explosion(&self.world).is_some() {
                 return None;

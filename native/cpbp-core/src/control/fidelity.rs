@@ -8,15 +8,16 @@ use glam::DVec3;
 
 use crate::bike::Controls;
 use crate::ode::{Solver, WorldState};
+use crate::physics::RolloutStepping;
 use crate::ride::Ride;
 use crate::simulation::Simulation;
 
-/// How a rollout world is stepped through one control step.
+/// How a rollout world is stepped through its horizon.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RolloutPhysics {
     pub solver: Solver,
-    /// ODE steps per control step.
-    pub substeps: usize,
+    /// ODE steps per control step, counted from the start of a replay.
+    pub stepping: RolloutStepping,
 }
 
 impl RolloutPhysics {
@@ -24,7 +25,16 @@ impl RolloutPhysics {
     pub fn of(sim: &Simulation) -> Self {
         Self {
             solver: sim.config().physics.solver(),
-            substeps: sim.config().substeps,
+            stepping: RolloutStepping::uniform(sim.config().substeps),
+        }
+    }
+
+    /// What the planners' rollouts step with in `sim`'s physics model.
+    pub fn planned_in(sim: &Simulation) -> Self {
+        let model = sim.config().physics;
+        Self {
+            solver: model.rollout_solver(),
+            stepping: model.rollout_stepping(),
         }
     }
 }
@@ -96,7 +106,6 @@ pub fn divergence(
     let mut worst = vec![Divergence::default(); at.len()];
     let mut world = sim.new_world();
     world.set_solver(physics.solver);
-    let dt = sim.config().control_dt / physics.substeps.max(1) as f64;
     let (bike, up) = (sim.bike(), sim.up());
     let starts = (0..recording.len().saturating_sub(horizon)).step_by(every.max(1));
     for start in starts {
@@ -107,8 +116,9 @@ pub fn divergence(
         for step in 0..horizon {
             let k = start + step;
             bike.apply(&mut world, &recording.controls[k]);
-            for _ in 0..physics.substeps.max(1) {
-                world.step(dt);
+            let substeps = physics.stepping.substeps_at(step);
+            for _ in 0..substeps {
+                world.step(sim.config().control_dt / substeps as f64);
                 exploded |= bike.explosion(&world).is_some();
             }
             let Some(slot) = at.iter().position(|&n| n == step + 1) else {

@@ -9,7 +9,7 @@ use super::cpbp::{PlanResult, Planner, PlannerConfig, WarmStart};
 use super::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
 use crate::bike::{index, Controls, DriveInput, CONTROL_DIM};
 use crate::ode::Solver;
-use crate::physics::PhysicsModel;
+use crate::physics::{PhysicsModel, RolloutStepping};
 use crate::simulation::Simulation;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -61,11 +61,11 @@ pub struct OptimizerConfig {
     /// Planning horizon (s); the thesis used 1.2 s.
     pub horizon: f64,
     /// ODE steps per planning step in the rollouts; `Ride` takes the physics model's
-    /// (`PhysicsModel::rollout_substeps`). With QuickStep the master takes 4: at fewer its
+    /// (`PhysicsModel::rollout_stepping`). With QuickStep the master takes 4: at fewer its
     /// 20 iterations do not converge the rider–handlebar chain, the rollouts ride a
     /// different (less stable) bike and their plans mislead (measured: both modes fall at
-    /// 10 km/h with 2). The direct solver holds the chain at one step.
-    pub rollout_substeps: usize,
+    /// 10 km/h with 2). The direct solver holds the chain at one step, finer at the start.
+    pub rollout_stepping: RolloutStepping,
     /// The rollouts' constraint solver, the physics model's in a `Ride` (see
     /// `fidelity::divergence` before choosing another).
     pub rollout_solver: Solver,
@@ -90,7 +90,7 @@ impl Default for OptimizerConfig {
             mode: OptimizerMode::Combined,
             particles: 15,
             horizon: 1.2,
-            rollout_substeps: 4,
+            rollout_stepping: RolloutStepping::uniform(4),
             rollout_solver: Solver::QuickStep,
             lean_tolerance: 5f64.to_radians(),
             mutation_scale: 0.2,
@@ -103,11 +103,11 @@ impl Default for OptimizerConfig {
 }
 
 impl OptimizerConfig {
-    /// This configuration rolling out as `physics` prescribes (solver and substeps).
+    /// This configuration rolling out as `physics` prescribes (solver and stepping).
     pub fn rolling_out_in(self, physics: PhysicsModel) -> Self {
         Self {
             rollout_solver: physics.rollout_solver(),
-            rollout_substeps: physics.rollout_substeps(),
+            rollout_stepping: physics.rollout_stepping(),
             ..self
         }
     }
@@ -143,7 +143,7 @@ impl BikeOptimizer {
             gravity: sim.config().gravity,
             up: sim.up(),
             step_dt: dt,
-            substeps: config.rollout_substeps.max(1),
+            stepping: config.rollout_stepping,
             goal: LeanGoal::default(),
             drive: DriveInput::default(),
             policy: None,

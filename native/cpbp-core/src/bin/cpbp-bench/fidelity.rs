@@ -5,15 +5,18 @@ use std::sync::Arc;
 use cpbp_core::bike::DriveInput;
 use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::ode::Solver;
-use cpbp_core::physics::PhysicsModel;
+use cpbp_core::physics::{PhysicsModel, RolloutStepping};
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::Simulation;
 use cpbp_core::terrain::Terrain;
 
 use crate::{median, rolling_bike, time_per_call};
 
-/// Candidate rollout physics against the master's in `model`: the cost of one control
-/// step and how far the master's controls replayed open loop drift from its ride after
+/// The planning horizon in control steps (1.2 s).
+const HORIZON: usize = 36;
+
+/// Candidate rollout physics against the master's in `model`: the cost of one planning
+/// step (averaged over the horizon) and how far the master's controls replayed open loop drift from its ride after
 /// 0.5 s and 1.2 s (worst lean error and centre-of-mass distance over replays started
 /// every 1/3 s), on flat ground (straight, then a 15° turn) and over the bump field, with
 /// the arcade controller at 15 km/h.
@@ -22,13 +25,13 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
     let master = RolloutPhysics::of(&flat);
     println!();
     println!(
-        "Rollout physics against the master's ({} physics: {:?} x {}), arcade at 15 km/h:",
+        "Rollout physics against the master's ({} physics: {:?}, {}), arcade at 15 km/h:",
         model.name(),
         master.solver,
-        master.substeps
+        master.stepping
     );
     println!(
-        "{:<16} {:>10} {:>28} {:>28}",
+        "{:<40} {:>10} {:>28} {:>28}",
         "physics", "cost", "flat: @0.5 s, @1.2 s", "bumps: @0.5 s, @1.2 s"
     );
     let record = |sim: Simulation, turn: bool| {
@@ -53,41 +56,58 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
         record(flat.replica(), true),
         record(rolling_bike(bumps.clone(), model), false),
     ];
+    // One planning step on average over the horizon (lead steps included).
     let cost = |physics: RolloutPhysics| {
         let mut world = flat.new_world();
         world.restore(&flat.world().snapshot()).expect("same model");
         world.set_solver(physics.solver);
-        let dt = flat.config().control_dt / physics.substeps as f64;
-        median(|| time_per_call(150, || (0..physics.substeps).for_each(|_| world.step(dt))))
+        let dt = flat.config().control_dt;
+        let mut horizon = || {
+            for step in 0..HORIZON {
+                let substeps = physics.stepping.substeps_at(step);
+                (0..substeps).for_each(|_| world.step(dt / substeps as f64));
+            }
+        };
+        median(|| time_per_call(5, &mut horizon)) / HORIZON as f64
     };
     // Costs are against the classic rollouts, so both tables share one scale.
     let reference = cost(RolloutPhysics {
         solver: Solver::QuickStep,
-        substeps: 4,
+        stepping: RolloutStepping::uniform(4),
     });
-    let candidates: &[(Solver, usize)] = match model {
-        PhysicsModel::Classic => &[
-            (Solver::QuickStep, 4),
-            (Solver::QuickStep, 2),
-            (Solver::QuickStep, 1),
-            (Solver::Direct, 4),
-            (Solver::Direct, 2),
-            (Solver::Direct, 1),
+    let uniform = |solver, substeps| (solver, RolloutStepping::uniform(substeps));
+    let lead = |lead_steps| RolloutStepping {
+        substeps: 1,
+        lead_steps,
+        lead_substeps: 2,
+    };
+    let candidates: Vec<(Solver, RolloutStepping)> = match model {
+        PhysicsModel::Classic => vec![
+            uniform(Solver::QuickStep, 4),
+            uniform(Solver::QuickStep, 2),
+            uniform(Solver::QuickStep, 1),
+            uniform(Solver::Direct, 4),
+            uniform(Solver::Direct, 2),
+            uniform(Solver::Direct, 1),
         ],
-        PhysicsModel::Exact => &[
-            (Solver::Direct, 4),
-            (Solver::Direct, 2),
-            (Solver::Direct, 1),
+        PhysicsModel::Exact => vec![
+            uniform(Solver::Direct, 4),
+            uniform(Solver::Direct, 2),
+            (Solver::Direct, lead(18)),
+            (Solver::Direct, lead(12)),
+            (Solver::Direct, lead(6)),
+            uniform(Solver::Direct, 1),
         ],
     };
-    for &(solver, substeps) in candidates {
-        let physics = RolloutPhysics { solver, substeps };
+    for (solver, stepping) in candidates {
+        let physics = RolloutPhysics { solver, stepping };
         let drift: Vec<String> = rides
             .iter()
             .map(|(ride, recording)| {
-                let [half, whole] = divergence(ride.sim(), recording, physics, 36, 10, &[15, 36])
-                    .try_into()
-                    .expect("two horizons");
+                let [half, whole] =
+                    divergence(ride.sim(), recording, physics, HORIZON, 10, &[15, HORIZON])
+                        .try_into()
+                        .expect("two horizons");
                 format!(
                     "{:.1}° {:.2} m, {:.1}° {:.2} m",
                     half.lean.to_degrees(),
@@ -97,10 +117,15 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
                 )
             })
             .collect();
-        let label = format!("{solver:?} x {substeps}");
+        let chosen = if physics == RolloutPhysics::planned_in(&flat) {
+            " (the model's)"
+        } else {
+            ""
+        };
+        let label = format!("{solver:?}, {stepping}{chosen}");
         let ratio = cost(physics) / reference;
         println!(
-            "{label:<16} {ratio:>9.2}x {:>22} {:>22}",
+            "{label:<40} {ratio:>9.2}x {:>22} {:>22}",
             drift[0], drift[1]
         );
     }

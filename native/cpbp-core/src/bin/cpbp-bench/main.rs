@@ -92,11 +92,11 @@ fn main() {
 /// planning step as a ratio.
 fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
     let flat = rolling_bike(Arc::new(Terrain::flat()), model);
-    let substeps = model.rollout_substeps();
+    let stepping = model.rollout_stepping();
     let solver = model.rollout_solver();
     println!();
     println!(
-        "C-PBP, combined mode, {} physics: 1.2 s horizon (36 steps x {substeps} {solver:?} steps), 15 km/h:",
+        "C-PBP, combined mode, {} physics: 1.2 s horizon (36 steps, {solver:?} {stepping}), 15 km/h:",
         model.name()
     );
     println!(
@@ -343,8 +343,7 @@ fn rollouts_alone_ms(sim: &Simulation, sequences: &[Vec<Controls>], thread_count
             world
         })
         .collect();
-    let substeps = model.rollout_substeps();
-    let dt = sim.config().control_dt / substeps as f64;
+    let (stepping, control_dt) = (model.rollout_stepping(), sim.config().control_dt);
     let per_thread = sequences.len().div_ceil(thread_count);
     let start = Instant::now();
     std::thread::scope(|scope| {
@@ -356,10 +355,11 @@ fn rollouts_alone_ms(sim: &Simulation, sequences: &[Vec<Controls>], thread_count
             scope.spawn(move || {
                 for (world, sequence) in worlds.iter_mut().zip(sequences) {
                     world.restore(state).expect("same model");
-                    for controls in sequence {
+                    for (step, controls) in sequence.iter().enumerate() {
                         bike.apply(world, controls);
+                        let substeps = stepping.substeps_at(step);
                         for _ in 0..substeps {
-                            world.step(dt);
+                            world.step(control_dt / substeps as f64);
                         }
                     }
                 }
