@@ -9,6 +9,7 @@ from datetime import date
 from pathlib import Path
 
 from . import report
+from .compare import compare
 from .configs import (THESIS_CONTROLLERS, THESIS_SPEEDS, TIMING_COUNTS, Config, parse_attempts,
                       parse_controllers, parse_counts, parse_speeds)
 from .fingerprint import FingerprintError, PlatformStore, fingerprint, identity, refusal
@@ -48,6 +49,8 @@ def main(argv: list[str] | None = None) -> int:
                 print(f"{key}: {value}")
         if args.command == "verify":
             return check_rows(args, out)
+        if args.command == "compare":
+            return compare_with(args, out)
     except (ResultsError, WorkerError, FingerprintError, ValueError) as error:
         print(f"experiment: {error}", file=sys.stderr)
         return 1
@@ -66,10 +69,11 @@ def _parser() -> argparse.ArgumentParser:
         "ends; rerunning the same command resumes.",
     )
     parser.add_argument("command", choices=("all", "run", "timing", "report", "verify",
-                                            "platform"), nargs="?",
+                                            "compare", "platform"), nargs="?",
                         default="all", help="all (default): timing if not measured yet, "
-                        "run, report; verify: re-ride saved rows and compare; platform: "
-                        "print this machine's fingerprint")
+                        "run, report; verify: re-ride saved rows and compare; compare: pair "
+                        "OUT's rows with --before's, attempt by attempt; platform: print "
+                        "this machine's fingerprint")
     parser.add_argument("--out", default="build/experiment",
                         help="directory of results.csv, timing.csv and the report")
     parser.add_argument("--tries", type=_whole(1, 100_000), default=500,
@@ -101,6 +105,9 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--attempts", type=lambda t: set(parse_attempts(t)), default=None,
                         help="verify: attempt numbers, e.g. 0-19, of the --speeds and "
                         "--controllers given (default: every row)")
+    parser.add_argument("--before", default=None,
+                        help="compare: the directory of the results made before a change "
+                        "(its results.csv); exits 1 when OUT is significantly worse")
     return parser
 
 
@@ -171,6 +178,24 @@ def check_rows(args: argparse.Namespace, out: Path) -> int:
     verdict = verify(chosen, base_seed, jobs, threads, out / WORKER_LOG, platform)
     print("\n".join(verdict.lines()))
     return 0 if not verdict.differing else 1
+
+
+def compare_with(args: argparse.Namespace, out: Path) -> int:
+    """Prints OUT's rows paired with the rows made before a change; 1 when worse."""
+    if args.before is None:
+        raise ValueError("compare needs --before DIR, the results made before the change")
+    before_path = Path(args.before) / RESULTS
+    if not before_path.exists():
+        raise ResultsError(f"{before_path} does not exist")
+    before = ResultsFile(before_path).load()
+    after = ResultsFile(out / RESULTS).load()
+    comparison = compare(before, after, args.chosen_configs)
+    if not comparison.pairings:
+        raise ResultsError(f"{before_path} and {out / RESULTS} share no configuration "
+                           "(with the --speeds and --controllers given)")
+    print(f"Before: {before_path}; after: {out / RESULTS}.\n")
+    print(comparison.table())
+    return 1 if comparison.worse else 0
 
 
 def timing(args: argparse.Namespace, out: Path) -> None:
