@@ -31,6 +31,8 @@ def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     # verify checks only the configurations named; everything else rides them all.
     named = args.speeds is not None or args.controllers is not None
+    # compare filters by what was named, each on its own.
+    args.named_speeds, args.named_controllers = args.speeds, args.controllers
     args.speeds = args.speeds or list(THESIS_SPEEDS)
     args.controllers = args.controllers or parse_controllers(",".join(THESIS_CONTROLLERS))
     args.chosen_configs = ({Config(s, c) for s in args.speeds for c in args.controllers}
@@ -189,7 +191,11 @@ def compare_with(args: argparse.Namespace, out: Path) -> int:
         raise ResultsError(f"{before_path} does not exist")
     before = ResultsFile(before_path).load()
     after = ResultsFile(out / RESULTS).load()
-    comparison = compare(before, after, args.chosen_configs)
+    configs = {a.config for a in after}
+    chosen = {c for c in configs
+              if (args.named_speeds is None or c.speed_kmh in args.named_speeds)
+              and (args.named_controllers is None or c.controller in args.named_controllers)}
+    comparison = compare(before, after, chosen)
     if not comparison.pairings:
         raise ResultsError(f"{before_path} and {out / RESULTS} share no configuration "
                            "(with the --speeds and --controllers given)")

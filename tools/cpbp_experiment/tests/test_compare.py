@@ -69,6 +69,10 @@ class CompareTest(unittest.TestCase):
                                    str(after_dir)])
             self.assertEqual((worse, better), (1, 0))
             self.assertIn("0 won only after the change, 6 only before", printed.getvalue())
+            with contextlib.redirect_stdout(io.StringIO()):
+                # Speeds alone filter by speed, whatever the controllers.
+                self.assertEqual(cli.main(["compare", "--out", str(after_dir), "--before",
+                                           str(before_dir), "--speeds", "20"]), 1)
             with contextlib.redirect_stderr(io.StringIO()) as errors:
                 self.assertEqual(cli.main(["compare", "--out", str(after_dir)]), 1)
                 self.assertEqual(cli.main(["compare", "--out", str(after_dir), "--before",
