@@ -128,9 +128,11 @@ impl RolloutStepping {
         substeps.max(1)
     }
 
-    /// ODE steps over a horizon of `steps` planning steps: what a rollout costs.
-    pub fn ode_steps(self, steps: usize) -> usize {
-        (0..steps).map(|step| self.substeps_at(step)).sum()
+    /// The ODE steps of planning step `step` of the horizon and their length, for a
+    /// planning step of `control_dt` seconds.
+    pub fn ode_steps_at(self, step: usize, control_dt: f64) -> (usize, f64) {
+        let substeps = self.substeps_at(step);
+        (substeps, control_dt / substeps as f64)
     }
 }
 
@@ -171,8 +173,8 @@ mod tests {
         };
         let steps: Vec<usize> = (0..5).map(|k| stepping.substeps_at(k)).collect();
         assert_eq!(steps, [2, 2, 2, 1, 1]);
-        assert_eq!(stepping.ode_steps(36), 39);
-        assert_eq!(RolloutStepping::uniform(4).ode_steps(36), 144);
+        assert_eq!(stepping.ode_steps_at(0, 1.0 / 30.0), (2, 1.0 / 60.0));
+        assert_eq!(stepping.ode_steps_at(3, 1.0 / 30.0), (1, 1.0 / 30.0));
         assert_eq!(RolloutStepping::uniform(0).substeps_at(0), 1);
         assert_eq!(stepping.to_string(), "2 per step for 3, then 1");
         assert_eq!(RolloutStepping::uniform(4).to_string(), "4 per step");

@@ -79,8 +79,7 @@ impl RolloutSystem for BikeRollout {
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         let controls = self.controls_for(u);
         self.bike.apply(&mut self.world, &controls);
-        let substeps = self.stepping.substeps_at(step);
-        let dt = self.step_dt / substeps as f64;
+        let (substeps, dt) = self.stepping.ode_steps_at(step, self.step_dt);
         let mut crash = 0.0;
         for _ in 0..substeps {
             self.world.step(dt);

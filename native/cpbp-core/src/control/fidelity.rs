@@ -116,9 +116,9 @@ pub fn divergence(
         for step in 0..horizon {
             let k = start + step;
             bike.apply(&mut world, &recording.controls[k]);
-            let substeps = physics.stepping.substeps_at(step);
+            let (substeps, dt) = physics.stepping.ode_steps_at(step, sim.config().control_dt);
             for _ in 0..substeps {
-                world.step(sim.config().control_dt / substeps as f64);
+                world.step(dt);
                 exploded |= bike.explosion(&world).is_some();
             }
             let Some(slot) = at.iter().position(|&n| n == step + 1) else {

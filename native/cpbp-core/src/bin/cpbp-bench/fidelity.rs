@@ -16,9 +16,9 @@ use crate::{median, rolling_bike, time_per_call};
 const HORIZON: usize = 36;
 
 /// Candidate rollout physics against the master's in `model`: the cost of one planning
-/// step (averaged over the horizon) and how far the master's controls replayed open loop drift from its ride after
-/// 0.5 s and 1.2 s (worst lean error and centre-of-mass distance over replays started
-/// every 1/3 s), on flat ground (straight, then a 15° turn) and over the bump field, with
+/// step (averaged over the horizon) and how far the master's controls replayed open loop
+/// drift from its ride after 0.5 s and 1.2 s (worst lean error and centre-of-mass
+/// distance over replays started every 1/3 s), on flat ground (straight, then a 15° turn) and over the bump field, with
 /// the arcade controller at 15 km/h.
 pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
     let flat = rolling_bike(Arc::new(Terrain::flat()), model);
@@ -61,11 +61,11 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
         let mut world = flat.new_world();
         world.restore(&flat.world().snapshot()).expect("same model");
         world.set_solver(physics.solver);
-        let dt = flat.config().control_dt;
+        let control_dt = flat.config().control_dt;
         let mut horizon = || {
             for step in 0..HORIZON {
-                let substeps = physics.stepping.substeps_at(step);
-                (0..substeps).for_each(|_| world.step(dt / substeps as f64));
+                let (substeps, dt) = physics.stepping.ode_steps_at(step, control_dt);
+                (0..substeps).for_each(|_| world.step(dt));
             }
         };
         median(|| time_per_call(5, &mut horizon)) / HORIZON as f64

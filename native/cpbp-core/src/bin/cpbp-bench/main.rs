@@ -357,10 +357,8 @@ fn rollouts_alone_ms(sim: &Simulation, sequences: &[Vec<Controls>], thread_count
                     world.restore(state).expect("same model");
                     for (step, controls) in sequence.iter().enumerate() {
                         bike.apply(world, controls);
-                        let substeps = stepping.substeps_at(step);
-                        for _ in 0..substeps {
-                            world.step(control_dt / substeps as f64);
-                        }
+                        let (substeps, dt) = stepping.ode_steps_at(step, control_dt);
+                        (0..substeps).for_each(|_| world.step(dt));
                     }
                 }
             });
