@@ -1,9 +1,9 @@
 class_name FollowCamera
 extends Camera3D
 ## Follows the bike from behind and a little to the side (the thesis's camera, §6.2, so
-## both rider and road stay in view), smoothly and never upside down. The right stick
-## (or I/J/K/L, or dragging with the right mouse button) orbits around the bike; the view
-## drifts back behind it when let go. The camera never goes through the level's
+## both rider and road stay in view), smoothly and never upside down. The d-pad (or
+## numpad 8/4/6/2, or dragging with the right mouse button) orbits around the bike; the
+## view drifts back behind it when let go. The camera never goes through the level's
 ## geometry: it moves in front of whatever is between it and the bike.
 
 ## Lowest and highest pitch of the orbit (rad) relative to the default view.
@@ -15,9 +15,9 @@ const CLEARANCE := 0.3
 @export var offset := Vector3(2.6, 1.5, 4.2)
 ## How quickly the camera catches up (1/s); higher is stiffer.
 @export var stiffness := 4.0
-## Orbit speed at full stick (rad/s).
+## Orbit speed with the d-pad held (rad/s).
 @export var orbit_speed := 2.2
-## Seconds after the stick is let go before the view drifts back behind the bike.
+## Seconds after the d-pad is let go before the view drifts back behind the bike.
 @export var recentre_delay := 2.0
 ## Mouse orbit (rad per pixel while the right button is held).
 @export var mouse_sensitivity := 0.006
@@ -35,7 +35,7 @@ var _idle := 0.0
 func _process(delta: float) -> void:
 	if target == null or not target.is_running():
 		return
-	_orbit_from_stick(delta)
+	_orbit_from_buttons(delta)
 	var centre := target.get_center_of_mass()
 	var frame := target.get_body_transform(BikeSimulation.FRAME)
 	# The frame's forward (−z of the bike's node frame is +x of its body frame).
@@ -63,7 +63,7 @@ func _unhandled_input(event: InputEvent) -> void:
 		_idle = 0.0
 
 
-func _orbit_from_stick(delta: float) -> void:
+func _orbit_from_buttons(delta: float) -> void:
 	var stick := Input.get_vector(&"camera_left", &"camera_right", &"camera_down", &"camera_up")
 	if stick.length() > 0.0:
 		orbit.x -= stick.x * orbit_speed * delta

@@ -1,8 +1,9 @@
 class_name BikeDriver
 extends Node
-## The player's hands: reads the throttle, brake and turn actions every physics tick and
-## passes them to the bike. Auto-accelerate (X / F) holds a chosen speed instead of the
-## triggers; an automatic level also takes the turn command away, as in the thesis's test.
+## The player's hands: reads the throttle, brake, turn and rider-position actions every
+## physics tick and passes them to the bike. Auto-accelerate (X / F) holds a chosen speed
+## instead of the triggers; an automatic level also takes the turn command away, as in the
+## thesis's test.
 
 ## Throttle used by auto-accelerate: the rear motor drives towards the chosen speed with
 ## this share of its force, so the start is brisk without lifting the front wheel.
@@ -33,3 +34,6 @@ func _physics_process(_delta: float) -> void:
 	bike.set_turn(turn)
 	# Without a controller (manual mode) the stick steers the bar directly.
 	bike.set_steer_rate(-turn * 0.6)
+	# The rider's weight (right stick, I J K L): x to the right, y forward.
+	var rider := Input.get_vector(&"rider_left", &"rider_right", &"rider_back", &"rider_forward")
+	bike.set_rider_position(rider.y, rider.x)

@@ -1,8 +1,8 @@
 class_name Hud
 extends CanvasLayer
-## The riding HUD: lean dial (wanted vs actual lean), speed, controller with its
-## trajectory count and planning time, frame rate, the level's timer line, attempt tally,
-## and banners for what just happened.
+## The riding HUD: lean dial (wanted vs actual lean), the rider's weight (asked vs
+## actual), speed, controller with its trajectory count and planning time, frame rate, the
+## level's timer line, attempt tally, and banners for what just happened.
 
 ## Seconds a banner stays before fading.
 const BANNER_SECONDS := 3.0
@@ -11,6 +11,7 @@ var _game: Game
 var _banner_left := 0.0
 
 @onready var _dial: LeanDial = %LeanDial
+@onready var _rider: RiderPad = %RiderPad
 @onready var _speed: Label = %Speed
 @onready var _lean: Label = %Lean
 @onready var _controller: Label = %Controller
@@ -40,6 +41,8 @@ func _process(delta: float) -> void:
 	var bike := _game.bike
 	_dial.desired = bike.get_desired_lean()
 	_dial.current = bike.get_lean()
+	_rider.asked = bike.get_rider_position_asked()
+	_rider.actual = bike.get_rider_position()
 	_speed.text = "%d km/h" % roundi(absf(bike.get_speed()) * 3.6)
 	_lean.text = (
 		"lean %+.0f°   wanted %+.0f°"

@@ -14,7 +14,8 @@ const CONTROLS := """Gamepad / keyboard
 RT / W, ↑        throttle
 LT / S, ↓        brake
 Left stick / A D, ← →   turn (sets the lean)
-Right stick / I J K L, right mouse drag   camera
+Right stick / I J K L   rider's weight (fore, aft, sides)
+D-pad / numpad 8 4 6 2, right mouse drag   camera
 Start / C        cycle controller
 Back / Esc, P    pause
 B / R            respawn

@@ -1,7 +1,7 @@
 extends TestCase
-## The game driven through its input actions, as a player would: throttle, respawn, lift,
-## spawn points, controller cycling, auto-accelerate, pause, and the pause menu with a
-## gamepad alone.
+## The game driven through its input actions, as a player would: throttle, the rider's
+## weight on the right stick, respawn, lift, spawn points, controller cycling,
+## auto-accelerate, pause, and the pause menu with a gamepad alone.
 
 const GAME := preload("res://scenes/game/game.tscn")
 const TRACK := "res://scenes/levels/track/track.tscn"
@@ -19,8 +19,10 @@ func before_each() -> void:
 
 
 func after_each() -> void:
-	for action: StringName in [&"throttle", &"brake", &"steer_left", &"steer_right"]:
+	for action: StringName in [&"throttle", &"brake", &"steer_left", &"steer_right", &"rider_back"]:
 		Input.action_release(action)
+	for axis: JoyAxis in [JOY_AXIS_RIGHT_X, JOY_AXIS_RIGHT_Y]:
+		SimulatedInput.move_joypad_axis(axis, 0.0)
 	get_tree().paused = false
 	_game.queue_free()
 	await wait_frames(1)
@@ -48,6 +50,66 @@ func test_the_stick_turns_the_bike_through_its_lean() -> void:
 	assert_false(_game.bike.is_crashed())
 	var turned := heading_before.signed_angle_to(_frame_heading(), Vector3.UP)
 	assert_gt(turned, deg_to_rad(20.0), "turned left (anticlockwise seen from above)")
+
+
+func test_the_right_stick_moves_the_riders_weight_and_the_hud_shows_it() -> void:
+	# At a steady speed: accelerating throws the rider back by itself.
+	await SimulatedInput.tap_action(&"toggle_auto_accelerate")
+	await wait_physics_frames(180)
+	var pad: RiderPad = _game.find_child("RiderPad", true, false)
+	# Pushed up: forward, over the tank.
+	SimulatedInput.move_joypad_axis(JOY_AXIS_RIGHT_Y, -1.0)
+	await wait_physics_frames(60)
+	assert_almost_eq(_game.bike.get_rider_position_asked(), Vector2(0, 1), Vector2(0.01, 0.01))
+	assert_gt(_game.bike.get_rider_position().y, 0.7, "the weight went forward")
+	await wait_frames(1)
+	assert_almost_eq(pad.asked, Vector2(0, 1), Vector2(0.01, 0.01), "the HUD shows what is asked")
+	assert_almost_eq(
+		pad.actual, _game.bike.get_rider_position(), Vector2(0.1, 0.1), "and where it is"
+	)
+	# Pushed right.
+	SimulatedInput.move_joypad_axis(JOY_AXIS_RIGHT_Y, 0.0)
+	SimulatedInput.move_joypad_axis(JOY_AXIS_RIGHT_X, 1.0)
+	await wait_physics_frames(60)
+	assert_gt(_game.bike.get_rider_position().x, 0.7, "the weight went right")
+	assert_lt(absf(_game.bike.get_rider_position().y), 0.3)
+	# Released: back to the riding pose.
+	SimulatedInput.move_joypad_axis(JOY_AXIS_RIGHT_X, 0.0)
+	await wait_physics_frames(60)
+	assert_eq(_game.bike.get_rider_position_asked(), Vector2.ZERO)
+	assert_lt(_game.bike.get_rider_position().length(), 0.15, "back in the riding pose")
+	# The keyboard's K: back, over the rear wheel.
+	Input.action_press(&"rider_back")
+	await wait_physics_frames(60)
+	assert_lt(_game.bike.get_rider_position().y, -0.7, "the weight went back")
+	assert_false(_game.bike.is_crashed())
+
+
+func test_the_right_stick_is_the_riders_and_the_d_pad_the_cameras() -> void:
+	var bound := func(action: StringName, type: String) -> Array:
+		return InputMap.action_get_events(action).filter(
+			func(e: InputEvent) -> bool: return e.is_class(type)
+		)
+	for action: StringName in [&"rider_forward", &"rider_back", &"rider_left", &"rider_right"]:
+		var axes: Array = bound.call(action, "InputEventJoypadMotion")
+		assert_eq(axes.size(), 1, "%s on a stick" % action)
+		assert_true(
+			axes[0].axis in [JOY_AXIS_RIGHT_X, JOY_AXIS_RIGHT_Y], "%s on the right stick" % action
+		)
+		assert_eq(bound.call(action, "InputEventKey").size(), 1, "%s on a key" % action)
+	for action: StringName in [&"camera_left", &"camera_right", &"camera_up", &"camera_down"]:
+		assert_eq(
+			bound.call(action, "InputEventJoypadMotion").size(), 0, "%s off the sticks" % action
+		)
+		var buttons: Array = bound.call(action, "InputEventJoypadButton")
+		assert_eq(buttons.size(), 1, "%s on the d-pad" % action)
+		assert_true(
+			(
+				buttons[0].button_index >= JOY_BUTTON_DPAD_UP
+				and buttons[0].button_index <= JOY_BUTTON_DPAD_RIGHT
+			)
+		)
+		assert_eq(bound.call(action, "InputEventKey").size(), 1, "%s on a key" % action)
 
 
 func test_reset_puts_the_bike_back_at_the_spawn_point() -> void:

@@ -26,5 +26,14 @@ static func press_joypad_button(button: JoyButton) -> void:
 			await _tree().process_frame
 
 
+## Moves gamepad axis `axis` to `value` (−1 to 1) through the device event path; the
+## stick stays there until moved again.
+static func move_joypad_axis(axis: JoyAxis, value: float) -> void:
+	var event := InputEventJoypadMotion.new()
+	event.axis = axis
+	event.axis_value = value
+	Input.parse_input_event(event)
+
+
 static func _tree() -> SceneTree:
 	return Engine.get_main_loop() as SceneTree

@@ -52,7 +52,7 @@ func test_a_wall_between_bike_and_camera_pulls_the_camera_in() -> void:
 	assert_gt(_camera.global_position.z, 0.0, "still behind the bike")
 
 
-func test_the_right_stick_orbits_and_the_view_drifts_back() -> void:
+func test_the_d_pad_orbits_and_the_view_drifts_back() -> void:
 	Input.action_press(&"camera_right")
 	await wait_frames(30)
 	Input.action_release(&"camera_right")

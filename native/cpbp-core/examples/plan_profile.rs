@@ -6,7 +6,7 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Placement, POSE_GAIN};
-use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode};
+use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, OptimizerMode};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
@@ -62,7 +62,7 @@ fn main() {
     let mut optimizer = BikeOptimizer::new(&sim, config);
     let started = std::time::Instant::now();
     for _ in 0..plans {
-        optimizer.controls(&sim, 0.0, &drive);
+        optimizer.controls(&sim, &Goal::riding(0.0, drive));
     }
     let ms = started.elapsed().as_secs_f64() * 1000.0 / plans as f64;
     println!("N = {n}, {threads} thread(s): {ms:.1} ms per plan");

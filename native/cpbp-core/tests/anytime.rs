@@ -5,7 +5,7 @@ mod common;
 
 use std::time::Duration;
 
-use cpbp_core::control::{AnytimeOptimizer, OptimizerConfig, OptimizerMode, PlanWait};
+use cpbp_core::control::{AnytimeOptimizer, Goal, OptimizerConfig, OptimizerMode, PlanWait};
 use cpbp_core::ride::ControllerKind;
 
 #[test]
@@ -69,7 +69,7 @@ fn plans_made_before_a_reset_are_never_applied_after_it() {
     let ride =
         |sim: &mut cpbp_core::simulation::Simulation, anytime: &mut AnytimeOptimizer, steps| {
             for _ in 0..steps {
-                let controls = anytime.controls(sim, 0.0, &drive, &config);
+                let controls = anytime.controls(sim, &Goal::riding(0.0, drive), &config);
                 sim.set_controls(controls);
                 sim.step();
             }

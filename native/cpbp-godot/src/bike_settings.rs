@@ -4,7 +4,7 @@
 
 use std::time::Duration;
 
-use cpbp_core::control::{BaselineSettings, OptimizerConfig, PlanWait};
+use cpbp_core::control::{BaselineSettings, CostTolerances, OptimizerConfig, PlanWait};
 use cpbp_core::physics::{PhysicsModel, RolloutStepping};
 use cpbp_core::ride::PlannerSettings;
 
@@ -22,7 +22,10 @@ impl BikeSimulation {
         let mut optimizer = OptimizerConfig {
             particles: self.trajectories.clamp(1, 256) as usize,
             horizon: self.horizon.clamp(0.2, 3.0),
-            lean_tolerance: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
+            tolerances: CostTolerances {
+                lean: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
+                rider: self.rider_tolerance_cm.clamp(1.0, 20.0) / 100.0,
+            },
             threads: self.planning_threads.clamp(0, 64) as usize,
             seed: self.planner_seed as u64,
             baseline: BaselineSettings {

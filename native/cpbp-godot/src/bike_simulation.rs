@@ -5,7 +5,7 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Part, CONTROL_DIM};
-use cpbp_core::control::BaselineSettings;
+use cpbp_core::control::{BaselineSettings, CostTolerances};
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
@@ -62,6 +62,9 @@ pub struct BikeSimulation {
     /// the requested lean more strictly.
     #[export(range = (1.0, 30.0, 0.5, suffix = "°"))]
     pub(crate) lean_tolerance_deg: f64,
+    /// Rider position error (cm) that costs as much as one unit at full stick.
+    #[export(range = (1.0, 20.0, 0.5, suffix = "cm"))]
+    pub(crate) rider_tolerance_cm: f64,
     /// ODE steps per planning step in the rollouts; 0 takes the physics model's own (4 in
     /// classic; in exact 2 for the first planning steps, then 1). Fewer plan faster but
     /// predict a different bike.
@@ -103,7 +106,7 @@ pub struct BikeSimulation {
     pub(crate) wait_for_throttle: bool,
     pub(crate) ride: Option<Ride>,
     /// The player's intent as set so far (also before the ride is built).
-    intent: Intent,
+    pub(crate) intent: Intent,
     pub(crate) accumulator: f64,
     pub(crate) previous_poses: Vec<(DVec3, DQuat)>,
     /// Whether the active controller's failure has been reported.
@@ -124,6 +127,7 @@ impl INode3D for BikeSimulation {
             trajectories: 15,
             horizon: 1.2,
             lean_tolerance_deg: 5.0,
+            rider_tolerance_cm: CostTolerances::default().rider * 100.0,
             rollout_substeps: 0,
             plan_wait_ms: 12.0,
             wait_for_every_plan: false,
@@ -350,7 +354,7 @@ impl BikeSimulation {
         self.controller.into()
     }
 
-    fn apply_intent(&mut self) {
+    pub(crate) fn apply_intent(&mut self) {
         if let Some(ride) = &mut self.ride {
             ride.set_intent(self.intent);
         }

@@ -2,6 +2,7 @@
 
 mod bike_events;
 mod bike_queries;
+mod bike_rider;
 mod bike_settings;
 mod bike_simulation;
 mod controller_choice;

@@ -9,6 +9,7 @@ mod layout;
 mod manual;
 mod model;
 mod params;
+mod rider_position;
 
 pub use controls::{
     index, Controls, ForceClass, CONTROL_DIM, FORCE_TUNINGS, JOINT_TARGETS, LOWER, MAX_TORQUE,
@@ -20,3 +21,7 @@ pub use layout::Layout;
 pub use manual::{manual_controls, POSE_GAIN};
 pub use model::{from_quat, to_quat, Bike, Part, PartShape, Placement, Shape};
 pub use params::BikeParams;
+pub use rider_position::{
+    rider_position_cost, RiderPosition, COM_REACH_FORWARD, COM_REACH_RIGHT, FORWARD_POSE,
+    RIDER_JOINTS, RIGHT_POSE,
+};

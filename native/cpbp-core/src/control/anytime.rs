@@ -16,7 +16,8 @@ use glam::DVec3;
 
 use super::arcade::ArcadeController;
 use super::optimizer::{BikeOptimizer, OptimizerConfig};
-use crate::bike::{Controls, DriveInput};
+use super::Goal;
+use crate::bike::Controls;
 use crate::ode::WorldState;
 use crate::simulation::Simulation;
 
@@ -34,8 +35,7 @@ struct Request {
     step: u64,
     start: WorldState,
     applied: Controls,
-    desired_lean: f64,
-    drive: DriveInput,
+    goal: Goal,
     config: OptimizerConfig,
     reset: bool,
 }
@@ -171,14 +171,13 @@ impl AnytimeOptimizer {
     pub fn controls(
         &mut self,
         sim: &Simulation,
-        desired_lean: f64,
-        drive: &DriveInput,
+        goal: &Goal,
         config: &OptimizerConfig,
     ) -> Controls {
         self.take_plan();
         // Run every step, used or not, so its memory is in step with the master whenever
         // a plan is missing.
-        let fallback = self.arcade.controls_of(sim, desired_lean, drive);
+        let fallback = self.arcade.controls_of(sim, goal);
         let planned = self.plan.as_ref().and_then(|plan| {
             let offset = self.step.checked_sub(plan.step)?;
             plan.sequence.get(offset as usize).copied()
@@ -190,8 +189,7 @@ impl AnytimeOptimizer {
                 step: self.step + 1,
                 start: sim.world().snapshot(),
                 applied: controls,
-                desired_lean,
-                drive: *drive,
+                goal: *goal,
                 config: config.clone(),
                 reset: std::mem::take(&mut self.reset_pending),
             };
@@ -297,7 +295,7 @@ fn plan_requests(mut replica: Simulation, requests: Receiver<Message>, replies: 
             optimizer.reset();
         }
         optimizer.note_applied(&request.applied);
-        optimizer.controls(&replica, request.desired_lean, &request.drive);
+        optimizer.controls(&replica, &request.goal);
         let Some(result) = optimizer.last_plan() else {
             continue;
         };

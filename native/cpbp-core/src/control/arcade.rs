@@ -7,7 +7,8 @@
 
 use glam::DVec3;
 
-use crate::bike::{index, Bike, Controls, DriveInput, POSE_GAIN};
+use super::Goal;
+use crate::bike::{index, Bike, Controls, POSE_GAIN};
 use crate::ode::World;
 use crate::simulation::{up_against, Simulation};
 
@@ -82,39 +83,28 @@ impl ArcadeController {
         self.previous = None;
     }
 
-    /// Controls for `sim`'s next control step towards `desired_lean` (rad, positive right).
-    pub fn controls_of(
-        &mut self,
-        sim: &Simulation,
-        desired_lean: f64,
-        drive: &DriveInput,
-    ) -> Controls {
+    /// Controls for `sim`'s next control step towards `goal`.
+    pub fn controls_of(&mut self, sim: &Simulation, goal: &Goal) -> Controls {
         let (bike, world, gravity) = (sim.bike(), sim.world(), sim.config().gravity);
-        self.controls(
-            bike,
-            world,
-            desired_lean,
-            drive,
-            gravity,
-            sim.config().control_dt,
-        )
+        self.controls(bike, world, goal, gravity, sim.config().control_dt)
     }
 
-    /// Controls for one step of length `dt` towards `desired_lean` (rad, positive right),
-    /// with the rear wheel as `drive` asks, under `gravity` (m/s²).
+    /// Controls for one step of length `dt` towards `goal` under `gravity` (m/s²): the
+    /// steering leans the bike, the waist holds the rider's weight where asked (a velocity
+    /// servo on the pose: the simple PD of the rider position), the rear wheel drives.
     pub fn controls(
         &mut self,
         bike: &Bike,
         world: &World,
-        desired_lean: f64,
-        drive: &DriveInput,
+        goal: &Goal,
         gravity: DVec3,
         dt: f64,
     ) -> Controls {
+        let desired_lean = goal.lean;
         let up = up_against(gravity);
         let mut controls = Controls::default();
-        bike.pose_hold(world, POSE_GAIN, &mut controls);
-        drive.apply(bike.params().wheel_radius, &mut controls);
+        bike.pose_hold_at(world, POSE_GAIN, &goal.rider.pose(), &mut controls);
+        goal.drive.apply(bike.params().wheel_radius, &mut controls);
         let lean = bike.lean(world, up);
         // Eq. 4.8 takes the lean rate as (α − α_o)/δt. A difference of two measured leans
         // a step apart amplifies the rider's jitter by p/δt (24× at p = 0.8 s); the frame's

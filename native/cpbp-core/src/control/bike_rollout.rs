@@ -1,30 +1,35 @@
 //! The bike as a system the C-PBP planner branches (thesis §4.3.1): each particle owns a
 //! world built like the master's; a planning step applies a control vector for one
-//! control period and costs the squared lean error of eq. 4.7.
+//! control period and costs the squared lean error of eq. 4.7, plus the rider-position
+//! error when the player holds the rider's weight somewhere.
 
 use glam::DVec3;
 
 use super::arcade::ArcadeController;
 use super::cpbp::{Priors, RolloutSystem};
 use super::lean::{current_lean_vector, desired_lean_vector, lean_cost};
+use super::Goal;
 use crate::bike::{
-    index, Bike, Controls, DriveInput, ForceClass, CONTROL_DIM, LOWER, POSE_GAIN, UPPER,
+    index, rider_position_cost, Bike, Controls, ForceClass, CONTROL_DIM, LOWER, POSE_GAIN, UPPER,
 };
 use crate::ode::{World, WorldState};
 use crate::physics::RolloutStepping;
 
-/// What the rider wants during a plan: the lean, and how strictly (eq. 4.7's s).
+/// How strictly the cost holds each part of the goal: the error that costs as much as
+/// one unit.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LeanGoal {
+pub struct CostTolerances {
+    /// Eq. 4.7's s (rad).
     pub lean: f64,
-    pub tolerance: f64,
+    /// The rider's centre of mass from where the player asks (m).
+    pub rider: f64,
 }
 
-impl Default for LeanGoal {
+impl Default for CostTolerances {
     fn default() -> Self {
         Self {
-            lean: 0.0,
-            tolerance: 5f64.to_radians(),
+            lean: 5f64.to_radians(),
+            rider: 0.03,
         }
     }
 }
@@ -42,9 +47,10 @@ pub struct BikeRollout {
     /// One planning step (s), and the ODE steps each planning step of the horizon takes.
     pub step_dt: f64,
     pub stepping: RolloutStepping,
-    pub goal: LeanGoal,
-    /// Throttle and brake go to the rear wheel directly, not through the planner.
-    pub drive: DriveInput,
+    /// What the player asks during the plan; throttle and brake go to the rear wheel
+    /// directly, not through the planner.
+    pub goal: Goal,
+    pub tolerances: CostTolerances,
     /// The arcade controller this particle follows (combined mode's particle 1), with
     /// its memory as it was on the master at the start of the plan.
     pub policy: Option<ArcadeController>,
@@ -57,7 +63,8 @@ impl BikeRollout {
         let mut raw = [0.0; CONTROL_DIM];
         raw.copy_from_slice(&u[..CONTROL_DIM]);
         let (mut controls, _) = Controls::sanitized(&raw);
-        self.drive
+        self.goal
+            .drive
             .apply(self.bike.params().wheel_radius, &mut controls);
         controls
     }
@@ -96,7 +103,18 @@ impl RolloutSystem for BikeRollout {
             self.bike.center_of_mass(&self.world),
             self.bike.support_point(&self.world, self.up),
         );
-        Some(lean_cost(desired, current, self.goal.tolerance) + crash)
+        let lean = lean_cost(desired, current, self.tolerances.lean);
+        // Only when asked: measuring the rider costs a little in every rollout step.
+        let rider = if self.goal.rider.engagement() > 0.0 {
+            rider_position_cost(
+                &self.goal.rider,
+                self.bike.rider_offset(&self.world),
+                self.tolerances.rider,
+            )
+        } else {
+            0.0
+        };
+        Some(lean + rider + crash)
     }
 
     /// Lean, lean rate, steering angle and rate, in units of roughly what one control
@@ -116,8 +134,7 @@ impl RolloutSystem for BikeRollout {
         let controls = controller.controls(
             &self.bike,
             &self.world,
-            self.goal.lean,
-            &self.drive,
+            &self.goal,
             self.gravity,
             self.step_dt,
         );
@@ -128,21 +145,23 @@ impl RolloutSystem for BikeRollout {
         Some(self.bike.center_of_mass(&self.world).to_array())
     }
 
-    /// The pose prior (thesis §4.3.1): rider joints towards the riding pose, the steering
-    /// around its current velocity so the plan does not jerk the bar.
+    /// The pose prior (thesis §4.3.1): rider joints towards the riding pose (offset where
+    /// the player holds the rider's weight), the steering around its current velocity so
+    /// the plan does not jerk the bar.
     fn client_prior(&self) -> Option<(Vec<f64>, Vec<f64>)> {
         let mut mean = vec![0.0; CONTROL_DIM];
         let mut sigma = vec![f64::INFINITY; CONTROL_DIM];
         let (_, steer_rate) = self.bike.steering(&self.world);
         mean[index::STEER] = steer_rate;
         sigma[index::STEER] = 1.5;
+        let pose = self.goal.rider.pose();
         for (i, angle) in self
             .bike
             .rider_joint_angles(&self.world)
             .into_iter()
             .enumerate()
         {
-            mean[index::WAIST + i] = -POSE_GAIN * angle;
+            mean[index::WAIST + i] = -POSE_GAIN * (angle - pose[i]);
             sigma[index::WAIST + i] = 0.5;
         }
         Some((mean, sigma))

@@ -5,13 +5,15 @@ mod arcade;
 mod bike_rollout;
 pub mod cpbp;
 pub mod fidelity;
+mod goal;
 mod lean;
 mod optimizer;
 pub mod sampling;
 
 pub use anytime::{AnytimeOptimizer, HandoverStats, Plan, PlanWait};
 pub use arcade::{eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
-pub use bike_rollout::{bike_priors, BikeRollout, LeanGoal};
+pub use bike_rollout::{bike_priors, BikeRollout, CostTolerances};
+pub use goal::Goal;
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };

@@ -4,10 +4,11 @@
 //! predictive sampling and MPPI in the same worlds with the same cost.
 
 use super::arcade::ArcadeController;
-use super::bike_rollout::{bike_priors, BikeRollout, LeanGoal};
+use super::bike_rollout::{bike_priors, BikeRollout, CostTolerances};
 use super::cpbp::{PlanResult, Planner, PlannerConfig, WarmStart};
 use super::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
-use crate::bike::{index, Controls, DriveInput, CONTROL_DIM};
+use super::Goal;
+use crate::bike::{index, Controls, CONTROL_DIM};
 use crate::ode::Solver;
 use crate::physics::{PhysicsModel, RolloutStepping};
 use crate::simulation::Simulation;
@@ -69,8 +70,8 @@ pub struct OptimizerConfig {
     /// The rollouts' constraint solver, the physics model's in a `Ride` (see
     /// `fidelity::divergence` before choosing another).
     pub rollout_solver: Solver,
-    /// Lean tolerance s of eq. 4.7 (rad).
-    pub lean_tolerance: f64,
+    /// How strictly the cost holds the lean (eq. 4.7's s, rad) and the rider's position (m).
+    pub tolerances: CostTolerances,
     /// Mutation scale of the followed sequences (σm = scale · σ0).
     pub mutation_scale: f64,
     /// Weight of the control priors' cost against the lean cost when choosing the best
@@ -92,7 +93,7 @@ impl Default for OptimizerConfig {
             horizon: 1.2,
             rollout_stepping: RolloutStepping::uniform(4),
             rollout_solver: Solver::QuickStep,
-            lean_tolerance: 5f64.to_radians(),
+            tolerances: CostTolerances::default(),
             mutation_scale: 0.2,
             control_cost_weight: 0.01,
             seed: 2015,
@@ -144,8 +145,8 @@ impl BikeOptimizer {
             up: sim.up(),
             step_dt: dt,
             stepping: config.rollout_stepping,
-            goal: LeanGoal::default(),
-            drive: DriveInput::default(),
+            goal: Goal::default(),
+            tolerances: config.tolerances,
             policy: None,
         };
         Self {
@@ -205,21 +206,12 @@ impl BikeOptimizer {
         }
     }
 
-    /// Plans one control step of `sim` towards `desired_lean` with the player's `drive`.
-    pub fn controls(
-        &mut self,
-        sim: &Simulation,
-        desired_lean: f64,
-        drive: &DriveInput,
-    ) -> Controls {
+    /// Plans one control step of `sim` towards the player's `goal`.
+    pub fn controls(&mut self, sim: &Simulation, goal: &Goal) -> Controls {
         let start = sim.world().snapshot();
-        let goal = LeanGoal {
-            lean: desired_lean,
-            tolerance: self.config.lean_tolerance,
-        };
         for rollout in &mut self.rollouts {
-            rollout.goal = goal;
-            rollout.drive = *drive;
+            rollout.goal = *goal;
+            rollout.tolerances = self.config.tolerances;
         }
         // Combined mode: particle 1 rides with the arcade controller, starting from the
         // master's controller memory (taken before this step updates it).
@@ -229,7 +221,7 @@ impl BikeOptimizer {
             rollout.policy = Some(self.arcade);
         }
         // Keep the arcade controller's memory in step with the master.
-        self.arcade.controls_of(sim, desired_lean, drive);
+        self.arcade.controls_of(sim, goal);
         // Particle 1: combined mode follows the arcade controller live; the optimizer
         // alone replays last frame's refinement.
         let result = match &mut self.search {

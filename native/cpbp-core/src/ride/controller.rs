@@ -4,11 +4,11 @@
 
 use std::time::Duration;
 
-use crate::bike::{Controls, DriveInput};
-use crate::control::{HandoverStats, OptimizerConfig, OptimizerMode, Plan, PlanWait};
+use crate::bike::{Controls, DriveInput, RiderPosition};
+use crate::control::{Goal, HandoverStats, OptimizerConfig, OptimizerMode, Plan, PlanWait};
 use crate::simulation::Simulation;
 
-/// What the player asks for; room for more inputs (the rider's weight) as they come.
+/// What the player asks for.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Intent {
     /// Throttle and brake.
@@ -22,6 +22,8 @@ pub struct Intent {
     /// Steering rate (rad/s, positive left) for the manual controller; 0 lets the bar
     /// spring back to centre.
     pub steer_rate: f64,
+    /// Where the rider's weight goes on the bike (the right stick).
+    pub rider: RiderPosition,
 }
 
 impl Intent {
@@ -43,8 +45,9 @@ impl Intent {
 /// What a controller sees of the ride at a control step.
 pub struct RideState<'a> {
     pub sim: &'a Simulation,
-    /// The lean (rad, positive right) the turn command asks for at this speed.
-    pub desired_lean: f64,
+    /// The intent as the controllers serve it: the lean the turn command asks for at
+    /// this speed, the drive and the rider position, sanitised.
+    pub goal: Goal,
     /// How the planners plan (ignored by the others).
     pub planner: &'a PlannerSettings,
 }

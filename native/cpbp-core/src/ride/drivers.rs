@@ -11,9 +11,8 @@ use crate::simulation::Simulation;
 pub struct ArcadeDriver(ArcadeController);
 
 impl Controller for ArcadeDriver {
-    fn controls(&mut self, state: &RideState<'_>, intent: &Intent) -> Controls {
-        self.0
-            .controls_of(state.sim, state.desired_lean, &intent.drive)
+    fn controls(&mut self, state: &RideState<'_>, _intent: &Intent) -> Controls {
+        self.0.controls_of(state.sim, &state.goal)
     }
 
     fn reset(&mut self) {
@@ -53,14 +52,13 @@ impl PlannerDriver {
 }
 
 impl Controller for PlannerDriver {
-    fn controls(&mut self, state: &RideState<'_>, intent: &Intent) -> Controls {
+    fn controls(&mut self, state: &RideState<'_>, _intent: &Intent) -> Controls {
         self.anytime.wait = state.planner.wait;
         let config = crate::control::OptimizerConfig {
             mode: self.mode,
             ..state.planner.optimizer.clone()
         };
-        self.anytime
-            .controls(state.sim, state.desired_lean, &intent.drive, &config)
+        self.anytime.controls(state.sim, &state.goal, &config)
     }
 
     fn reset(&mut self) {

@@ -13,7 +13,7 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use crate::bike::{Controls, Placement};
-use crate::control::{HandoverStats, Plan, TurnIntent};
+use crate::control::{Goal, HandoverStats, Plan, TurnIntent};
 use crate::simulation::{Simulation, StepEvents};
 use crate::terrain::Terrain;
 
@@ -161,13 +161,12 @@ impl Ride {
 
     /// Simulates one control step with the active controller (or the raw controls).
     pub fn step(&mut self) -> StepEvents {
-        let desired_lean = self.desired_lean();
         let controls = match self.raw_controls {
             Some(controls) => {
                 self.last_driver = None;
                 controls
             }
-            None => self.controls_of_active(desired_lean),
+            None => self.controls_of_active(self.goal()),
         };
         self.sim.set_controls(controls);
         let events = self.sim.step();
@@ -208,7 +207,16 @@ impl Ride {
         self.built.retain(|(kind, _)| !kind.plans());
     }
 
-    fn controls_of_active(&mut self, desired_lean: f64) -> Controls {
+    /// What the controllers serve this step: the intent with the turn made a lean.
+    pub fn goal(&self) -> Goal {
+        Goal {
+            lean: self.desired_lean(),
+            drive: self.intent.drive,
+            rider: self.intent.rider.sanitized().0,
+        }
+    }
+
+    fn controls_of_active(&mut self, goal: Goal) -> Controls {
         let kind = self.kind;
         if !self.built.iter().any(|(k, _)| *k == kind) {
             let controller = kind.build(&self.sim, &self.planner);
@@ -217,7 +225,7 @@ impl Ride {
         let fresh_driver = self.last_driver != Some(kind);
         let state = RideState {
             sim: &self.sim,
-            desired_lean,
+            goal,
             planner: &self.planner,
         };
         let (_, controller) = self

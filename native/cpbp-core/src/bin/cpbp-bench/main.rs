@@ -7,7 +7,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use cpbp_core::bike::{Controls, DriveInput, Placement};
-use cpbp_core::control::{BikeOptimizer, OptimizerConfig, OptimizerMode, PlanWait};
+use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, OptimizerMode, PlanWait};
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -179,12 +179,12 @@ fn planning_ms(
         max_speed: 15.0 / 3.6,
     };
     for _ in 0..3 {
-        optimizer.controls(sim, 0.0, &drive); // warm-up: memory, thread pool
+        optimizer.controls(sim, &Goal::riding(0.0, drive)); // warm-up: memory, thread pool
     }
     let mut samples: Vec<f64> = (0..9)
         .map(|_| {
             let start = Instant::now();
-            optimizer.controls(sim, 0.0, &drive);
+            optimizer.controls(sim, &Goal::riding(0.0, drive));
             start.elapsed().as_secs_f64() * 1000.0
         })
         .collect();
