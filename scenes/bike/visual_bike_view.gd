@@ -10,6 +10,8 @@ extends Node3D
 const WHEELS: Array[int] = [BikeSimulation.REAR_WHEEL, BikeSimulation.FRONT_WHEEL]
 const FORK := BikeSimulation.FORK
 const FRAME := BikeSimulation.FRAME
+const FORK_LOWER := BikeSimulation.FORK_LOWER
+const SWINGARM := BikeSimulation.SWINGARM
 const LOWER_LEG := BikeSimulation.LOWER_LEG
 const UPPER_LEG := BikeSimulation.UPPER_LEG
 const TORSO := BikeSimulation.TORSO
@@ -30,6 +32,14 @@ var _pieces: Array[Dictionary] = []
 var _materials := {}
 ## Centre of the grips (bike frame), where the simulated hand holds the bar.
 var _grip := Vector3.ZERO
+## The rear shock's coil, stretched between its mounts every frame: its mounts on the
+## frame and on the swingarm (each in its body's frame) and its length at rest.
+var _shock: MeshInstance3D
+var _shock_mounts: Array[Vector3] = []
+var _shock_rest_length := 1.0
+## One stanchion (on the fork) and the lower leg it slides in, to measure the drawn fork.
+var _stanchion: Node3D
+var _fork_leg: Node3D
 
 
 func _ready() -> void:
@@ -44,6 +54,7 @@ func _ready() -> void:
 	_grip = _capsule_ends(LOWER_ARM, -BIKE_FORWARD)[1]
 	_build_wheels()
 	_build_frame()
+	_build_swingarm()
 	_build_fork()
 	_build_rider()
 	_follow()
@@ -55,12 +66,32 @@ func _process(_delta: float) -> void:
 
 
 func _follow() -> void:
-	# One native call per body, not per piece: some sixty pieces ride on nine bodies.
+	# One native call per body, not per piece: some sixty pieces ride on eleven bodies.
 	var bodies: Array[Transform3D] = []
 	for body in _simulation.get_body_count():
 		bodies.append(_simulation.get_body_transform(body))
 	for piece: Dictionary in _pieces:
 		(piece.node as Node3D).global_transform = bodies[piece.body] * (piece.offset as Transform3D)
+	# The coil between its mounts: it shortens as the swingarm rises.
+	var top := bodies[FRAME] * _shock_mounts[0]
+	var bottom := bodies[SWINGARM] * _shock_mounts[1]
+	var stretch := top.distance_to(bottom) / _shock_rest_length
+	var basis := _basis_with_y((top - bottom).normalized(), _rest.basis.x)
+	_shock.global_transform = Transform3D(
+		basis.scaled_local(Vector3(1, stretch, 1)), (top + bottom) / 2.0
+	)
+
+
+## How long the fork is drawn now (m, from the middle of a lower leg up its axis to the
+## middle of its stanchion): it shortens by as much as the simulated fork compresses.
+func drawn_fork_length() -> float:
+	var up := _fork_leg.global_basis.y.normalized()
+	return (_stanchion.global_position - _fork_leg.global_position).dot(up)
+
+
+## How long the rear shock's coil is drawn now (m, between its mounts).
+func drawn_shock_length() -> float:
+	return _shock.global_transform.basis.y.length() * _shock_rest_length
 
 
 func _build_wheels() -> void:
@@ -112,32 +143,62 @@ func _build_frame() -> void:
 			"frame"
 		)
 		_rod(
-			FRAME,
-			Vector3(-0.22, 0.45, side * 0.1),
-			_bike_of(_rest_of(0).origin) + Vector3(0, 0, side * 0.1),
-			0.03,
-			"frame"
-		)
-		_rod(
 			FRAME, Vector3(-0.05, 0.38, side * 0.2), Vector3(-0.1, 0.38, side * 0.2), 0.02, "metal"
 		)
 	_rod(FRAME, Vector3(0.0, 0.28, 0.15), Vector3(-0.42, 0.42, 0.2), 0.045, "metal")
 	_rod(FRAME, Vector3(-0.42, 0.42, 0.2), Vector3(-0.72, 0.52, 0.2), 0.06, "exhaust")
 
 
-func _build_fork() -> void:
-	var axle := _bike_of(_rest_of(1).origin)
-	# Up the steering axis (25° rake) from the axle to the top clamp.
-	var up := Vector3(-sin(deg_to_rad(25.0)), cos(deg_to_rad(25.0)), 0.0)
-	var top := axle + up * 0.78
+## The swingarm's two arms from the pivot to the axle, and the rear shock from the frame
+## to the swingarm: its coil is stretched between the mounts every frame.
+func _build_swingarm() -> void:
+	var pivot_axle := _capsule_ends(SWINGARM, BIKE_FORWARD)
+	var pivot: Vector3 = pivot_axle[0]
+	var axle := _bike_of(_rest_of(BikeSimulation.REAR_WHEEL).origin)
 	for side: float in [-1.0, 1.0]:
 		_rod(
-			FORK,
-			axle + Vector3(0, 0, side * 0.09),
-			top + Vector3(0, 0, side * 0.09),
-			0.028,
-			"metal"
+			SWINGARM,
+			pivot + Vector3(0, 0, side * 0.1),
+			axle + Vector3(0, 0, side * 0.1),
+			0.03,
+			"frame"
 		)
+	_rod(SWINGARM, pivot + Vector3(0, 0, -0.1), pivot + Vector3(0, 0, 0.1), 0.035, "frame")
+	# A monoshock under the seat: from the frame to a third of the way along the arm.
+	var bottom := pivot.lerp(axle, 0.35) + Vector3(0, 0.04, 0)
+	var top := pivot + Vector3(-0.12, 0.36, 0)
+	_rod(FRAME, top, top.lerp(bottom, 0.45), 0.03, "metal")
+	_rod(SWINGARM, bottom, bottom.lerp(top, 0.5), 0.012, "metal")
+	var coil := CylinderMesh.new()
+	coil.top_radius = 0.045
+	coil.bottom_radius = 0.045
+	_shock_rest_length = top.distance_to(bottom) * 0.6
+	coil.height = _shock_rest_length
+	_shock = MeshInstance3D.new()
+	_shock.mesh = coil
+	_shock.material_override = _material("spring")
+	_shock.top_level = true
+	_shock.name = "shock_spring"
+	add_child(_shock)
+	_shock_mounts = [
+		_rest_of(FRAME).affine_inverse() * _world_of(top),
+		_rest_of(SWINGARM).affine_inverse() * _world_of(bottom),
+	]
+
+
+## The fork: stanchions on the steered part slide into the lower legs, which carry the
+## axle and the mudguard, so the fork visibly compresses.
+func _build_fork() -> void:
+	var axle := _bike_of(_rest_of(BikeSimulation.FRONT_WHEEL).origin)
+	var lower_top: Vector3 = _capsule_ends(FORK_LOWER, BIKE_DOWN)[1]
+	var stanchions := _capsule_ends(FORK, BIKE_DOWN)
+	var top: Vector3 = stanchions[1]
+	for side: float in [-1.0, 1.0]:
+		var out := Vector3(0, 0, side * 0.09)
+		_rod(FORK, stanchions[0] + out, top + out, 0.022, "metal")
+		_stanchion = _pieces[-1].node
+		_rod(FORK_LOWER, axle + out, lower_top + out, 0.032, "frame")
+		_fork_leg = _pieces[-1].node
 		_rod(
 			FORK,
 			top + Vector3(-0.04, 0.04, side * 0.06),
@@ -159,7 +220,7 @@ func _build_fork() -> void:
 	lamp.radius = 0.085
 	lamp.height = 0.15
 	_add(FORK, lamp, "lamp", Transform3D(_bike_basis(), _world_of(top + Vector3(0.14, -0.12, 0.0))))
-	_box(FORK, axle + Vector3(0.0, 0.35, 0.0), Vector3(0.3, 0.03, 0.14), 0.0, "paint")
+	_box(FORK_LOWER, axle + Vector3(0.0, 0.35, 0.0), Vector3(0.3, 0.03, 0.14), 0.0, "paint")
 
 
 func _build_rider() -> void:
@@ -312,6 +373,7 @@ func _material(look: String) -> StandardMaterial3D:
 		seat = Color(0.08, 0.08, 0.09),
 		tail_light = Color(0.9, 0.05, 0.05),
 		exhaust = Color(0.55, 0.55, 0.58),
+		spring = Color(0.95, 0.75, 0.1),
 		rubber = Color(0.05, 0.05, 0.05),
 		lamp = Color(1.0, 0.97, 0.85),
 		trousers = Color(0.12, 0.13, 0.17),

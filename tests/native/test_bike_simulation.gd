@@ -200,6 +200,57 @@ func test_the_physics_is_a_name_from_the_one_list_and_the_exact_model_rides() ->
 		_bike.queue_free()
 
 
+func test_the_exact_bike_rides_on_its_springs_and_the_classic_one_is_rigid() -> void:
+	for physics: String in BikeSimulation.physics_names():
+		_bike = BikeSimulation.new()
+		_bike.physics = physics
+		_bike.controller = "arcade"
+		_bike.transform = Transform3D(Basis(), Vector3(0, 0.02, 0))
+		_level.add_child(_bike)
+		await wait_physics_frames(1)
+		_bike.set_drive(1.0, 0.0)
+		_bike.advance(90)
+		var sag := _bike.get_suspension_compression()
+		if physics == "exact":
+			assert_almost_eq(sag, Vector2(0.039, 0.039), Vector2(0.003, 0.003), "rider sag")
+		else:
+			assert_eq(sag, Vector2.ZERO, "classic: the thesis's rigid bike")
+		_bike.queue_free()
+
+
+func test_the_drawn_fork_and_shock_compress_with_the_simulated_ones() -> void:
+	var bike: BikeSimulation = load("res://scenes/bike/bike.tscn").instantiate()
+	bike.controller = "arcade"
+	bike.transform = Transform3D(Basis(), Vector3(0, 0.5, 0))
+	_level.add_child(bike)
+	await wait_physics_frames(1)
+	bike.set_drive(0.6, 0.0)
+	# Dropped from half a metre: in the air both ends extend to their stops.
+	await wait_physics_frames(9)
+	var view: VisualBikeView = bike.get_node("VisualBikeView")
+	var in_the_air := bike.get_suspension_compression()
+	var fork_in_the_air := view.drawn_fork_length()
+	var shock_in_the_air := view.drawn_shock_length()
+	assert_lt(in_the_air.x, 0.005, "topped out in the air")
+	var deepest := 0.0
+	for _i in 90:
+		await wait_physics_frames(1)
+		deepest = maxf(deepest, bike.get_suspension_compression().x)
+	assert_gt(deepest, 0.06, "the landing compressed the fork past its sag")
+	# Riding on: the drawing has compressed as much as the simulated fork.
+	assert_false(bike.is_crashed())
+	var settled := bike.get_suspension_compression()
+	assert_gt(settled.x, 0.01, "the fork carries the bike")
+	assert_almost_eq(
+		fork_in_the_air - view.drawn_fork_length(),
+		settled.x - in_the_air.x,
+		0.003,
+		"the drawn fork shortened with the simulated one"
+	)
+	assert_lt(view.drawn_shock_length(), shock_in_the_air - 0.005, "the shock's coil shortened")
+	bike.queue_free()
+
+
 func _spawn(where: Transform3D) -> void:
 	_bike = BikeSimulation.new()
 	_bike.transform = where

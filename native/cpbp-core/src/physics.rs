@@ -62,6 +62,15 @@ impl PhysicsModel {
         }
     }
 
+    /// Whether the bike has its suspension (fork and swingarm on springs). The classic
+    /// model keeps the thesis's rigid frame and fork, as its evaluation was ridden.
+    pub fn suspended(self) -> bool {
+        match self {
+            Self::Classic => false,
+            Self::Exact => true,
+        }
+    }
+
     /// The rider's arm strength as a fraction of `MAX_TORQUE`'s arms entry.
     pub fn arm_strength(self) -> f64 {
         match self {

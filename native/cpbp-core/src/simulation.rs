@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use glam::DVec3;
 
-use crate::bike::{Bike, BikeParams, Controls, CrashCause, CrashMonitor, Part, Placement};
+use crate::bike::{Bike, BikeParams, Controls, CrashCause, CrashMonitor, Part, Placement, GRAVITY};
 use crate::ode::World;
 use crate::physics::PhysicsModel;
 use crate::terrain::Terrain;
@@ -29,7 +29,7 @@ pub struct SimulationConfig {
 impl Default for SimulationConfig {
     fn default() -> Self {
         Self {
-            gravity: DVec3::new(0.0, -9.81, 0.0),
+            gravity: DVec3::new(0.0, -GRAVITY, 0.0),
             control_dt: 1.0 / 30.0,
             substeps: 4,
             physics: PhysicsModel::default(),
@@ -252,8 +252,13 @@ fn build_world(config: &SimulationConfig, terrain: &Terrain, spawn: &Placement) 
     world.set_solver(config.physics.solver());
     // The bike first: its bodies and joints then have the same indices in every world,
     // whatever the terrain, so snapshots move between worlds and levels.
-    let bike = Bike::build(&mut world, &config.bike, spawn)
-        .with_arm_strength(config.physics.arm_strength());
+    let params = if config.physics.suspended() {
+        config.bike.clone()
+    } else {
+        config.bike.rigid()
+    };
+    let bike =
+        Bike::build(&mut world, &params, spawn).with_arm_strength(config.physics.arm_strength());
     for wheel in [Part::RearWheel, Part::FrontWheel] {
         world.set_gyroscopic(bike.body(wheel), config.physics.wheel_gyroscopic());
     }

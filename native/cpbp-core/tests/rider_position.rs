@@ -48,7 +48,8 @@ const LEFT: RiderPosition = RiderPosition {
 };
 
 /// Each full-stick direction in turn, then released, at 15 km/h in the game's physics:
-/// the offsets reached, in order forward, back, right, left, released.
+/// the offsets reached, in order forward, back, right, left, released. Forward straight to
+/// back: where the rider ends up must not depend on where he came from.
 fn ride_every_direction(kind: ControllerKind) -> Vec<DVec3> {
     let mut ride = common::ride_in(PhysicsModel::Exact, kind, 15.0, 10);
     let (at_rest, _) = hold(&mut ride, RiderPosition::NEUTRAL, 2.0);

@@ -24,6 +24,10 @@ impl BikeSimulation {
     #[constant]
     const FRAME: i64 = Part::Frame as i64;
     #[constant]
+    const FORK_LOWER: i64 = Part::ForkLower as i64;
+    #[constant]
+    const SWINGARM: i64 = Part::Swingarm as i64;
+    #[constant]
     const LOWER_LEG: i64 = Part::LowerLeg as i64;
     #[constant]
     const UPPER_LEG: i64 = Part::UpperLeg as i64;
@@ -184,6 +188,16 @@ impl BikeSimulation {
     #[func]
     fn get_lean(&self) -> f64 {
         self.sim().map_or(0.0, |s| s.bike().lean(s.world(), s.up()))
+    }
+
+    /// How far the fork (x) and the rear wheel (y) have compressed from full extension
+    /// (m): about 39 mm each at rest with the rider aboard, 130 mm bottomed out.
+    #[func]
+    fn get_suspension_compression(&self) -> Vector2 {
+        self.sim().map_or(Vector2::ZERO, |s| {
+            let (front, rear) = s.bike().suspension_compression(s.world());
+            Vector2::new(front as f32, rear as f32)
+        })
     }
 
     /// Steering angle in radians, positive to the left.

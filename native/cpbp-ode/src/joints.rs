@@ -1,5 +1,5 @@
-//! Joints between bodies: ball, hinge (with limits and a velocity motor) and the Euler
-//! angular motor that drives a ball joint about three axes.
+//! Joints between bodies: ball, hinge and slider (with limits and a velocity motor) and
+//! the Euler angular motor that drives a ball joint about three axes.
 
 use crate::ffi;
 use crate::world::{BodyId, World};
@@ -27,6 +27,7 @@ pub struct MotorState {
 pub(crate) enum JointKind {
     Ball,
     Hinge,
+    Slider,
     EulerMotor,
 }
 
@@ -35,7 +36,7 @@ impl JointKind {
     pub(crate) fn motor_axes(self) -> usize {
         match self {
             JointKind::Ball => 0,
-            JointKind::Hinge => 1,
+            JointKind::Hinge | JointKind::Slider => 1,
             JointKind::EulerMotor => 3,
         }
     }
@@ -67,6 +68,19 @@ impl World {
         self.push_joint(joint, JointKind::Hinge)
     }
 
+    /// A slider (prismatic joint) along a world-frame axis; its position is 0 as built and
+    /// grows as `a` moves along the axis relative to `b`.
+    pub fn add_slider(&mut self, a: BodyId, b: Option<BodyId>, axis: Vec3) -> JointId {
+        // SAFETY: as for add_ball.
+        let joint = unsafe {
+            let joint = ffi::dJointCreateSlider(self.world, std::ptr::null_mut());
+            ffi::dJointAttach(joint, self.bodies[a.0], self.body_or_world(b));
+            ffi::dJointSetSliderAxis(joint, axis[0], axis[1], axis[2]);
+            joint
+        };
+        self.push_joint(joint, JointKind::Slider)
+    }
+
     /// An Euler-mode angular motor between two bodies (for a ball joint): axis 0 is fixed
     /// to `a`, axis 2 to `b`, both given in world frame and perpendicular; ODE derives
     /// axis 1 and the three angles every step (so they need no saving in snapshots).
@@ -83,7 +97,7 @@ impl World {
         self.push_joint(joint, JointKind::EulerMotor)
     }
 
-    /// Angle limits (radians) of a hinge (axis 0) or an Euler motor (axes 0–2).
+    /// Limits of a hinge or slider (axis 0; rad or m) or an Euler motor (axes 0–2; rad).
     pub fn set_joint_limits(&mut self, joint: JointId, axis: usize, lo: f64, hi: f64) {
         let (id, kind, group) = self.axis_params(joint, axis);
         // SAFETY: the joint belongs to this world and has this axis.
@@ -92,6 +106,16 @@ impl World {
             self.set_param(id, kind, group + ffi::dParamHiStop as i32, hi);
             // Setting lo again makes it stick when the new lo exceeds the old hi.
             self.set_param(id, kind, group + ffi::dParamLoStop as i32, lo);
+        }
+    }
+
+    /// ERP and CFM of axis 0's stops (a spring uses them; see `springs`).
+    pub(crate) fn set_stop_erp_cfm(&mut self, joint: JointId, erp: f64, cfm: f64) {
+        let (id, kind, group) = self.axis_params(joint, 0);
+        // SAFETY: the joint belongs to this world and has axis 0.
+        unsafe {
+            self.set_param(id, kind, group + ffi::dParamStopERP as i32, erp);
+            self.set_param(id, kind, group + ffi::dParamStopCFM as i32, cfm);
         }
     }
 
@@ -154,7 +178,7 @@ impl World {
             match kind {
                 JointKind::Hinge => ffi::dJointGetHingeAngle(id),
                 JointKind::EulerMotor => ffi::dJointGetAMotorAngle(id, axis as i32),
-                JointKind::Ball => 0.0,
+                JointKind::Ball | JointKind::Slider => 0.0,
             }
         }
     }
@@ -199,6 +223,7 @@ impl World {
         unsafe {
             match kind {
                 JointKind::Hinge => ffi::dJointSetHingeParam(id, param, value),
+                JointKind::Slider => ffi::dJointSetSliderParam(id, param, value),
                 JointKind::EulerMotor => ffi::dJointSetAMotorParam(id, param, value),
                 JointKind::Ball => {}
             }
@@ -212,6 +237,7 @@ impl World {
         unsafe {
             match kind {
                 JointKind::Hinge => ffi::dJointGetHingeParam(id, param),
+                JointKind::Slider => ffi::dJointGetSliderParam(id, param),
                 JointKind::EulerMotor => ffi::dJointGetAMotorParam(id, param),
                 JointKind::Ball => 0.0,
             }

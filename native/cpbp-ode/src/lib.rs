@@ -10,6 +10,7 @@ mod joints;
 mod mass;
 mod runtime;
 mod shared_data;
+mod springs;
 mod state;
 mod world;
 
@@ -18,6 +19,7 @@ pub use joints::{JointId, MotorState};
 pub use mass::Mass;
 pub use runtime::{c_library_version, configuration, ensure_thread_data, Configuration};
 pub use shared_data::{HeightFieldData, TriMeshData};
+pub use springs::Spring;
 pub use state::{BodyState, StateMismatch, WorldState};
 pub use world::{BodyId, GeomId, Gyroscopic, Solver, World};
 

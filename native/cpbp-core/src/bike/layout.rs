@@ -17,6 +17,12 @@ pub struct Layout {
     pub steer_anchor: DVec3,
     /// Top of the fork body, at the handlebar clamp.
     pub fork_top: DVec3,
+    /// Bottom of the fork's stanchions, inside the lower legs, and top of the lower legs
+    /// (both on the line from the axle up the steering axis).
+    pub stanchion_bottom: DVec3,
+    pub fork_lower_top: DVec3,
+    /// Where the swingarm pivots on the frame.
+    pub swingarm_pivot: DVec3,
     /// Rider joints: footpeg (ankle), knee, hip (waist), shoulder, elbow, grip (wrist).
     pub ankle: DVec3,
     pub knee: DVec3,
@@ -45,6 +51,13 @@ const FOREARM: f64 = 0.36;
 /// axis they sit.
 const GRIP_HEIGHT: f64 = 1.05;
 const GRIP_BEHIND_AXIS: f64 = 0.06;
+/// Length of the fork's lower legs from the axle, and how far up from the axle the
+/// stanchions end inside them (m): room for the 130 mm travel with the bushings apart.
+const FORK_LOWER_LENGTH: f64 = 0.42;
+const STANCHION_OVERLAP: f64 = 0.24;
+/// The swingarm's pivot on the frame relative to the rear axle: a swingarm of about
+/// 0.57 m sloping down to the axle, as on road bikes of this class.
+const SWINGARM_PIVOT_FROM_AXLE: DVec3 = DVec3::new(0.56, 0.09, 0.0);
 
 impl Layout {
     pub fn new(params: &BikeParams) -> Self {
@@ -64,6 +77,9 @@ impl Layout {
             steer_axis,
             steer_anchor: at_height(0.85),
             fork_top: at_height(GRIP_HEIGHT - 0.03),
+            stanchion_bottom: front_axle + steer_axis * STANCHION_OVERLAP,
+            fork_lower_top: front_axle + steer_axis * FORK_LOWER_LENGTH,
+            swingarm_pivot: rear_axle + SWINGARM_PIVOT_FROM_AXLE,
             ankle: FOOTPEG,
             knee: bend_point(HIP, FOOTPEG, THIGH, SHANK, true),
             hip: HIP,

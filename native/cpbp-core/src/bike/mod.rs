@@ -10,6 +10,7 @@ mod manual;
 mod model;
 mod params;
 mod rider_position;
+mod suspension;
 
 pub use controls::{
     index, Controls, ForceClass, CONTROL_DIM, FORCE_TUNINGS, JOINT_TARGETS, LOWER, MAX_TORQUE,
@@ -19,9 +20,10 @@ pub use crash::{CrashCause, CrashMonitor};
 pub use drive::DriveInput;
 pub use layout::Layout;
 pub use manual::{manual_controls, POSE_GAIN};
-pub use model::{from_quat, to_quat, Bike, Part, PartShape, Placement, Shape};
-pub use params::BikeParams;
+pub use model::{from_quat, to_quat, Bike, Part, PartShape, Placement, Shape, PARTS};
+pub use params::{BikeParams, GRAVITY};
 pub use rider_position::{
-    rider_position_cost, RiderPosition, COM_REACH_FORWARD, COM_REACH_RIGHT, FORWARD_POSE,
-    RIDER_JOINTS, RIGHT_POSE,
+    rider_position_cost, RiderPosition, BACK_POSE, COM_REACH_FORWARD, COM_REACH_RIGHT,
+    FORWARD_POSE, RIDER_JOINTS, RIGHT_POSE,
 };
+pub use suspension::{static_wheel_loads, Suspension};

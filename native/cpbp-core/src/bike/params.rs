@@ -7,7 +7,9 @@
 //! CB300R; manufacturers' published specifications): wheelbase 1.36–1.40 m, rake (caster)
 //! 24.5–25°, trail 95–100 mm, 17-inch wheels (0.60 m tyre diameter), about 150 kg ready
 //! to ride. Wheel, fork and frame shares of that mass follow typical component weights
-//! (cast wheel with tyre and disc: front ≈ 10 kg, rear ≈ 14 kg; fork with bars ≈ 12 kg).
+//! (cast wheel with tyre and disc: front ≈ 10 kg, rear ≈ 14 kg; fork with bars ≈ 12 kg, of
+//! which the lower legs with axle and caliper ≈ 4 kg slide; swingarm ≈ 6 kg). Suspension:
+//! see `suspension.rs`.
 //!
 //! **Rider**: an adult of 75 kg and 1.75 m. Segment masses and lengths are the fractions of
 //! Winter, *Biomechanics and Motor Control of Human Movement* (4th ed., 2009, table 4.1):
@@ -16,6 +18,11 @@
 //! The model has one leg and one arm in the mid-plane (as in the thesis, §4.2), so they
 //! carry the mass of both sides: legs 15.0 kg (thighs) and 9.15 kg (shanks and feet),
 //! arms 4.2 kg (upper) and 3.3 kg (forearms and hands); torso with head 43.35 kg.
+
+use super::suspension::Suspension;
+
+/// Gravity the bike is set up for (m/s²): the suspension's preload carries its weight.
+pub const GRAVITY: f64 = 9.81;
 
 /// Every number that shapes the bike and rider. `Default` is the reference bike.
 #[derive(Clone, Debug, PartialEq)]
@@ -34,14 +41,20 @@ pub struct BikeParams {
     pub trail: f64,
     pub rear_wheel_mass: f64,
     pub front_wheel_mass: f64,
+    /// The steered fork above the sliders: stanchions, clamps, handlebar.
     pub fork_mass: f64,
+    /// The fork's lower legs (sliders), axle and caliper: unsprung.
+    pub fork_lower_mass: f64,
     pub frame_mass: f64,
+    pub swingarm_mass: f64,
     /// Rider segments: lower leg, upper leg, torso with head, upper arm, lower arm (kg).
     pub rider_masses: [f64; 5],
     /// Largest steering angle either way (rad).
     pub steer_limit: f64,
     /// Coulomb friction coefficient of tyres on the ground.
     pub tyre_friction: f64,
+    /// Fork and rear suspension; `None` builds the thesis's rigid frame and fork.
+    pub suspension: Option<Suspension>,
 }
 
 impl Default for BikeParams {
@@ -54,19 +67,36 @@ impl Default for BikeParams {
             trail: 0.095,
             rear_wheel_mass: 14.0,
             front_wheel_mass: 10.0,
-            fork_mass: 12.0,
-            frame_mass: 114.0,
+            fork_mass: 8.0,
+            fork_lower_mass: 4.0,
+            frame_mass: 108.0,
+            swingarm_mass: 6.0,
             rider_masses: [9.15, 15.0, 43.35, 4.2, 3.3],
             steer_limit: 35f64.to_radians(),
             tyre_friction: 1.0,
+            suspension: Some(Suspension::default()),
         }
     }
 }
 
 impl BikeParams {
+    /// The same bike without suspension: lower legs fixed to the fork, swingarm to the
+    /// frame.
+    pub fn rigid(&self) -> Self {
+        Self {
+            suspension: None,
+            ..self.clone()
+        }
+    }
+
     /// Bike without rider (kg).
     pub fn bike_mass(&self) -> f64 {
-        self.rear_wheel_mass + self.front_wheel_mass + self.fork_mass + self.frame_mass
+        self.rear_wheel_mass
+            + self.front_wheel_mass
+            + self.fork_mass
+            + self.fork_lower_mass
+            + self.frame_mass
+            + self.swingarm_mass
     }
 
     /// Rider (kg).

@@ -15,9 +15,15 @@ pub const RIDER_JOINTS: usize = 11;
 
 /// Offsets of the rider's joint angles from the riding pose (rad, `RIDER_JOINTS` order) at
 /// full deflection forward: the waist pitches the torso over the tank (Euler axis 0 is
-/// about the rider's right; negative leans forward), inside its ±0.7 rad limit.
+/// about the rider's right; negative leans forward), inside its ±0.7 rad limit, and the
+/// shoulder and wrist take the angles the arms settle at on the bar. Every joint of the
+/// loop foot → waist → arms → bar gets a consistent target: with the waist's alone the
+/// weak arms give way, and where the rider ends up depends on where he came from.
 pub const FORWARD_POSE: [f64; RIDER_JOINTS] =
-    [-0.55, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+    [-0.55, 0.0, 0.0, 0.0, 0.39, 0.0, 0.0, 0.0, -0.17, 0.0, 0.0];
+/// The same, full deflection back: the torso pitched back, the arms straightened.
+pub const BACK_POSE: [f64; RIDER_JOINTS] =
+    [0.55, 0.0, 0.0, 0.0, -0.53, 0.0, 0.0, 0.0, 0.35, 0.0, 0.0];
 /// The same, full deflection to the right: the waist rolls the torso right (axis 2,
 /// nearly its ±0.4 rad limit) and twists it a little, and the shoulder and wrist let the
 /// arms follow. The planners found this pose for themselves (measured at 15 km/h); with
@@ -76,14 +82,19 @@ impl RiderPosition {
     }
 
     /// Offsets of the rider's joint angles from the riding pose that put the weight
-    /// where asked: the full-deflection poses scaled by the stick.
+    /// where asked: the full-deflection poses scaled by the stick (left mirrors right).
     pub fn pose(&self) -> [f64; RIDER_JOINTS] {
         let (p, _) = self.sanitized();
         if p == Self::NEUTRAL {
             // Exactly the riding pose (no −0.0 from 0 × a negative offset).
             return [0.0; RIDER_JOINTS];
         }
-        std::array::from_fn(|i| p.forward * FORWARD_POSE[i] + p.right * RIGHT_POSE[i])
+        let fore_aft = if p.forward >= 0.0 {
+            FORWARD_POSE
+        } else {
+            BACK_POSE
+        };
+        std::array::from_fn(|i| p.forward.abs() * fore_aft[i] + p.right * RIGHT_POSE[i])
     }
 
     /// Where the pose puts the rider's centre of mass relative to where the riding pose

@@ -15,6 +15,7 @@ use crate::joints::JointKind;
 use crate::mass::Mass;
 use crate::runtime::ensure_thread_data;
 use crate::shared_data::{HeightFieldData, TriMeshData};
+use crate::springs::Spring;
 use crate::{BodyState, Quat, StateMismatch, Vec3, WorldState};
 
 /// Index of a body inside its [`World`].
@@ -59,6 +60,8 @@ pub struct World {
     solver: Solver,
     /// Bodies whose gyroscopic torque is added explicitly (`Gyroscopic::Explicit`).
     explicit_gyroscopic: Vec<usize>,
+    /// Spring–dampers on joints, their stops set anew before every step.
+    pub(crate) springs: Vec<(crate::JointId, Spring)>,
     /// QuickStep's random sequence (it reorders constraint rows) for this world. ODE keeps
     /// one seed per thread; each step swaps this world's seed in and out, so a world's
     /// steps depend on its own history only, not on what else its thread has stepped.
@@ -104,6 +107,7 @@ impl World {
                 shared_heights: Vec::new(),
                 solver: Solver::default(),
                 explicit_gyroscopic: Vec::new(),
+                springs: Vec::new(),
                 random_seed: 0,
             }
         }
@@ -276,6 +280,7 @@ impl World {
     /// Advances the world by `dt` seconds: collision, contact joints, the solver.
     pub fn step(&mut self, dt: f64) {
         ensure_thread_data();
+        self.update_springs(dt);
         self.add_explicit_gyroscopic_torques();
         self.canonicalise_geom_order();
         self.touching_static.iter_mut().for_each(|t| *t = false);

@@ -3,11 +3,12 @@
 
 use glam::{DQuat, DVec3};
 
-use super::{to_array, to_quat, Bike, Part, PartShape, Placement, Shape};
+use super::{to_array, to_quat, Bike, Part, PartShape, Placement, Shape, SuspensionJoints};
 use crate::bike::controls::Controls;
 use crate::bike::layout::Layout;
-use crate::bike::params::BikeParams;
-use crate::ode::{BodyId, JointId, Mass, SurfaceParams, World};
+use crate::bike::params::{BikeParams, GRAVITY};
+use crate::bike::suspension::{static_wheel_loads, Suspension};
+use crate::ode::{BodyId, JointId, Mass, Spring, SurfaceParams, World};
 
 impl Bike {
     /// Builds bike and rider into `world` at `placement`, at rest.
@@ -40,8 +41,26 @@ impl Bike {
             0.11,
             l.front_axle,
         );
-        let fork = builder.fork(params.fork_mass, l.front_axle, l.fork_top, l.grip);
-        let frame = builder.frame(params.frame_mass);
+        // Without suspension the lower legs are part of the fork and the swingarm part of
+        // the frame (the thesis's bike): the same bodies in the same order as before the
+        // suspension existed, so the classic physics rides exactly as it was evaluated.
+        let sprung = params.suspension.is_some();
+        let (fork, frame, fork_lower, swingarm) = if sprung {
+            let fork = builder.fork(params.fork_mass, l.stanchion_bottom, l.fork_top, l.grip);
+            let frame = builder.frame(params.frame_mass);
+            let (axle, top) = (l.front_axle, l.fork_lower_top);
+            let lower = builder.segment(Part::ForkLower, params.fork_lower_mass, 0.03, axle, top);
+            let (pivot, axle) = (l.swingarm_pivot, l.rear_axle);
+            let swingarm = builder.segment(Part::Swingarm, params.swingarm_mass, 0.03, pivot, axle);
+            (fork, frame, lower, swingarm)
+        } else {
+            let fork_mass = params.fork_mass + params.fork_lower_mass;
+            let fork = builder.fork(fork_mass, l.front_axle, l.fork_top, l.grip);
+            let frame = builder.frame(params.frame_mass + params.swingarm_mass);
+            let lower = builder.alias(fork, Part::Fork);
+            let swingarm = builder.alias(frame, Part::Frame);
+            (fork, frame, lower, swingarm)
+        };
         let [m_shank, m_thigh, m_torso, m_upper_arm, m_forearm] = params.rider_masses;
         let lower_leg = builder.segment(Part::LowerLeg, m_shank, 0.055, l.ankle, l.knee);
         let upper_leg = builder.segment(Part::UpperLeg, m_thigh, 0.075, l.knee, l.hip);
@@ -55,11 +74,21 @@ impl Bike {
         // body 1 and axis +z, forward rolling is positive; with the fork as body 1 and
         // the axis pointing up, steering left is positive.
         let z = DVec3::Z;
-        let rear_axle = b.hinge(frame, rear, l.rear_axle, z);
-        b.hinge(fork, front, l.front_axle, z);
+        let rear_axle = b.hinge(swingarm, rear, l.rear_axle, z);
+        b.hinge(fork_lower, front, l.front_axle, z);
         let steer = b.hinge(fork, frame, l.steer_anchor, l.steer_axis);
         b.world
             .set_joint_limits(steer, 0, -params.steer_limit, params.steer_limit);
+        let suspension_joints = params.suspension.as_ref().map(|_| {
+            // The fork extends as the steered part rises along the steering axis relative
+            // to the lower legs; the swingarm's angle grows as its rear end drops.
+            let axis = b.placement.rotation * l.steer_axis;
+            SuspensionJoints {
+                fork_slider: b.world.add_slider(fork, Some(fork_lower), axis.to_array()),
+                swingarm_pivot: b.hinge(swingarm, frame, l.swingarm_pivot, z),
+                swingarm_reach: l.swingarm_pivot.x - l.rear_axle.x,
+            }
+        });
 
         b.ball(lower_leg, frame, l.ankle);
         let knee = b.hinge(upper_leg, lower_leg, l.knee, z);
@@ -70,16 +99,24 @@ impl Bike {
         b.world.set_joint_limits(elbow, 0, -1.0, 1.0);
         let wrist = b.ball_with_motor(lower_arm, fork, l.grip, [0.8, 0.6, 0.6]);
 
-        let rest = builder.rest.try_into().expect("nine bodies");
+        if let (Some(s), Some(joints)) = (&params.suspension, &suspension_joints) {
+            let (fork_spring, rear_spring) =
+                suspension_springs(params, s, &l, &builder.rest, joints.swingarm_reach);
+            builder.world.set_spring(joints.fork_slider, fork_spring);
+            builder.world.set_spring(joints.swingarm_pivot, rear_spring);
+        }
+        let rest = builder.rest.try_into().expect("one rest pose per part");
         let bike = Self {
             params: params.clone(),
             bodies: [
-                rear, front, fork, frame, lower_leg, upper_leg, torso, upper_arm, lower_arm,
+                rear, front, fork, frame, fork_lower, swingarm, lower_leg, upper_leg, torso,
+                upper_arm, lower_arm,
             ],
             rest,
             shapes: builder.shapes,
             steer,
             rear_axle,
+            suspension: suspension_joints,
             waist,
             knee,
             shoulder,
@@ -107,6 +144,13 @@ impl Builder<'_> {
         self.world
             .set_body_quaternion(body, to_quat(self.placement.rotation * rotation));
         self.rest.push((position, rotation));
+        body
+    }
+
+    /// A part without a body of its own, riding on `body` (the part `of`'s): it shares
+    /// that part's rest pose.
+    fn alias(&mut self, body: BodyId, of: Part) -> BodyId {
+        self.rest.push(self.rest[of as usize]);
         body
     }
 
@@ -149,11 +193,11 @@ impl Builder<'_> {
         body
     }
 
-    fn fork(&mut self, mass: f64, axle: DVec3, top: DVec3, grip: DVec3) -> BodyId {
+    fn fork(&mut self, mass: f64, bottom: DVec3, top: DVec3, grip: DVec3) -> BodyId {
         let radius = 0.035;
-        let body = self.segment(Part::Fork, mass, radius, axle, top);
+        let body = self.segment(Part::Fork, mass, radius, bottom, top);
         // The handlebar: a bar across the bike at the grips.
-        let (centre, rotation) = segment_pose(axle, top);
+        let (centre, rotation) = segment_pose(bottom, top);
         let size = DVec3::new(0.05, 0.05, 0.76);
         let offset = rotation.inverse() * (grip - centre);
         let bar_rotation = rotation.inverse();
@@ -220,6 +264,72 @@ impl Builder<'_> {
             rotation,
         });
     }
+}
+
+/// Mass (kg) of each part, in `Part::ALL` order.
+fn part_masses(params: &BikeParams) -> Vec<f64> {
+    let [shank, thigh, torso, upper_arm, forearm] = params.rider_masses;
+    Part::ALL
+        .iter()
+        .map(|part| match part {
+            Part::RearWheel => params.rear_wheel_mass,
+            Part::FrontWheel => params.front_wheel_mass,
+            Part::Fork => params.fork_mass,
+            Part::Frame => params.frame_mass,
+            Part::ForkLower => params.fork_lower_mass,
+            Part::Swingarm => params.swingarm_mass,
+            Part::LowerLeg => shank,
+            Part::UpperLeg => thigh,
+            Part::Torso => torso,
+            Part::UpperArm => upper_arm,
+            Part::LowerArm => forearm,
+        })
+        .collect()
+}
+
+/// The fork's and the swingarm's springs: rates, damping and travel from the suspension
+/// parameters, each preloaded so that it carries its end's share of bike and rider at the
+/// built pose, which is the pose at sag.
+fn suspension_springs(
+    params: &BikeParams,
+    s: &Suspension,
+    l: &Layout,
+    rest: &[(DVec3, DQuat)],
+    reach: f64,
+) -> (Spring, Spring) {
+    let masses = part_masses(params);
+    let total: f64 = masses.iter().sum();
+    let com = rest
+        .iter()
+        .zip(&masses)
+        .fold(DVec3::ZERO, |sum, ((p, _), m)| sum + *p * *m)
+        / total;
+    let (rear_load, front_load) =
+        static_wheel_loads(com, l.rear_axle.x, l.front_axle.x, total * GRAVITY);
+    // Front: what the tyre carries less the unsprung lower legs and wheel, along the tubes.
+    let front_unsprung = params.front_wheel_mass + params.fork_lower_mass;
+    let front_force = (front_load - front_unsprung * GRAVITY) * params.rake.cos();
+    let front_sprung_mass = front_load / GRAVITY - front_unsprung;
+    let fork = Spring {
+        stiffness: s.front_rate,
+        damping: s.damping(s.front_rate, front_sprung_mass),
+        free_position: front_force / s.front_rate,
+        travel: s.front_travel_range(),
+    };
+    // Rear: torques about the pivot of the tyre's load against the weights of the wheel
+    // at the axle and of the swingarm at its middle; rates at the wheel become rates
+    // about the pivot through the lever squared.
+    let rear_torque = (rear_load - params.rear_wheel_mass * GRAVITY) * reach
+        - params.swingarm_mass * GRAVITY * reach / 2.0;
+    let rear_unsprung = params.rear_wheel_mass + params.swingarm_mass / 2.0;
+    let rate = s.rear_rate * reach * reach;
+    let swingarm = Spring {
+        stiffness: rate,
+        damping: s.damping(s.rear_rate, rear_load / GRAVITY - rear_unsprung) * reach * reach,
+        free_position: rear_torque / rate,
+        travel: s.rear_travel_range(reach),
+    };
+    (fork, swingarm)
 }
 
 /// Centre and orientation (local z along a→b) of a segment between two points.

@@ -2,13 +2,16 @@
 //! controllers need: transforms, speed, lean, steering, contacts, crash.
 
 mod build;
+mod rider;
 
 use glam::{DQuat, DVec3};
 
 use crate::bike::controls::{index, Controls, ForceClass};
 use crate::bike::params::BikeParams;
-use crate::bike::rider_position::RIDER_JOINTS;
 use crate::ode::{BodyId, JointId, World};
+
+/// Number of rigid bodies of bike and rider.
+pub const PARTS: usize = 11;
 
 /// Rigid placement of the bike frame in the world: rotation then translation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -29,13 +32,18 @@ impl Placement {
     }
 }
 
-/// The nine rigid bodies, in body order.
+/// The rigid bodies, in body order; the rider's come last.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Part {
     RearWheel,
     FrontWheel,
+    /// The steered fork above the sliders, with the handlebar.
     Fork,
     Frame,
+    /// The fork's lower legs, sliding on the fork along the steering axis.
+    ForkLower,
+    /// Pivots on the frame and carries the rear wheel.
+    Swingarm,
     LowerLeg,
     UpperLeg,
     Torso,
@@ -44,11 +52,13 @@ pub enum Part {
 }
 
 impl Part {
-    pub const ALL: [Part; 9] = [
+    pub const ALL: [Part; PARTS] = [
         Part::RearWheel,
         Part::FrontWheel,
         Part::Fork,
         Part::Frame,
+        Part::ForkLower,
+        Part::Swingarm,
         Part::LowerLeg,
         Part::UpperLeg,
         Part::Torso,
@@ -67,6 +77,8 @@ impl Part {
             Part::FrontWheel => "front_wheel",
             Part::Fork => "fork",
             Part::Frame => "frame",
+            Part::ForkLower => "fork_lower",
+            Part::Swingarm => "swingarm",
             Part::LowerLeg => "lower_leg",
             Part::UpperLeg => "upper_leg",
             Part::Torso => "torso",
@@ -100,17 +112,28 @@ pub struct PartShape {
     pub rotation: DQuat,
 }
 
+/// The fork's slider (extension positive, m) and the swingarm's pivot (rad), with how far
+/// behind the pivot the rear axle is (m): the swingarm's lever.
+#[derive(Clone, Copy, Debug)]
+struct SuspensionJoints {
+    fork_slider: JointId,
+    swingarm_pivot: JointId,
+    swingarm_reach: f64,
+}
+
 /// A built bike: the handles of its bodies and joints in one world. Every world built
 /// with the same parameters gets the same handles, so one `Bike` describes them all.
 #[derive(Clone, Debug)]
 pub struct Bike {
     params: BikeParams,
-    bodies: [BodyId; 9],
+    bodies: [BodyId; PARTS],
     /// Body poses as built, in the bike frame (for reset).
-    rest: [(DVec3, DQuat); 9],
+    rest: [(DVec3, DQuat); PARTS],
     shapes: Vec<PartShape>,
     steer: JointId,
     rear_axle: JointId,
+    /// The suspension's joints; none on a rigid bike.
+    suspension: Option<SuspensionJoints>,
     waist: JointId,
     knee: JointId,
     shoulder: JointId,
@@ -173,66 +196,39 @@ impl Bike {
 
     /// Puts every body back in its built pose at `placement`, at rest.
     pub fn reset(&self, world: &mut World, placement: &Placement) {
-        for (body, (position, rotation)) in self.bodies.iter().zip(&self.rest) {
-            world.set_body_position(*body, to_array(placement.transform_point(*position)));
-            world.set_body_quaternion(*body, to_quat(placement.rotation * *rotation));
-            world.set_body_linear_velocity(*body, [0.0; 3]);
-            world.set_body_angular_velocity(*body, [0.0; 3]);
+        for part in self.own_parts() {
+            let (body, (position, rotation)) = (self.body(part), self.rest[part as usize]);
+            world.set_body_position(body, to_array(placement.transform_point(position)));
+            world.set_body_quaternion(body, to_quat(placement.rotation * rotation));
+            world.set_body_linear_velocity(body, [0.0; 3]);
+            world.set_body_angular_velocity(body, [0.0; 3]);
         }
     }
 
-    /// Angles of the rider's joint axes that have motors, in control order after the
-    /// rear wheel (waist ×3, knee, shoulder ×3, elbow, wrist ×3); 0 in the riding pose.
-    pub fn rider_joint_angles(&self, world: &World) -> [f64; RIDER_JOINTS] {
-        let mut angles = [0.0; RIDER_JOINTS];
-        for axis in 0..3 {
-            angles[axis] = world.joint_angle(self.waist, axis);
-            angles[4 + axis] = world.joint_angle(self.shoulder, axis);
-            angles[8 + axis] = world.joint_angle(self.wrist, axis);
-        }
-        angles[3] = world.joint_angle(self.knee, 0);
-        angles[7] = world.joint_angle(self.elbow, 0);
-        angles
+    /// How far each end has compressed from full extension (m; the rear measured at the
+    /// wheel): front, rear. Sag at rest with the rider aboard; the travel when bottomed.
+    /// Zero on a rigid bike.
+    pub fn suspension_compression(&self, world: &World) -> (f64, f64) {
+        let (Some(s), Some(joints)) = (&self.params.suspension, &self.suspension) else {
+            return (0.0, 0.0);
+        };
+        let reach = joints.swingarm_reach;
+        let (_, front_top) = s.front_travel_range();
+        let (_, rear_top) = s.rear_travel_range(reach);
+        let front = front_top - world.joint_position(joints.fork_slider);
+        let rear = (rear_top - world.joint_position(joints.swingarm_pivot)) * reach;
+        (front, rear)
     }
 
-    /// Velocity targets that bring every rider joint back to the riding pose: a velocity
-    /// servo (`gain` 1/s) on each joint angle, within the control bounds. The pose prior
-    /// of the optimizer and the arcade controller's pose hold both start from this.
-    pub fn pose_hold(&self, world: &World, gain: f64, controls: &mut Controls) {
-        self.pose_hold_at(world, gain, &[0.0; RIDER_JOINTS], controls);
-    }
-
-    /// The same servo towards the riding pose offset by `pose` (rad per rider joint, as
-    /// `RiderPosition::pose` gives it).
-    pub fn pose_hold_at(
-        &self,
-        world: &World,
-        gain: f64,
-        pose: &[f64; RIDER_JOINTS],
-        controls: &mut Controls,
-    ) {
-        for (i, angle) in self.rider_joint_angles(world).into_iter().enumerate() {
-            controls.set(index::WAIST + i, -gain * (angle - pose[i]));
-        }
-    }
-
-    /// Where the rider's centre of mass is relative to where the riding pose has it, in
-    /// the frame's axes (x forward, y up, z right; m): the weight shift the player asks
-    /// for with `RiderPosition`.
-    pub fn rider_offset(&self, world: &World) -> DVec3 {
-        let rider = &Part::ALL[Part::LowerLeg as usize..];
-        let (mut now, mut rest, mut mass) = (DVec3::ZERO, DVec3::ZERO, 0.0);
-        for &part in rider {
-            let m = world.body_mass(self.body(part));
-            now += from_array(world.body_position(self.body(part))) * m;
-            rest += self.rest[part as usize].0 * m;
-            mass += m;
-        }
-        let frame = self.body(Part::Frame);
-        let (frame_rest, frame_rest_rotation) = self.rest[Part::Frame as usize];
-        let local = self.frame_rotation(world).inverse()
-            * (now / mass - from_array(world.body_position(frame)));
-        local - frame_rest_rotation.inverse() * (rest / mass - frame_rest)
+    /// The parts with a body of their own, in body order (on a rigid bike the fork's
+    /// lower legs and the swingarm ride on the fork and the frame).
+    pub fn own_parts(&self) -> impl Iterator<Item = Part> + '_ {
+        Part::ALL.into_iter().filter(move |&part| {
+            let body = self.body(part);
+            Part::ALL[..part as usize]
+                .iter()
+                .all(|&earlier| self.body(earlier) != body)
+        })
     }
 
     /// Steering angle (rad, positive left) and its rate.
@@ -260,13 +256,13 @@ impl Bike {
 
     /// The mass-weighted mean of a per-body vector.
     fn mass_weighted(&self, world: &World, of: impl Fn(BodyId) -> [f64; 3]) -> DVec3 {
-        let (sum, mass) = self
-            .bodies
-            .iter()
-            .fold((DVec3::ZERO, 0.0), |(sum, mass), &b| {
+        let (sum, mass) = self.own_parts().map(|part| self.body(part)).fold(
+            (DVec3::ZERO, 0.0),
+            |(sum, mass), b| {
                 let m = world.body_mass(b);
                 (sum + from_array(of(b)) * m, mass + m)
-            });
+            },
+        );
         sum / mass
     }
 

@@ -1,0 +1,65 @@
+//! The rider's side of a built bike: joint angles, the pose servo every controller starts
+//! from, and where the rider's weight is.
+
+use glam::DVec3;
+
+use super::{from_array, Bike, Part};
+use crate::bike::controls::{index, Controls};
+use crate::bike::rider_position::RIDER_JOINTS;
+use crate::ode::World;
+
+impl Bike {
+    /// Angles of the rider's joint axes that have motors, in control order after the
+    /// rear wheel (waist ×3, knee, shoulder ×3, elbow, wrist ×3); 0 in the riding pose.
+    pub fn rider_joint_angles(&self, world: &World) -> [f64; RIDER_JOINTS] {
+        let mut angles = [0.0; RIDER_JOINTS];
+        for axis in 0..3 {
+            angles[axis] = world.joint_angle(self.waist, axis);
+            angles[4 + axis] = world.joint_angle(self.shoulder, axis);
+            angles[8 + axis] = world.joint_angle(self.wrist, axis);
+        }
+        angles[3] = world.joint_angle(self.knee, 0);
+        angles[7] = world.joint_angle(self.elbow, 0);
+        angles
+    }
+
+    /// Velocity targets that bring every rider joint back to the riding pose: a velocity
+    /// servo (`gain` 1/s) on each joint angle, within the control bounds. The pose prior
+    /// of the optimizer and the arcade controller's pose hold both start from this.
+    pub fn pose_hold(&self, world: &World, gain: f64, controls: &mut Controls) {
+        self.pose_hold_at(world, gain, &[0.0; RIDER_JOINTS], controls);
+    }
+
+    /// The same servo towards the riding pose offset by `pose` (rad per rider joint, as
+    /// `RiderPosition::pose` gives it).
+    pub fn pose_hold_at(
+        &self,
+        world: &World,
+        gain: f64,
+        pose: &[f64; RIDER_JOINTS],
+        controls: &mut Controls,
+    ) {
+        for (i, angle) in self.rider_joint_angles(world).into_iter().enumerate() {
+            controls.set(index::WAIST + i, -gain * (angle - pose[i]));
+        }
+    }
+
+    /// Where the rider's centre of mass is relative to where the riding pose has it, in
+    /// the frame's axes (x forward, y up, z right; m): the weight shift the player asks
+    /// for with `RiderPosition`.
+    pub fn rider_offset(&self, world: &World) -> DVec3 {
+        let rider = &Part::ALL[Part::LowerLeg as usize..];
+        let (mut now, mut rest, mut mass) = (DVec3::ZERO, DVec3::ZERO, 0.0);
+        for &part in rider {
+            let m = world.body_mass(self.body(part));
+            now += from_array(world.body_position(self.body(part))) * m;
+            rest += self.rest[part as usize].0 * m;
+            mass += m;
+        }
+        let frame = self.body(Part::Frame);
+        let (frame_rest, frame_rest_rotation) = self.rest[Part::Frame as usize];
+        let local = self.frame_rotation(world).inverse()
+            * (now / mass - from_array(world.body_position(frame)));
+        local - frame_rest_rotation.inverse() * (rest / mass - frame_rest)
+    }
+}
