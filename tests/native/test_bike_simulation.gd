@@ -181,7 +181,7 @@ func test_the_controller_is_a_name_from_the_one_list() -> void:
 	bike.free()
 
 
-func test_the_physics_is_a_name_from_the_one_list_and_the_exact_model_rides() -> void:
+func test_the_physics_is_a_name_from_the_one_list_and_the_exact_model_rides_on_springs() -> void:
 	assert_eq(BikeSimulation.physics_names(), PackedStringArray(["classic", "exact"]))
 	var probe := BikeSimulation.new()
 	assert_eq(probe.physics, "exact", "the game's physics by default")
@@ -197,22 +197,9 @@ func test_the_physics_is_a_name_from_the_one_list_and_the_exact_model_rides() ->
 		_bike.advance(150)
 		assert_false(_bike.is_crashed(), "%s: arcade rides 5 s" % physics)
 		assert_gt(_bike.get_speed(), 3.0, "%s: and gathers speed" % physics)
-		_bike.queue_free()
-
-
-func test_the_exact_bike_rides_on_its_springs_and_the_classic_one_is_rigid() -> void:
-	for physics: String in BikeSimulation.physics_names():
-		_bike = BikeSimulation.new()
-		_bike.physics = physics
-		_bike.controller = "arcade"
-		_bike.transform = Transform3D(Basis(), Vector3(0, 0.02, 0))
-		_level.add_child(_bike)
-		await wait_physics_frames(1)
-		_bike.set_drive(1.0, 0.0)
-		_bike.advance(90)
 		var sag := _bike.get_suspension_compression()
 		if physics == "exact":
-			assert_almost_eq(sag, Vector2(0.039, 0.039), Vector2(0.003, 0.003), "rider sag")
+			assert_almost_eq(sag, Vector2(0.039, 0.039), Vector2(0.004, 0.004), "rider sag")
 		else:
 			assert_eq(sag, Vector2.ZERO, "classic: the thesis's rigid bike")
 		_bike.queue_free()
@@ -237,14 +224,16 @@ func test_the_drawn_fork_and_shock_compress_with_the_simulated_ones() -> void:
 		await wait_physics_frames(1)
 		deepest = maxf(deepest, bike.get_suspension_compression().x)
 	assert_gt(deepest, 0.06, "the landing compressed the fork past its sag")
-	# Riding on: the drawing has compressed as much as the simulated fork.
+	# Riding on: the drawing has compressed as much as the simulated fork, give or take
+	# the fork's movement within one step (the drawing is interpolated between the last
+	# two steps, the reading is the last step's).
 	assert_false(bike.is_crashed())
 	var settled := bike.get_suspension_compression()
 	assert_gt(settled.x, 0.01, "the fork carries the bike")
 	assert_almost_eq(
 		fork_in_the_air - view.drawn_fork_length(),
 		settled.x - in_the_air.x,
-		0.003,
+		0.006,
 		"the drawn fork shortened with the simulated one"
 	)
 	assert_lt(view.drawn_shock_length(), shock_in_the_air - 0.005, "the shock's coil shortened")
