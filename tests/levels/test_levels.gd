@@ -45,6 +45,28 @@ func test_the_bike_rests_on_its_wheels_at_every_spawn_point() -> void:
 		level.free()
 
 
+func test_lap_gates_face_the_way_the_lap_is_ridden() -> void:
+	# A gate counts crossings towards its −z only: turned the other way, no lap could ever
+	# count (the track's two bend gates once were, found by the bot's first lap).
+	var gates := 0
+	for key: String in Levels.ALL:
+		var level := _load(key)
+		add_child(level)
+		var lap := level.get_node_or_null("Lap") as Path3D
+		for gate: LapGate in level.find_children("*", "LapGate", true, false):
+			assert_not_null(lap, "%s has gates but no Lap path" % key)
+			var local := lap.to_local(gate.global_position)
+			var along := lap.curve.get_closest_offset(local)
+			var here := lap.curve.sample_baked(along, true)
+			var ahead := lap.curve.sample_baked(along + 1.0, true)
+			var direction := (lap.global_basis * (ahead - here)).normalized()
+			var forward := -gate.global_basis.z.normalized()
+			assert_gt(direction.dot(forward), 0.9, "%s: %s faces along the lap" % [key, gate.name])
+			gates += 1
+		level.free()
+	assert_gt(gates, 3, "the track's gates were checked")
+
+
 func test_a_level_warns_about_shapes_the_simulation_cannot_use() -> void:
 	var level := _load("skate_park")
 	var body := StaticBody3D.new()

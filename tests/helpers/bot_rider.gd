@@ -1,0 +1,88 @@
+class_name BotRider
+extends Node
+## A scripted rider for headless rides through the player's own input: every physics tick
+## it presses the throttle, brake and turn actions (with analog strengths, as a gamepad
+## would) to follow a Path3D at a chosen speed: it asks for the path's curvature a little
+## ahead and corrects its heading and sideways errors. It never touches the bike's state.
+
+## Turn command per unit of curvature (m): the stick asks for curvatures up to about a
+## third of a metre⁻¹ (a 3 m circle), so 3 m turns a curvature into a stick deflection.
+const STICK_PER_CURVATURE := 3.0
+## Curvature asked per radian of heading error (1/m) and per metre of sideways error
+## (1/m²): errors fade over a second or two at riding speeds.
+const HEADING_GAIN := 0.25
+const SIDE_GAIN := 0.04
+const TURN_ACTIONS: Array[StringName] = [&"steer_left", &"steer_right"]
+const DRIVE_ACTIONS: Array[StringName] = [&"brake", &"throttle"]
+
+## The bike to ride and the path to follow.
+var bike: BikeSimulation
+var path: Path3D
+## Speed to hold (km/h); a Callable(offset_m) -> km/h may vary it along the path.
+var speed_kmh := 25.0
+var speed_along: Callable
+## How far ahead (s of riding) the path's curvature is read to turn into bends in time.
+var preview := 0.5
+## Distance along the path (m) of the bike's nearest point, as of the last tick.
+var offset := 0.0
+
+
+func _physics_process(_delta: float) -> void:
+	if bike == null or path == null or not bike.is_running():
+		return
+	var curve := path.curve
+	var centre := bike.get_center_of_mass()
+	offset = curve.get_closest_offset(path.to_local(centre))
+	var length := curve.get_baked_length()
+	var speed := bike.get_speed()
+	var heading := bike.get_body_transform(BikeSimulation.FRAME).basis.x
+	var here := path.to_global(curve.sample_baked(offset, true))
+	var tangent := path.to_global(curve.sample_baked(fposmod(offset + 1.0, length), true)) - here
+	heading.y = 0.0
+	tangent.y = 0.0
+	var to_path := here - centre
+	to_path.y = 0.0
+	# The path's own curvature a little ahead (the bike needs time to lean into a bend),
+	# plus corrections of the heading error and the sideways error (both positive when
+	# the path lies to the left).
+	var heading_error := heading.signed_angle_to(tangent, Vector3.UP)
+	var side_error := signf(heading.cross(to_path).y) * to_path.length()
+	var bend := _path_curvature(fposmod(offset + speed * preview, length))
+	var curvature := bend + HEADING_GAIN * heading_error + SIDE_GAIN * side_error
+	_press_axis(TURN_ACTIONS, clampf(-curvature * STICK_PER_CURVATURE, -1.0, 1.0))
+	var kmh: float = speed_along.call(offset) if speed_along.is_valid() else speed_kmh
+	var wanted := kmh / 3.6
+	var error := wanted - speed
+	# Nothing slows a rolling bike but the brake (no drag, no rolling resistance), so the
+	# triggers only correct the speed error.
+	_press_axis(DRIVE_ACTIONS, clampf(0.6 * error, -1.0, 1.0) if wanted > 0.0 else -1.0)
+
+
+## Signed curvature of the path at `at` (m along it; 1/m, positive turning left): the turn
+## of its direction over two metres.
+func _path_curvature(at: float) -> float:
+	var curve := path.curve
+	var length := curve.get_baked_length()
+	var before := curve.sample_baked(fposmod(at - 1.0, length), true)
+	var here := curve.sample_baked(fposmod(at, length), true)
+	var after := curve.sample_baked(fposmod(at + 1.0, length), true)
+	var turned := (here - before).signed_angle_to(after - here, Vector3.UP)
+	return turned / 1.0
+
+
+## Lets go of everything.
+func release() -> void:
+	for action: StringName in TURN_ACTIONS + DRIVE_ACTIONS:
+		Input.action_release(action)
+
+
+## Presses `actions[1]` for positive `value` and `actions[0]` for negative, with its size as
+## the strength, releasing the other (an axis as a stick or a pair of triggers gives it).
+static func _press_axis(actions: Array[StringName], value: float) -> void:
+	var pressed := actions[1] if value > 0.0 else actions[0]
+	var released := actions[0] if value > 0.0 else actions[1]
+	Input.action_release(released)
+	if absf(value) > 0.0:
+		Input.action_press(pressed, absf(value))
+	else:
+		Input.action_release(pressed)
