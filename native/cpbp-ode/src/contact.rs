@@ -3,6 +3,7 @@
 
 use std::os::raw::c_void;
 
+use crate::tyre::Tyre;
 use crate::{ffi, Vec3};
 
 /// Most contact points generated for one pair of geoms in one step.
@@ -38,55 +39,6 @@ pub(crate) struct CollideContext<'a> {
     pub(crate) tyres: &'a [Tyre],
 }
 
-/// A torus tyre on a sphere geom (see `World::add_tyre`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Tyre {
-    pub(crate) radius: f64,
-    pub(crate) crown: f64,
-}
-
-impl Tyre {
-    /// Moves a contact found for the bounding sphere to where the torus touches: `centre`
-    /// and `axle` of the wheel, `normal` pointing from the ground towards the wheel, and the
-    /// sphere's penetration `depth`. Returns the torus contact's position and depth, or
-    /// `None` when the torus does not reach the ground there.
-    fn contact(
-        &self,
-        centre: [f64; 3],
-        axle: [f64; 3],
-        normal: [f64; 3],
-        depth: f64,
-    ) -> Option<([f64; 3], f64)> {
-        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let add =
-            |a: [f64; 3], b: [f64; 3], k: f64| [a[0] + b[0] * k, a[1] + b[1] * k, a[2] + b[2] * k];
-        // The ground plane through the sphere's deepest point, raised by the penetration.
-        let surface = add(add(centre, normal, -self.radius), normal, depth);
-        // Towards the ground within the wheel's plane.
-        let down = add(
-            [-normal[0], -normal[1], -normal[2]],
-            axle,
-            dot(normal, axle),
-        );
-        let length = dot(down, down).sqrt();
-        let tube = if length < 1e-9 {
-            centre // lying flat: the tube circle is level, use the centre
-        } else {
-            add(centre, down, (self.radius - self.crown) / length)
-        };
-        let height = dot(
-            [
-                tube[0] - surface[0],
-                tube[1] - surface[1],
-                tube[2] - surface[2],
-            ],
-            normal,
-        );
-        let torus_depth = self.crown - height;
-        (torus_depth > 0.0).then(|| (add(tube, normal, -self.crown), torus_depth))
-    }
-}
-
 /// Reads a vector ODE handed out as a pointer to at least three reals.
 ///
 /// # Safety
@@ -96,8 +48,9 @@ pub(crate) unsafe fn read_vec3(p: *const f64) -> Vec3 {
     unsafe { [*p, *p.add(1), *p.add(2)] }
 }
 
-/// If either geom is a tyre, moves the contact to where its torus touches. Returns false
-/// when the torus does not touch there (the contact is dropped).
+/// If either geom is a tyre, moves the contact to where its torus touches. Returns `None`
+/// when the torus does not touch there (the contact is dropped), else whether a tyre
+/// shaped it.
 ///
 /// # Safety
 /// `o1` and `o2` must be live geoms whose data is 0 or a tyre index + 1 into `tyres`.
@@ -106,7 +59,7 @@ unsafe fn shape_tyre(
     o1: ffi::dGeomID,
     o2: ffi::dGeomID,
     contact: &mut ffi::dContactGeom,
-) -> bool {
+) -> Option<bool> {
     // SAFETY: guaranteed by the caller; ODE returns pointers to 3 (position) and 12
     // (rotation, row-major 3×4) reals.
     unsafe {
@@ -123,17 +76,28 @@ unsafe fn shape_tyre(
             // ODE's normal points into o1; we want it from the ground towards the wheel.
             let n = contact.normal;
             let normal = [n[0] * sign, n[1] * sign, n[2] * sign];
-            return match tyre.contact(centre, axle, normal, contact.depth) {
-                Some((position, depth)) => {
-                    contact.pos = [position[0], position[1], position[2], 0.0];
-                    contact.depth = depth;
-                    true
+            let position = [contact.pos[0], contact.pos[1], contact.pos[2]];
+            return match tyre.contact(centre, axle, normal, contact.depth, position) {
+                Some(touch) => {
+                    let p = touch.position;
+                    let n = touch.normal;
+                    contact.pos = [p[0], p[1], p[2], 0.0];
+                    contact.normal = [n[0] * sign, n[1] * sign, n[2] * sign, 0.0];
+                    contact.depth = touch.depth;
+                    Some(true)
                 }
-                None => false,
+                None => None,
             };
         }
-        true
+        Some(false)
     }
+}
+
+/// Whether `contact` repeats one already made for this pair: at an edge of a mesh ODE
+/// reports one contact per face meeting there, which a tyre turns into the same point.
+fn repeats(made: &[ffi::dContactGeom], contact: &ffi::dContactGeom) -> bool {
+    made.iter()
+        .any(|c| c.pos == contact.pos && c.normal == contact.normal && c.depth == contact.depth)
 }
 
 /// ODE's collision callback for `dSpaceCollide`: creates the contact joints of one pair.
@@ -168,12 +132,13 @@ pub(crate) unsafe extern "C" fn near_callback(
             &mut contacts[0].geom,
             std::mem::size_of::<ffi::dContact>() as i32,
         );
-        let mut created = 0;
+        let mut made: Vec<ffi::dContactGeom> = Vec::new();
         for contact in contacts.iter_mut().take(count.max(0) as usize) {
-            if !shape_tyre(context.tyres, o1, o2, &mut contact.geom) {
-                continue;
+            match shape_tyre(context.tyres, o1, o2, &mut contact.geom) {
+                None => continue,
+                Some(true) if repeats(&made, &contact.geom) => continue,
+                Some(_) => made.push(contact.geom),
             }
-            created += 1;
             contact.surface.mode =
                 (ffi::dContactSoftERP | ffi::dContactSoftCFM | ffi::dContactApprox1) as i32;
             contact.surface.mu = context.surface.mu;
@@ -182,65 +147,9 @@ pub(crate) unsafe extern "C" fn near_callback(
             let joint = ffi::dJointCreateContact(context.world, context.contacts, contact);
             ffi::dJointAttach(joint, b1, b2);
         }
-        if created > 0 && (b1.is_null() || b2.is_null()) {
+        if !made.is_empty() && (b1.is_null() || b2.is_null()) {
             let body = if b1.is_null() { b2 } else { b1 };
             context.touching_static[ffi::dBodyGetData(body) as usize] = true;
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn an_upright_tyre_touches_like_a_sphere() {
-        let tyre = Tyre {
-            radius: 0.3,
-            crown: 0.06,
-        };
-        let (pos, depth) = tyre
-            .contact([0.0, 0.29, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0], 0.01)
-            .unwrap();
-        assert!((depth - 0.01).abs() < 1e-12);
-        assert!((pos[1] - (-0.01)).abs() < 1e-12 && pos[2].abs() < 1e-12);
-    }
-
-    #[test]
-    fn a_leaning_tyre_touches_in_its_own_plane() {
-        // Leaning 30° to +z (top towards +z): the contact stays in the wheel's plane, so it
-        // lies (r − ρ) sin 30° to the −z side of the centre, which leans out beyond it; a
-        // sphere would touch right under the centre.
-        let (r, crown, lean) = (0.3, 0.06, 30f64.to_radians());
-        let tyre = Tyre { radius: r, crown };
-        let axle = [0.0, -lean.sin(), lean.cos()];
-        let resting = (r - crown) * lean.cos() + crown;
-        let centre = [0.0, resting - 0.002, 0.0];
-        let sphere_depth = r - centre[1];
-        let (pos, depth) = tyre
-            .contact(centre, axle, [0.0, 1.0, 0.0], sphere_depth)
-            .unwrap();
-        assert!((depth - 0.002).abs() < 1e-12, "depth {depth}");
-        assert!(
-            (pos[2] + (r - crown) * lean.sin()).abs() < 1e-12,
-            "contact at z = {}",
-            pos[2]
-        );
-    }
-
-    #[test]
-    fn a_tyre_lying_flat_rests_on_its_crown() {
-        let tyre = Tyre {
-            radius: 0.3,
-            crown: 0.06,
-        };
-        let (_, depth) = tyre
-            .contact([0.0, 0.05, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0], 0.25)
-            .unwrap();
-        assert!((depth - 0.01).abs() < 1e-12);
-        assert_eq!(
-            tyre.contact([0.0, 0.07, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0], 0.23),
-            None
-        );
     }
 }

@@ -12,6 +12,7 @@ mod runtime;
 mod shared_data;
 mod springs;
 mod state;
+mod tyre;
 mod world;
 
 pub use contact::SurfaceParams;

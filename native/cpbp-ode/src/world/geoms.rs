@@ -4,8 +4,8 @@ use std::os::raw::c_void;
 use std::sync::Arc;
 
 use super::{GeomId, World};
-use crate::contact::Tyre;
 use crate::shared_data::{HeightFieldData, TriMeshData};
+use crate::tyre::Tyre;
 use crate::{ffi, BodyId, Quat, Vec3};
 
 /// Collision categories: bodies collide with static terrain only, never with each other

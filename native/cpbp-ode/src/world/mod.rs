@@ -9,13 +9,14 @@ use std::os::raw::c_void;
 use std::ptr;
 use std::sync::Arc;
 
-use crate::contact::{near_callback, read_vec3, CollideContext, SurfaceParams, Tyre};
+use crate::contact::{near_callback, read_vec3, CollideContext, SurfaceParams};
 use crate::ffi;
 use crate::joints::JointKind;
 use crate::mass::Mass;
 use crate::runtime::ensure_thread_data;
 use crate::shared_data::{HeightFieldData, TriMeshData};
 use crate::springs::Spring;
+use crate::tyre::Tyre;
 use crate::{BodyState, Quat, StateMismatch, Vec3, WorldState};
 
 /// Index of a body inside its [`World`].
