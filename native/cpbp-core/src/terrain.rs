@@ -232,7 +232,12 @@ fn mesh(corners: Vec<DVec3>) -> Result<ReadyShape, String> {
     TriMeshData::new(vertices, triangles).map(|d| ReadyShape::Mesh(Arc::new(d)))
 }
 
-/// The hull's faces as a counter-clockwise triangle list.
+/// The hull's faces as a counter-clockwise triangle list, the same in every run. The hull
+/// library finds the faces in an order, and splits a flat face (a ramp's quad) along a
+/// diagonal, that vary from run to run (its maps are randomly seeded), and where a wheel
+/// meets which triangle decides its contacts: rides on the levels did not repeat. So the
+/// triangles are regrouped into the hull's flat faces, each triangulated as a fan from
+/// its smallest vertex, in the order of their smallest vertices.
 fn convex_hull_triangles(points: &[DVec3]) -> Result<Vec<DVec3>, String> {
     if points.len() < 4 || points.iter().any(|p| !p.is_finite()) {
         return Err(format!(
@@ -245,15 +250,98 @@ fn convex_hull_triangles(points: &[DVec3]) -> Result<Vec<DVec3>, String> {
         .map_err(|e| format!("no convex hull for these points ({e:?}); are they flat?"))?;
     let (vertices, indices) = hull.vertices_indices();
     let centre = points.iter().copied().sum::<DVec3>() / points.len() as f64;
-    let mut triangles = Vec::with_capacity(indices.len());
+    let mut faces: Vec<(DVec3, Vec<DVec3>)> = Vec::new();
     for face in indices.chunks_exact(3) {
-        let [a, b, c] = [face[0], face[1], face[2]].map(|i| DVec3::from_slice(&vertices[i]));
-        // Orient every face outwards, whatever order the hull library gives.
-        if (b - a).cross(c - a).dot(a - centre) >= 0.0 {
-            triangles.extend([a, b, c]);
-        } else {
-            triangles.extend([a, c, b]);
+        let corners = [face[0], face[1], face[2]].map(|i| DVec3::from_slice(&vertices[i]));
+        let normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
+        if normal.length_squared() < 1e-24 {
+            continue;
+        }
+        // Outwards, whatever order the hull library gives.
+        let normal = normal.normalize() * (corners[0] - centre).dot(normal).signum();
+        let offset = normal.dot(corners[0]);
+        let same_plane = |(n, v): &&mut (DVec3, Vec<DVec3>)| {
+            n.dot(normal) > 1.0 - 1e-9 && (n.dot(v[0]) - offset).abs() < 1e-9
+        };
+        match faces.iter_mut().find(same_plane) {
+            Some((_, face)) => face.extend(corners),
+            None => faces.push((normal, corners.to_vec())),
         }
     }
-    Ok(triangles)
+    let mut polygons: Vec<Vec<DVec3>> = faces
+        .into_iter()
+        .map(|(normal, corners)| counter_clockwise(corners, normal))
+        .collect();
+    polygons.sort_by(|a, b| lexical(a[0], b[0]).then(lexical(a[1], b[1])));
+    Ok(polygons
+        .iter()
+        .flat_map(|p| (1..p.len() - 1).flat_map(move |i| [p[0], p[i], p[i + 1]]))
+        .collect())
+}
+
+/// A flat face's distinct corners, counter-clockwise seen along `normal` from outside,
+/// starting at the smallest.
+fn counter_clockwise(mut corners: Vec<DVec3>, normal: DVec3) -> Vec<DVec3> {
+    corners.sort_by(|a, b| lexical(*a, *b));
+    corners.dedup();
+    let middle = corners.iter().copied().sum::<DVec3>() / corners.len() as f64;
+    let start = corners[0] - middle;
+    let angle = |p: &DVec3| {
+        let d = *p - middle;
+        let a = start.cross(d).dot(normal).atan2(start.dot(d));
+        if a < 0.0 {
+            a + std::f64::consts::TAU
+        } else {
+            a
+        }
+    };
+    let first = corners[0];
+    corners.sort_by(|a, b| {
+        if *a == first {
+            std::cmp::Ordering::Less
+        } else if *b == first {
+            std::cmp::Ordering::Greater
+        } else {
+            angle(a).total_cmp(&angle(b))
+        }
+    });
+    corners
+}
+
+/// Points ordered by x, then y, then z.
+fn lexical(a: DVec3, b: DVec3) -> std::cmp::Ordering {
+    a.x.total_cmp(&b.x)
+        .then(a.y.total_cmp(&b.y))
+        .then(a.z.total_cmp(&b.z))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_hull_comes_out_the_same_every_time() {
+        // A kicker's prism: quads on its slopes, top, bottom and back, which the hull
+        // library splits along either diagonal, in a random order, run after run.
+        let profile = [(0.0, 0.0), (-3.0, 0.45), (-4.0, 0.45), (-7.0, 0.0)];
+        let mut points: Vec<DVec3> = profile
+            .iter()
+            .flat_map(|&(z, y)| [DVec3::new(-2.5, y, z), DVec3::new(2.5, y, z)])
+            .collect();
+        let first = convex_hull_triangles(&points).unwrap();
+        for turn in 0..12 {
+            let n = points.len();
+            points.rotate_left(turn % n);
+            assert_eq!(convex_hull_triangles(&points).unwrap(), first, "turn {turn}");
+        }
+        // Every face is there: the triangles' areas add up to the prism's surface.
+        let area: f64 = first
+            .chunks_exact(3)
+            .map(|t| (t[1] - t[0]).cross(t[2] - t[0]).length() / 2.0)
+            .sum();
+        let slope = (3.0f64.powi(2) + 0.45f64.powi(2)).sqrt();
+        let side = 0.45 * (1.0 + 7.0) / 2.0; // a trapezoid: top 1 m, bottom 7 m
+        let expected = 5.0 * (2.0 * slope + 1.0 + 7.0) + 2.0 * side;
+        assert!((area - expected).abs() < 1e-9, "{area} vs {expected}");
+    }
 }
