@@ -58,6 +58,20 @@ pub struct TerrainPiece {
     pub placement: Placement,
 }
 
+impl TerrainPiece {
+    /// Endless flat ground: the plane y = 0.
+    pub fn flat_ground() -> Self {
+        Self {
+            source: "flat ground".into(),
+            shape: TerrainShape::Plane {
+                normal: DVec3::Y,
+                distance: 0.0,
+            },
+            placement: Placement::IDENTITY,
+        }
+    }
+}
+
 /// A level's shapes, checked and ready to go into any number of worlds.
 pub struct Terrain {
     pieces: Vec<ReadyPiece>,
@@ -95,15 +109,7 @@ impl Terrain {
 
     /// Endless flat ground: the plane y = 0 (benchmarks, profiles and tests).
     pub fn flat() -> Self {
-        let plane = TerrainPiece {
-            source: "flat ground".into(),
-            shape: TerrainShape::Plane {
-                normal: DVec3::Y,
-                distance: 0.0,
-            },
-            placement: Placement::IDENTITY,
-        };
-        Self::new(vec![plane]).expect("a horizontal plane is valid terrain")
+        Self::new(vec![TerrainPiece::flat_ground()]).expect("a horizontal plane is valid terrain")
     }
 
     pub fn len(&self) -> usize {
@@ -332,7 +338,11 @@ mod tests {
         for turn in 0..12 {
             let n = points.len();
             points.rotate_left(turn % n);
-            assert_eq!(convex_hull_triangles(&points).unwrap(), first, "turn {turn}");
+            assert_eq!(
+                convex_hull_triangles(&points).unwrap(),
+                first,
+                "turn {turn}"
+            );
         }
         // Every face is there: the triangles' areas add up to the prism's surface.
         let area: f64 = first

@@ -21,14 +21,7 @@ fn roll_into_a_kerb(speed: f64, tyre: bool) -> [f64; 3] {
         shape: TerrainShape::Convex { points },
         placement: Placement::IDENTITY,
     };
-    let ground = TerrainPiece {
-        source: "ground".into(),
-        shape: TerrainShape::Plane {
-            normal: DVec3::Y,
-            distance: 0.0,
-        },
-        placement: Placement::IDENTITY,
-    };
+    let ground = TerrainPiece::flat_ground();
     let wheel = world.add_body(Mass::sphere(10.0, 0.3), [0.0, 0.3, 0.0]);
     if tyre {
         world.add_tyre(0.3, 0.06, wheel);

@@ -56,14 +56,7 @@ fn drop_off(bike: BikeParams) -> Simulation {
             rotation: DQuat::IDENTITY,
         },
     };
-    let ground = TerrainPiece {
-        source: "ground".into(),
-        shape: TerrainShape::Plane {
-            normal: DVec3::Y,
-            distance: 0.0,
-        },
-        placement: Placement::IDENTITY,
-    };
+    let ground = TerrainPiece::flat_ground();
     let terrain = Terrain::new(vec![deck, ground]).expect("valid terrain");
     let spawn = Placement {
         position: DVec3::new(0.0, 0.82, 0.0),
