@@ -5,9 +5,6 @@ extends Node
 ## would) to follow a Path3D at a chosen speed: it asks for the path's curvature a little
 ## ahead and corrects its heading and sideways errors. It never touches the bike's state.
 
-## Turn command per unit of curvature (m): the stick asks for curvatures up to about a
-## third of a metre⁻¹ (a 3 m circle), so 3 m turns a curvature into a stick deflection.
-const STICK_PER_CURVATURE := 3.0
 ## Curvature asked per radian of heading error (1/m) and per metre of sideways error
 ## (1/m²): errors fade over a second or two at riding speeds.
 const HEADING_GAIN := 0.25
@@ -49,7 +46,8 @@ func _physics_process(_delta: float) -> void:
 	var side_error := signf(heading.cross(to_path).y) * to_path.length()
 	var bend := _path_curvature(fposmod(offset + speed * preview, length))
 	var curvature := bend + HEADING_GAIN * heading_error + SIDE_GAIN * side_error
-	_press_axis(TURN_ACTIONS, clampf(-curvature * STICK_PER_CURVATURE, -1.0, 1.0))
+	var stick := -curvature / BikeSimulation.max_turn_curvature()
+	_press_axis(TURN_ACTIONS, clampf(stick, -1.0, 1.0))
 	var kmh: float = speed_along.call(offset) if speed_along.is_valid() else speed_kmh
 	var wanted := kmh / 3.6
 	var error := wanted - speed

@@ -1,7 +1,9 @@
-//! `BikeSimulation`'s rider position: where the player asks for the rider's weight (the
-//! right stick) and where it is, in the same units, for the controllers and the HUD.
+//! `BikeSimulation`'s rider inputs beyond the drive: where the player asks for the rider's
+//! weight (the right stick) and where it is, for the controllers and the HUD, and how
+//! tight a turn the turn stick asks for.
 
 use cpbp_core::bike::RiderPosition;
+use cpbp_core::control::TurnIntent;
 use godot::prelude::*;
 
 use crate::bike_simulation::BikeSimulation;
@@ -21,6 +23,14 @@ impl BikeSimulation {
         }
         self.intent.rider = position;
         self.apply_intent();
+    }
+
+    /// Curvature (1/m) of the tightest circle the turn command asks for at full stick:
+    /// a turn of ±1 asks for this much, positive to the right (scripted riders turn a
+    /// path's curvature into a stick deflection with it).
+    #[func]
+    fn max_turn_curvature() -> f64 {
+        TurnIntent::default().max_curvature
     }
 
     /// The rider position asked for, as `set_rider_position` took it: x to the right, y
