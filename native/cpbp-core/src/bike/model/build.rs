@@ -106,17 +106,23 @@ impl Bike {
             builder.world.set_spring(joints.swingarm_pivot, rear_spring);
         }
         let rest = builder.rest.try_into().expect("one rest pose per part");
+        let bodies = [
+            rear, front, fork, frame, fork_lower, swingarm, lower_leg, upper_leg, torso, upper_arm,
+            lower_arm,
+        ];
+        let own_parts = Part::ALL
+            .into_iter()
+            .filter(|&part| !bodies[..part as usize].contains(&bodies[part as usize]))
+            .collect();
         let bike = Self {
             params: params.clone(),
-            bodies: [
-                rear, front, fork, frame, fork_lower, swingarm, lower_leg, upper_leg, torso,
-                upper_arm, lower_arm,
-            ],
+            bodies,
             rest,
             shapes: builder.shapes,
             steer,
             rear_axle,
             suspension: suspension_joints,
+            own_parts,
             waist,
             knee,
             shoulder,

@@ -134,6 +134,9 @@ pub struct Bike {
     rear_axle: JointId,
     /// The suspension's joints; none on a rigid bike.
     suspension: Option<SuspensionJoints>,
+    /// The parts with a body of their own, found once at build: the centre of mass, which
+    /// every rollout step's cost reads, sums over them.
+    own_parts: Vec<Part>,
     waist: JointId,
     knee: JointId,
     shoulder: JointId,
@@ -223,12 +226,7 @@ impl Bike {
     /// The parts with a body of their own, in body order (on a rigid bike the fork's
     /// lower legs and the swingarm ride on the fork and the frame).
     pub fn own_parts(&self) -> impl Iterator<Item = Part> + '_ {
-        Part::ALL.into_iter().filter(move |&part| {
-            let body = self.body(part);
-            Part::ALL[..part as usize]
-                .iter()
-                .all(|&earlier| self.body(earlier) != body)
-        })
+        self.own_parts.iter().copied()
     }
 
     /// Steering angle (rad, positive left) and its rate.
