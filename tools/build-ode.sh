@@ -32,7 +32,8 @@ dsc=$(ls "$work"/src/ode_*.dsc | head -n1)
 version=$(sed -n 's/^Version: \([0-9]*:\)\{0,1\}\([0-9.]*\).*/\2/p' "$dsc")
 case "$version" in "$ODE_VERSION_WANTED"*) ;; *) die "expected ODE $ODE_VERSION_WANTED, the source package is $version";; esac
 
-# Three small patches (tools/ode-patches/, applied in order) make rollouts reproducible:
+# Four small patches (tools/ode-patches/, applied in order); the first three make rollouts
+# reproducible:
 # 1. QuickStep reorders constraint rows with dRandInt, whose seed is one process-wide
 #    atomic; worlds stepped on different threads would perturb each other's order. With a
 #    thread-local seed every World carries its own sequence and swaps it in for its steps.
@@ -41,6 +42,11 @@ case "$version" in "$ODE_VERSION_WANTED"*) ;; *) die "expected ODE $ODE_VERSION_
 # 3. An Euler-mode angular motor caches its angles during a step and dJointSetAMotorAngle
 #    ignores them outside user mode; a restored world would report stale angles until its
 #    next step. The setter now also restores the cache in Euler mode.
+# 4. dWorldStep's Dantzig solver bounds friction by normal forces solved without friction,
+#    so a spinning or locked wheel never gets the load its own traction transfers onto it
+#    (no wheelie, no stoppie, half the grip under power). When a tyre's friction row slides
+#    at a bound other than mu times its solved normal force, the step is solved again with
+#    the loaded bounds (contacts marked by dContactApprox1_N; see cpbp-ode's contact.rs).
 # The ODE cache's key (common.sh) covers this script and the patches.
 for patch in "$PROJECT_ROOT"/tools/ode-patches/*.patch; do
   (cd "$work/src/ode" && patch -p1 --forward --quiet) <"$patch" \

@@ -39,6 +39,17 @@ pub(crate) struct CollideContext<'a> {
     pub(crate) tyres: &'a [Tyre],
 }
 
+/// Surface mode of a contact: soft, with friction proportional to the normal force (the
+/// pyramid of `dContactApprox1`). A tyre's contact also sets `dContactApprox1_N`, which
+/// without rolling friction changes nothing in the contact itself: it asks the direct
+/// solver (ODE patch 04) to bound the tyre's friction by the normal force its own
+/// traction loads, so a spinning or locked wheel grips with the weight it carries.
+fn friction_mode(tyre: bool) -> i32 {
+    let pyramid = ffi::dContactApprox1_1 | ffi::dContactApprox1_2;
+    let loaded = if tyre { ffi::dContactApprox1_N } else { 0 };
+    (ffi::dContactSoftERP | ffi::dContactSoftCFM | pyramid | loaded) as i32
+}
+
 /// Reads a vector ODE handed out as a pointer to at least three reals.
 ///
 /// # Safety
@@ -134,13 +145,13 @@ pub(crate) unsafe extern "C" fn near_callback(
         );
         let mut made: Vec<ffi::dContactGeom> = Vec::new();
         for contact in contacts.iter_mut().take(count.max(0) as usize) {
-            match shape_tyre(context.tyres, o1, o2, &mut contact.geom) {
+            let tyre = match shape_tyre(context.tyres, o1, o2, &mut contact.geom) {
                 None => continue,
                 Some(true) if repeats(&made, &contact.geom) => continue,
-                Some(_) => made.push(contact.geom),
-            }
-            contact.surface.mode =
-                (ffi::dContactSoftERP | ffi::dContactSoftCFM | ffi::dContactApprox1) as i32;
+                Some(tyre) => tyre,
+            };
+            made.push(contact.geom);
+            contact.surface.mode = friction_mode(tyre);
             contact.surface.mu = context.surface.mu;
             contact.surface.soft_erp = context.surface.soft_erp;
             contact.surface.soft_cfm = context.surface.soft_cfm;

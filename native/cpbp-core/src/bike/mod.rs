@@ -11,6 +11,7 @@ mod model;
 mod params;
 mod rider_position;
 mod suspension;
+mod wheelie_control;
 
 pub use controls::{
     index, Controls, ForceClass, CONTROL_DIM, FORCE_TUNINGS, JOINT_TARGETS, LOWER, MAX_TORQUE,
@@ -27,3 +28,4 @@ pub use rider_position::{
     FORWARD_POSE, RIDER_JOINTS, RIGHT_POSE,
 };
 pub use suspension::{static_wheel_loads, Suspension};
+pub use wheelie_control::WheelieControl;

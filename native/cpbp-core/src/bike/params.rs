@@ -20,6 +20,7 @@
 //! arms 4.2 kg (upper) and 3.3 kg (forearms and hands); torso with head 43.35 kg.
 
 use super::suspension::Suspension;
+use super::wheelie_control::WheelieControl;
 
 /// Gravity the bike is set up for (m/s²): the suspension's preload carries its weight.
 pub const GRAVITY: f64 = 9.81;
@@ -55,6 +56,8 @@ pub struct BikeParams {
     pub tyre_friction: f64,
     /// Fork and rear suspension; `None` builds the thesis's rigid frame and fork.
     pub suspension: Option<Suspension>,
+    /// The drive's anti-wheelie, which reads the fork: only on a sprung bike.
+    pub wheelie_control: Option<WheelieControl>,
 }
 
 impl Default for BikeParams {
@@ -75,16 +78,18 @@ impl Default for BikeParams {
             steer_limit: 35f64.to_radians(),
             tyre_friction: 1.0,
             suspension: Some(Suspension::default()),
+            wheelie_control: Some(WheelieControl::default()),
         }
     }
 }
 
 impl BikeParams {
     /// The same bike without suspension: lower legs fixed to the fork, swingarm to the
-    /// frame.
+    /// frame (and no anti-wheelie, which reads the fork).
     pub fn rigid(&self) -> Self {
         Self {
             suspension: None,
+            wheelie_control: None,
             ..self.clone()
         }
     }

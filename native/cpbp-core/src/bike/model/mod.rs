@@ -175,11 +175,18 @@ impl Bike {
             c[index::STEER],
             controls.max_torque(ForceClass::Steering),
         );
+        // Driving (not braking, which holds the wheel still), the anti-wheelie may cut.
+        let drive_share = match &self.params.wheelie_control {
+            Some(control) if c[index::REAR_WHEEL] > 0.0 => {
+                control.torque_share(self.suspension_compression(world).0)
+            }
+            _ => 1.0,
+        };
         world.set_motor(
             self.rear_axle,
             0,
             c[index::REAR_WHEEL],
-            controls.max_torque(ForceClass::RearWheel),
+            controls.max_torque(ForceClass::RearWheel) * drive_share,
         );
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
