@@ -5,28 +5,20 @@
 
 mod common;
 
-use std::sync::Arc;
-
-use cpbp_core::bike::{BikeParams, Placement};
+use cpbp_core::bike::BikeParams;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
-use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::Terrain;
-use glam::{DQuat, DVec3};
+use cpbp_core::simulation::SimulationConfig;
+use glam::DVec3;
 
 /// A full-throttle launch towards 25 km/h with arcade for 2 s: the largest frame pitch
 /// (degrees, nose up) and the time (s) at which 24 km/h was first reached.
 fn launch(bike: BikeParams) -> (f64, Option<f64>) {
-    let config = SimulationConfig {
+    let sim = common::flat_ride_with(SimulationConfig {
         physics: PhysicsModel::Exact,
         bike,
         ..SimulationConfig::default()
-    };
-    let spawn = Placement {
-        position: DVec3::new(0.0, 0.02, 0.0),
-        rotation: DQuat::from_rotation_y(0.3),
-    };
-    let sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
+    });
     let mut ride = Ride::new(sim, ControllerKind::Arcade);
     ride.set_intent(Intent::cruise(25.0));
     let (mut pitch, mut reached) = (f64::MIN, None);

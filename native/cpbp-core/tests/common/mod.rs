@@ -27,13 +27,17 @@ pub fn flat_ride() -> Simulation {
 
 /// `flat_ride` in another physics model.
 pub fn flat_ride_in(physics: PhysicsModel) -> Simulation {
+    flat_ride_with(SimulationConfig {
+        physics,
+        ..SimulationConfig::default()
+    })
+}
+
+/// `flat_ride` with any configuration (another bike, say).
+pub fn flat_ride_with(config: SimulationConfig) -> Simulation {
     let spawn = Placement {
         position: DVec3::new(0.0, 0.02, 0.0),
         rotation: DQuat::from_rotation_y(0.3),
-    };
-    let config = SimulationConfig {
-        physics,
-        ..SimulationConfig::default()
     };
     Simulation::new(config, Arc::new(Terrain::flat()), spawn)
 }

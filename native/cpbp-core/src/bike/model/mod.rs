@@ -178,7 +178,7 @@ impl Bike {
         // Driving (not braking, which holds the wheel still), the anti-wheelie may cut.
         let drive_share = match &self.params.wheelie_control {
             Some(control) if c[index::REAR_WHEEL] > 0.0 => {
-                control.torque_share(self.suspension_compression(world).0)
+                control.torque_share(self.fork_compression(world))
             }
             _ => 1.0,
         };
@@ -223,11 +223,19 @@ impl Bike {
             return (0.0, 0.0);
         };
         let reach = joints.swingarm_reach;
-        let (_, front_top) = s.front_travel_range();
         let (_, rear_top) = s.rear_travel_range(reach);
-        let front = front_top - world.joint_position(joints.fork_slider);
         let rear = (rear_top - world.joint_position(joints.swingarm_pivot)) * reach;
-        (front, rear)
+        (self.fork_compression(world), rear)
+    }
+
+    /// How far the fork has compressed from full extension (m); zero on a rigid bike. The
+    /// anti-wheelie reads it every control step, so it reads the fork alone.
+    pub fn fork_compression(&self, world: &World) -> f64 {
+        let (Some(s), Some(joints)) = (&self.params.suspension, &self.suspension) else {
+            return 0.0;
+        };
+        let (_, front_top) = s.front_travel_range();
+        front_top - world.joint_position(joints.fork_slider)
     }
 
     /// The parts with a body of their own, in body order (on a rigid bike the fork's
