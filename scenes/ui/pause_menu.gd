@@ -15,6 +15,7 @@ RT / W, ↑        throttle
 LT / S, ↓        brake
 Left stick / A D, ← →   turn (sets the lean)
 Right stick / I J K L   rider's weight (fore, aft, sides)
+  back + throttle        wheelie
 D-pad / numpad 8 4 6 2, right mouse drag   camera
 Start / C        cycle controller
 Back / Esc, P    pause

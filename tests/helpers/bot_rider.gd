@@ -3,7 +3,8 @@ extends Node
 ## A scripted rider for headless rides through the player's own input: every physics tick
 ## it presses the throttle, brake and turn actions (with analog strengths, as a gamepad
 ## would) to follow a Path3D at a chosen speed: it asks for the path's curvature a little
-## ahead and corrects its heading and sideways errors. It never touches the bike's state.
+## ahead and corrects its heading and sideways errors. Told to wheelie, it pulls the rider
+## stick back and opens the throttle wide. It never touches the bike's state.
 
 ## Curvature asked per radian of heading error (1/m) and per metre of sideways error
 ## (1/m²): errors fade over a second or two at riding speeds.
@@ -11,6 +12,7 @@ const HEADING_GAIN := 0.25
 const SIDE_GAIN := 0.04
 const TURN_ACTIONS: Array[StringName] = [&"steer_left", &"steer_right"]
 const DRIVE_ACTIONS: Array[StringName] = [&"brake", &"throttle"]
+const RIDER_ACTIONS: Array[StringName] = [&"rider_back", &"rider_forward"]
 
 ## The bike to ride and the path to follow.
 var bike: BikeSimulation
@@ -20,6 +22,8 @@ var speed_kmh := 25.0
 var speed_along: Callable
 ## How far ahead (s of riding) the path's curvature is read to turn into bends in time.
 var preview := 0.5
+## While true: the rider's weight back and the throttle wide open, a wheelie.
+var wheelie := false
 ## Distance along the path (m) of the bike's nearest point, as of the last tick.
 var offset := 0.0
 
@@ -53,7 +57,9 @@ func _physics_process(_delta: float) -> void:
 	var error := wanted - speed
 	# Nothing slows a rolling bike but the brake (no drag, no rolling resistance), so the
 	# triggers only correct the speed error.
-	_press_axis(DRIVE_ACTIONS, clampf(0.6 * error, -1.0, 1.0) if wanted > 0.0 else -1.0)
+	var drive := clampf(0.6 * error, -1.0, 1.0) if wanted > 0.0 else -1.0
+	_press_axis(DRIVE_ACTIONS, 1.0 if wheelie else drive)
+	_press_axis(RIDER_ACTIONS, -1.0 if wheelie else 0.0)
 
 
 ## Signed curvature of the path at `at` (m along it; 1/m, positive turning left): the turn
@@ -70,7 +76,7 @@ func _path_curvature(at: float) -> float:
 
 ## Lets go of everything.
 func release() -> void:
-	for action: StringName in TURN_ACTIONS + DRIVE_ACTIONS:
+	for action: StringName in TURN_ACTIONS + DRIVE_ACTIONS + RIDER_ACTIONS:
 		Input.action_release(action)
 
 

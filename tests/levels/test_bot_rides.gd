@@ -66,6 +66,35 @@ func _climb_the_steps(controller: String, kmh: float) -> void:
 	assert_almost_eq(rear_on_high_step, 0.52, 0.03, "the rear wheel rode on the high step")
 
 
+func test_a_wheelie_lifts_the_bike_onto_the_skate_parks_platform() -> void:
+	# The platform stands 0.28 m, nearly a wheel's radius: a wheel rolled into it stops
+	# dead (cpbp-core's wheelie_control test). From 2 m before its edge until the front
+	# wheel is over it the bot pulls a wheelie, as in the thesis's Figure 4.7.
+	const EDGE_Z := -5.0
+	await _start(SKATE_PARK, "combined")
+	_game.cycle_spawn(4)
+	await wait_physics_frames(2)
+	_follow(_straight(Vector3(-24, 0, 10), Vector3(-24, 0, -14)), 10.0)
+	var rear_on_platform := 0.0
+	var highest_pitch := 0.0
+	while _game.bike.get_center_of_mass().z > -9.0 and _game.level.elapsed < 15.0:
+		await wait_physics_frames(1)
+		assert_false(_game.bike.is_crashed(), "fell at z = %.1f" % _bot.offset)
+		if _game.bike.is_crashed():
+			return
+		var front := _game.bike.get_body_transform(BikeSimulation.FRONT_WHEEL).origin
+		_bot.wheelie = front.z < EDGE_Z + 2.0 and front.z > EDGE_Z - 0.2
+		var frame := _game.bike.get_body_transform(BikeSimulation.FRAME).basis.x
+		highest_pitch = maxf(highest_pitch, rad_to_deg(asin(frame.y)))
+		var rear := _game.bike.get_body_transform(BikeSimulation.REAR_WHEEL).origin
+		if rear.z < EDGE_Z - 0.5:
+			rear_on_platform = maxf(rear_on_platform, rear.y)
+	assert_lt(_game.bike.get_center_of_mass().z, -9.0, "onto the platform within 15 s")
+	# The wheel's centre 0.30 m above the platform's 0.28 m top.
+	assert_almost_eq(rear_on_platform, 0.58, 0.03, "the rear wheel rode on the platform")
+	print("bot wheelie onto the platform: front up to %.0f degrees" % highest_pitch)
+
+
 func test_a_u_turn_of_3_m_radius_at_walking_pace() -> void:
 	# Up the middle, round a half circle of 3 m radius, and back, at 7 km/h: the tightest
 	# circle the turn stick asks for.

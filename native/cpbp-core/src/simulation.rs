@@ -58,6 +58,8 @@ pub struct Simulation {
     world: World,
     bike: Bike,
     controls: Controls,
+    /// The wheelie the player asks for (0–1, `Goal::wheelie_lift`).
+    wheelie_lift: f64,
     crash: CrashMonitor,
     crashed: Option<CrashCause>,
     airborne_for: f64,
@@ -74,6 +76,7 @@ impl Simulation {
             world,
             bike,
             controls: Controls::default(),
+            wheelie_lift: 0.0,
             crash: CrashMonitor::default(),
             crashed: None,
             airborne_for: 0.0,
@@ -129,11 +132,20 @@ impl Simulation {
         self.controls = controls;
     }
 
+    /// The wheelie the player asks for from the next step on (0–1, `Goal::wheelie_lift`);
+    /// the bike's wheelie control holds it, if it has one.
+    pub fn set_wheelie_lift(&mut self, lift: f64) {
+        self.wheelie_lift = lift;
+    }
+
     /// Advances one control step.
     pub fn step(&mut self) -> StepEvents {
         let mut events = StepEvents::default();
         let dt = self.config.control_dt / self.config.substeps as f64;
-        self.bike.apply(&mut self.world, &self.controls);
+        let up = self.up();
+        let lift = self.bike.wheelie_lift(&self.world, up, self.wheelie_lift);
+        self.bike
+            .apply_lifting(&mut self.world, &self.controls, lift, up);
         let mut airborne_at_start = self.airborne_for > AIRBORNE_AFTER;
         for _ in 0..self.config.substeps {
             self.world.step(dt);
@@ -169,6 +181,7 @@ impl Simulation {
         self.world.reset_motors();
         self.world.reset_random_seed();
         self.controls = Controls::default();
+        self.wheelie_lift = 0.0;
         self.crash.reset();
         self.crashed = None;
         self.airborne_for = 0.0;

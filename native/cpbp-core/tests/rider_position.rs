@@ -10,10 +10,15 @@ use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use glam::DVec3;
 
 /// Rides `seconds` asking for `position`; returns the rider's mean offset over the last
-/// second (frame axes, m) and the largest lean (rad) seen.
+/// second (frame axes, m) and the largest lean (rad) seen. With the weight back the
+/// throttle is closed (the weight back with the throttle open asks for a wheelie, which
+/// `wheelie_control.rs` tests); nothing slows the bike, so it rolls on at its speed.
 fn hold(ride: &mut Ride, position: RiderPosition, seconds: f64) -> (DVec3, f64) {
+    let mut drive = ride.intent().drive;
+    drive.throttle = if position.forward < 0.0 { 0.0 } else { 1.0 };
     ride.set_intent(Intent {
         rider: position,
+        drive,
         ..*ride.intent()
     });
     let steps = (seconds * common::FRAMES_PER_SECOND as f64) as usize;

@@ -1,15 +1,22 @@
-//! The drive's anti-wheelie (`bike::WheelieControl`). Tyres grip with the load their own
-//! traction transfers (ODE patch 04), so full throttle lifts the front wheel: launched
+//! The drive's wheelie control (`bike::WheelieControl`). Tyres grip with the load their
+//! own traction transfers (ODE patch 04), so full throttle lifts the front wheel: launched
 //! towards 25 km/h without the control the bike loops over. With it the front stays on
-//! the road and the bike still gets going briskly.
+//! the road and the bike still gets going briskly. Asked for a wheelie (the rider's weight
+//! back, throttle open) it holds the front up near the balance point instead, the
+//! planners keep the bike upright on its rear wheel, and every controller comes down
+//! safely when the wheelie topples or the stick is released.
 
 mod common;
 
-use cpbp_core::bike::BikeParams;
+use std::sync::Arc;
+
+use cpbp_core::bike::{BikeParams, Part, Placement, RiderPosition};
+use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
-use cpbp_core::simulation::SimulationConfig;
-use glam::DVec3;
+use cpbp_core::simulation::{Simulation, SimulationConfig};
+use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use glam::{DQuat, DVec3};
 
 /// A full-throttle launch towards 25 km/h with arcade for 2 s: the largest frame pitch
 /// (degrees, nose up) and the time (s) at which 24 km/h was first reached.
@@ -51,4 +58,146 @@ fn without_the_control_the_same_launch_loops() {
     };
     let (pitch, _) = launch(bike);
     assert!(pitch > 45.0, "the front rose only to {pitch:.1} degrees");
+}
+
+/// The frame's pitch (degrees, nose up).
+fn pitch(ride: &Ride) -> f64 {
+    let sim = ride.sim();
+    let forward = sim.bike().frame_rotation(sim.world()) * DVec3::X;
+    forward.dot(sim.up()).asin().to_degrees()
+}
+
+/// Holds the rider's weight `back` (0–1) with full throttle.
+fn ask_wheelie(ride: &mut Ride, back: f64) {
+    ride.set_intent(Intent {
+        rider: RiderPosition {
+            forward: -back,
+            right: 0.0,
+        },
+        ..*ride.intent()
+    });
+}
+
+/// What a wheelie asked for at 12 km/h did over `seconds`: the time (s) the front wheel
+/// stayed above 40° of pitch, and the highest pitch (degrees). The ride must not crash.
+fn wheelie(kind: ControllerKind, seconds: f64) -> (f64, f64) {
+    let mut ride = common::ride_in(PhysicsModel::Exact, kind, 12.0, 10);
+    common::ride(&mut ride, 2.0, 0.0);
+    ask_wheelie(&mut ride, 1.0);
+    let (mut up, mut highest) = (0.0, f64::MIN);
+    for _ in 0..(seconds * common::FRAMES_PER_SECOND as f64) as usize {
+        ride.step();
+        assert_eq!(
+            ride.sim().crashed(),
+            None,
+            "{kind:?} crashed in the wheelie"
+        );
+        highest = highest.max(pitch(&ride));
+        if pitch(&ride) > 40.0 {
+            up += 1.0 / common::FRAMES_PER_SECOND as f64;
+        }
+    }
+    (up, highest)
+}
+
+#[test]
+fn the_planner_holds_a_wheelie_near_the_balance_point() {
+    // The balance point of this bike with the rider back is about 58° of pitch.
+    let (up, highest) = wheelie(ControllerKind::Combined, 6.0);
+    assert!(up > 2.0, "above 40° for only {up:.2} s");
+    assert!(
+        highest < 65.0,
+        "pitched to {highest:.1}°: past the balance point"
+    );
+}
+
+#[test]
+fn every_controller_lifts_the_front_and_comes_down_safely() {
+    for kind in [ControllerKind::Arcade, ControllerKind::Optimizer] {
+        let (_, highest) = wheelie(kind, 6.0);
+        assert!(
+            highest > 40.0,
+            "{kind:?} lifted the front only to {highest:.1}°"
+        );
+    }
+}
+
+#[test]
+fn releasing_the_stick_puts_the_front_down() {
+    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::Combined, 12.0, 10);
+    common::ride(&mut ride, 2.0, 0.0);
+    ask_wheelie(&mut ride, 1.0);
+    common::ride(&mut ride, 1.0, 0.0);
+    assert!(
+        pitch(&ride) > 30.0,
+        "the front rose only to {:.1}°",
+        pitch(&ride)
+    );
+    ask_wheelie(&mut ride, 0.0);
+    common::ride(&mut ride, 2.0, 0.0);
+    assert_eq!(ride.sim().crashed(), None);
+    assert!(pitch(&ride).abs() < 3.0, "still at {:.1}°", pitch(&ride));
+}
+
+/// Where the platform's edge is (m along +x from the spawn) and how high it is: nearly
+/// the wheel's radius, so a wheel rolled into it stops dead (the thesis's Figure 4.7).
+const PLATFORM_EDGE: f64 = 8.0;
+const PLATFORM_HEIGHT: f64 = 0.28;
+
+/// A `kind` ride at 10 km/h at a platform; with `wheelie`, the rider's weight goes back
+/// from 2 m before the edge until the front wheel is over it. Where the rear wheel's
+/// centre is after 3.5 s (x forward, y up), on the 6 m platform if it climbed.
+fn ride_at_a_platform(kind: ControllerKind, wheelie: bool) -> DVec3 {
+    let platform = TerrainPiece {
+        source: "platform".into(),
+        shape: TerrainShape::Cuboid {
+            size: DVec3::new(6.0, PLATFORM_HEIGHT, 2.0),
+        },
+        placement: Placement {
+            position: DVec3::new(PLATFORM_EDGE + 3.0, PLATFORM_HEIGHT / 2.0, 0.0),
+            rotation: DQuat::IDENTITY,
+        },
+    };
+    let terrain = Terrain::new(vec![platform, TerrainPiece::flat_ground()]).expect("valid");
+    let config = SimulationConfig {
+        physics: PhysicsModel::Exact,
+        ..SimulationConfig::default()
+    };
+    let spawn = Placement {
+        position: DVec3::new(0.0, 0.02, 0.0),
+        rotation: DQuat::IDENTITY,
+    };
+    let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);
+    ride.planner.optimizer.particles = 10;
+    ride.planner.wait = PlanWait::EveryPlan;
+    ride.set_intent(Intent::cruise(10.0));
+    let centre = |ride: &Ride, part| {
+        let sim = ride.sim();
+        DVec3::from_array(sim.world().body_position(sim.bike().body(part)))
+    };
+    for _ in 0..(3.5 * common::FRAMES_PER_SECOND as f64) as usize {
+        let front = centre(&ride, Part::FrontWheel).x;
+        let lifting = wheelie && front > PLATFORM_EDGE - 2.0 && front < PLATFORM_EDGE + 0.2;
+        ask_wheelie(&mut ride, if lifting { 1.0 } else { 0.0 });
+        ride.step();
+        assert_eq!(ride.sim().crashed(), None, "{kind:?} crashed");
+    }
+    centre(&ride, Part::RearWheel)
+}
+
+#[test]
+fn a_wheelie_lifts_the_bike_onto_a_platform_a_wheel_rolled_into_stops_at() {
+    let on_top = PLATFORM_HEIGHT + BikeParams::default().wheel_radius;
+    for kind in [ControllerKind::Combined, ControllerKind::Arcade] {
+        let rear = ride_at_a_platform(kind, true);
+        assert!(
+            rear.x > PLATFORM_EDGE + 0.5 && (rear.y - on_top).abs() < 0.03,
+            "{kind:?}: the rear wheel is at {rear}, not on the platform"
+        );
+    }
+    let rear = ride_at_a_platform(ControllerKind::Combined, false);
+    assert!(
+        rear.x < PLATFORM_EDGE,
+        "rolled onto it without a wheelie: {rear}"
+    );
 }

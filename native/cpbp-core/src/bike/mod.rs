@@ -28,4 +28,4 @@ pub use rider_position::{
     FORWARD_POSE, RIDER_JOINTS, RIGHT_POSE,
 };
 pub use suspension::{static_wheel_loads, Suspension};
-pub use wheelie_control::WheelieControl;
+pub use wheelie_control::{wheelie_lift, WheelieControl};

@@ -1,13 +1,14 @@
 //! The bike as a system the C-PBP planner branches (thesis §4.3.1): each particle owns a
 //! world built like the master's; a planning step applies a control vector for one
 //! control period and costs the squared lean error of eq. 4.7, plus the rider-position
-//! error when the player holds the rider's weight somewhere.
+//! error when the player holds the rider's weight somewhere. In a wheelie the lean is
+//! measured against the lifted support point, so the balance point costs nothing.
 
 use glam::DVec3;
 
 use super::arcade::ArcadeController;
 use super::cpbp::{Priors, RolloutSystem};
-use super::lean::{current_lean_vector, desired_lean_vector, lean_cost};
+use super::lean::{current_lean_vector, desired_lean_vector, lean_cost, roll_lean_cost};
 use super::Goal;
 use crate::bike::{
     index, rider_position_cost, Bike, Controls, ForceClass, CONTROL_DIM, LOWER, POSE_GAIN, UPPER,
@@ -85,7 +86,10 @@ impl RolloutSystem for BikeRollout {
 
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         let controls = self.controls_for(u);
-        self.bike.apply(&mut self.world, &controls);
+        let asked = self.goal.wheelie_lift();
+        let lift = self.bike.wheelie_lift(&self.world, self.up, asked);
+        self.bike
+            .apply_lifting(&mut self.world, &controls, lift, self.up);
         let (substeps, dt) = self.stepping.ode_steps_at(step, self.step_dt);
         let mut crash = 0.0;
         for _ in 0..substeps {
@@ -101,9 +105,13 @@ impl RolloutSystem for BikeRollout {
         let desired = desired_lean_vector(heading, self.up, self.goal.lean);
         let current = current_lean_vector(
             self.bike.center_of_mass(&self.world),
-            self.bike.support_point(&self.world, self.up),
+            self.bike.support_point_lifted(&self.world, self.up, lift),
         );
-        let lean = lean_cost(desired, current, self.tolerances.lean);
+        let lean = if lift > 0.0 {
+            roll_lean_cost(desired, current, heading, self.tolerances.lean)
+        } else {
+            lean_cost(desired, current, self.tolerances.lean)
+        };
         // Only when asked: measuring the rider costs a little in every rollout step.
         let rider = if self.goal.rider.engagement() > 0.0 {
             rider_position_cost(

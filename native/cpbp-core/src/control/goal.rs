@@ -1,7 +1,7 @@
 //! What the player asks of one control step, in the form every controller reads it: the
 //! lean the turn command asks for, throttle and brake, and where the rider's weight goes.
 
-use crate::bike::{DriveInput, RiderPosition};
+use crate::bike::{wheelie_lift, DriveInput, RiderPosition};
 
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Goal {
@@ -22,5 +22,10 @@ impl Goal {
             drive,
             rider: RiderPosition::NEUTRAL,
         }
+    }
+
+    /// How high a wheelie the player asks for (0–1; `bike::wheelie_lift`).
+    pub fn wheelie_lift(&self) -> f64 {
+        wheelie_lift(&self.rider, &self.drive)
     }
 }

@@ -41,6 +41,14 @@ pub fn lean_cost(desired: DVec3, current: DVec3, tolerance: f64) -> f64 {
     (angle / tolerance).powi(2)
 }
 
+/// Eq. 4.7 in the roll plane only: both vectors projected on the plane across `heading`
+/// before the angle is taken. In a wheelie the wheelie control holds the pitch, so the
+/// planners answer for the roll alone.
+pub fn roll_lean_cost(desired: DVec3, current: DVec3, heading: DVec3, tolerance: f64) -> f64 {
+    let across = |v: DVec3| v - heading * v.dot(heading);
+    lean_cost(across(desired), across(current), tolerance)
+}
+
 /// The player's turn: a stick value in [−1, 1] (positive right) scales the curvature up
 /// to `max_curvature`; the lean it asks for is limited to `max_lean` so the player cannot
 /// ask for more than the bike can hold at the current speed.
@@ -128,6 +136,17 @@ mod tests {
         let c = lean_cost(-DVec3::Y, current, 5f64.to_radians());
         assert!((c - 4.0).abs() < 1e-9, "{c}");
         assert_eq!(lean_cost(-DVec3::Y, -DVec3::Y, 0.1), 0.0);
+    }
+
+    #[test]
+    fn the_roll_plane_cost_ignores_pitch() {
+        // 30° nose up about the right (z) axis costs nothing in roll; 10° of roll does.
+        let pitched = glam::DQuat::from_rotation_z(30f64.to_radians()) * -DVec3::Y;
+        assert!(roll_lean_cost(-DVec3::Y, pitched, DVec3::X, 0.1) < 1e-20);
+        assert!(lean_cost(-DVec3::Y, pitched, 0.1) > 20.0);
+        let rolled = glam::DQuat::from_rotation_x(10f64.to_radians()) * pitched;
+        let c = roll_lean_cost(-DVec3::Y, rolled, DVec3::X, 5f64.to_radians());
+        assert!(c > 3.0 && c < 6.0, "{c}");
     }
 
     #[test]

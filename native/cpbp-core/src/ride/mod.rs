@@ -161,14 +161,16 @@ impl Ride {
 
     /// Simulates one control step with the active controller (or the raw controls).
     pub fn step(&mut self) -> StepEvents {
+        let goal = self.goal();
         let controls = match self.raw_controls {
             Some(controls) => {
                 self.last_driver = None;
                 controls
             }
-            None => self.controls_of_active(self.goal()),
+            None => self.controls_of_active(goal),
         };
         self.sim.set_controls(controls);
+        self.sim.set_wheelie_lift(goal.wheelie_lift());
         let events = self.sim.step();
         self.steps += 1;
         if events.recovered_from.is_some() {

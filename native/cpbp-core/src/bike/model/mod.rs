@@ -2,6 +2,8 @@
 //! controllers need: transforms, speed, lean, steering, contacts, crash.
 
 mod build;
+mod drive;
+mod ground;
 mod rider;
 
 use glam::{DQuat, DVec3};
@@ -166,8 +168,16 @@ impl Bike {
         &self.shapes
     }
 
-    /// Sets every joint motor from a control vector.
+    /// Sets every joint motor from a control vector, no wheelie asked for.
     pub fn apply(&self, world: &mut World, controls: &Controls) {
+        self.apply_lifting(world, controls, 0.0, DVec3::Y);
+    }
+
+    /// Sets every joint motor from a control vector while the player asks for a wheelie
+    /// of height `lift` (0–1, `wheelie_lift`; `up` is against gravity): driving, the
+    /// wheelie control holds the rider's weight over the lifted support point instead
+    /// of keeping the front down.
+    pub fn apply_lifting(&self, world: &mut World, controls: &Controls, lift: f64, up: DVec3) {
         let c = controls.values();
         world.set_motor(
             self.steer,
@@ -175,19 +185,7 @@ impl Bike {
             c[index::STEER],
             controls.max_torque(ForceClass::Steering),
         );
-        // Driving (not braking, which holds the wheel still), the anti-wheelie may cut.
-        let drive_share = match &self.params.wheelie_control {
-            Some(control) if c[index::REAR_WHEEL] > 0.0 => {
-                control.torque_share(self.fork_compression(world))
-            }
-            _ => 1.0,
-        };
-        world.set_motor(
-            self.rear_axle,
-            0,
-            c[index::REAR_WHEEL],
-            controls.max_torque(ForceClass::RearWheel) * drive_share,
-        );
+        self.set_rear_motor(world, controls, lift, up);
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
         for axis in 0..3 {
@@ -301,35 +299,6 @@ impl Bike {
         let spin = from_array(world.body_angular_velocity(self.body(Part::Frame)));
         // Tipping up towards right (= heading × up) is a turn about up × right = heading.
         spin.dot(self.heading(world, up))
-    }
-
-    /// Ground support point: midway between the two tyres' lowest points (torus tyres:
-    /// each contact lies in its wheel's plane, a crown radius above the road).
-    pub fn support_point(&self, world: &World, up: DVec3) -> DVec3 {
-        let (r, crown) = (self.params.wheel_radius, self.params.tyre_crown);
-        let contact = |part: Part| {
-            let body = self.body(part);
-            let centre = from_array(world.body_position(body));
-            let axle = from_quat(world.body_quaternion(body)) * DVec3::Z;
-            let down = -(up - axle * up.dot(axle)).normalize_or(up);
-            centre + down * (r - crown) - up * crown
-        };
-        (contact(Part::RearWheel) + contact(Part::FrontWheel)) / 2.0
-    }
-
-    /// Whether the rear and front wheels touched the ground in the last step.
-    pub fn wheel_contacts(&self, world: &World) -> (bool, bool) {
-        (
-            world.body_touches_static(self.body(Part::RearWheel)),
-            world.body_touches_static(self.body(Part::FrontWheel)),
-        )
-    }
-
-    /// The first part other than a wheel that touched the ground in the last step.
-    pub fn part_touching_ground(&self, world: &World) -> Option<Part> {
-        Part::ALL
-            .into_iter()
-            .find(|p| !p.is_wheel() && world.body_touches_static(self.body(*p)))
     }
 
     /// Why the simulation can no longer be trusted, if it cannot: a non-finite number or a

@@ -1,0 +1,66 @@
+//! The rear wheel's motor: the throttle's and brake's targets, through the wheelie
+//! control when the bike has one.
+
+use glam::DVec3;
+
+use super::Bike;
+use crate::bike::controls::{index, Controls, ForceClass, MAX_TORQUE};
+use crate::ode::World;
+
+/// The rear wheel's full torque (N·m), which a wheelie hold commands directly.
+const MAX_TORQUE_REAR: f64 = MAX_TORQUE[ForceClass::RearWheel as usize];
+
+impl Bike {
+    /// Sets the rear wheel's motor from the controls' target and force tuning; driving,
+    /// the wheelie control keeps the front down (or, with `lift` > 0, holds a wheelie of
+    /// that height), and lets an overrunning wheel slow gently.
+    pub(super) fn set_rear_motor(
+        &self,
+        world: &mut World,
+        controls: &Controls,
+        lift: f64,
+        up: DVec3,
+    ) {
+        let c = controls.values();
+        let driving = c[index::REAR_WHEEL] > 0.0;
+        match &self.params.wheelie_control {
+            Some(control) if driving && lift > 0.0 => {
+                let (ahead, rate) = self.weight_ahead_of_support(world, up, lift);
+                let share = control.hold_share(ahead, rate);
+                // Driving, the hold aims above the throttle's speed (which, once reached,
+                // would leave no torque to lift with) and past that lets the wheel run
+                // free rather than brake it; braking, it holds the wheel still.
+                let (target, share) = if share >= 0.0 {
+                    let headroom = control.hold_headroom / self.params.wheel_radius;
+                    let limit = c[index::REAR_WHEEL] + headroom;
+                    let running_free = world.hinge_rate(self.rear_axle) >= limit;
+                    (limit, if running_free { 0.0 } else { share })
+                } else {
+                    (0.0, -share)
+                };
+                world.set_motor(self.rear_axle, 0, target, MAX_TORQUE_REAR * share);
+            }
+            control => {
+                // Driving (not braking, which holds the wheel still), the anti-wheelie
+                // may cut.
+                let drive_share = match control {
+                    Some(control) if driving => {
+                        let overrun = control.overrun_margin / self.params.wheel_radius;
+                        if world.hinge_rate(self.rear_axle) > c[index::REAR_WHEEL] + overrun {
+                            control.overrun_share
+                        } else {
+                            control.torque_share(self.fork_compression(world))
+                        }
+                    }
+                    _ => 1.0,
+                };
+                world.set_motor(
+                    self.rear_axle,
+                    0,
+                    c[index::REAR_WHEEL],
+                    controls.max_torque(ForceClass::RearWheel) * drive_share,
+                );
+            }
+        }
+    }
+}

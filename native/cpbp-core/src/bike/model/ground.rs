@@ -1,0 +1,85 @@
+//! Where a built bike meets the ground: the tyres' contact points, the support point the
+//! lean cost measures against, and that point moved back when the player asks for a
+//! wheelie.
+
+use glam::DVec3;
+
+use super::{from_array, from_quat, Bike, Part};
+use crate::ode::World;
+
+impl Bike {
+    /// Each tyre's lowest point, rear and front (torus tyres: the contact lies in the
+    /// wheel's plane, a crown radius above the road). A lifted wheel's is in the air.
+    pub fn tyre_contacts(&self, world: &World, up: DVec3) -> (DVec3, DVec3) {
+        let (r, crown) = (self.params.wheel_radius, self.params.tyre_crown);
+        let contact = |part: Part| {
+            let body = self.body(part);
+            let centre = from_array(world.body_position(body));
+            let axle = from_quat(world.body_quaternion(body)) * DVec3::Z;
+            let down = -(up - axle * up.dot(axle)).normalize_or(up);
+            centre + down * (r - crown) - up * crown
+        };
+        (contact(Part::RearWheel), contact(Part::FrontWheel))
+    }
+
+    /// Ground support point: midway between the two tyres' lowest points.
+    pub fn support_point(&self, world: &World, up: DVec3) -> DVec3 {
+        let (rear, front) = self.tyre_contacts(world, up);
+        (rear + front) / 2.0
+    }
+
+    /// The support point moved from the midpoint towards the rear tyre by `lift` (0–1):
+    /// where the rider's weight belongs in a wheelie of that height, the balance point
+    /// at 1. Exactly `support_point` at 0.
+    pub fn support_point_lifted(&self, world: &World, up: DVec3, lift: f64) -> DVec3 {
+        let (rear, front) = self.tyre_contacts(world, up);
+        let middle = (rear + front) / 2.0;
+        if lift > 0.0 {
+            middle + (rear - middle) * lift.min(1.0)
+        } else {
+            middle
+        }
+    }
+
+    /// The wheelie this bike holds now when `asked` (0–1, `wheelie_lift`): less as it
+    /// topples sideways (`WheelieControl::held_lift`), none with the rear tyre off the
+    /// ground (there is no balance point in the air) and none without a wheelie control
+    /// (the rigid bike keeps the thesis's plain drive).
+    pub fn wheelie_lift(&self, world: &World, up: DVec3, asked: f64) -> f64 {
+        match &self.params.wheelie_control {
+            Some(control) if asked > 0.0 && self.wheel_contacts(world).0 => {
+                control.held_lift(asked, self.lean(world, up))
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// How far (m) the centre of mass is ahead of the lifted support point along the
+    /// heading, and how fast that grows (m/s): what the wheelie hold regulates. The
+    /// support point moves with the axles above it.
+    pub fn weight_ahead_of_support(&self, world: &World, up: DVec3, lift: f64) -> (f64, f64) {
+        let heading = self.heading(world, up);
+        let support = self.support_point_lifted(world, up, lift);
+        let ahead = (self.center_of_mass(world) - support).dot(heading);
+        let velocity = |part: Part| from_array(world.body_linear_velocity(self.body(part)));
+        let (rear, front) = (velocity(Part::RearWheel), velocity(Part::FrontWheel));
+        let support_velocity = rear + (front - rear) * ((1.0 - lift.clamp(0.0, 1.0)) / 2.0);
+        let rate = (self.center_of_mass_velocity(world) - support_velocity).dot(heading);
+        (ahead, rate)
+    }
+
+    /// Whether the rear and front wheels touched the ground in the last step.
+    pub fn wheel_contacts(&self, world: &World) -> (bool, bool) {
+        (
+            world.body_touches_static(self.body(Part::RearWheel)),
+            world.body_touches_static(self.body(Part::FrontWheel)),
+        )
+    }
+
+    /// The first part other than a wheel that touched the ground in the last step.
+    pub fn part_touching_ground(&self, world: &World) -> Option<Part> {
+        Part::ALL
+            .into_iter()
+            .find(|p| !p.is_wheel() && world.body_touches_static(self.body(*p)))
+    }
+}
