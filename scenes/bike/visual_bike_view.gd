@@ -29,7 +29,8 @@ var _simulation: BikeSimulation
 var _rest := Transform3D.IDENTITY
 ## Per piece: the mesh, the body it rides on and its offset within that body.
 var _pieces: Array[Dictionary] = []
-var _materials := {}
+## Per side (−1 left, 1 right): the nodes of the leg drawn on that footpeg.
+var _peg_legs := {-1.0: [], 1.0: []}
 ## Centre of the grips (bike frame), where the simulated hand holds the bar.
 var _grip := Vector3.ZERO
 ## The rear shock's coil, stretched between its mounts every frame: its mounts on the
@@ -87,6 +88,13 @@ func _follow() -> void:
 func drawn_fork_length() -> float:
 	var up := _fork_leg.global_basis.y.normalized()
 	return (_stanchion.global_position - _fork_leg.global_position).dot(up)
+
+
+## Shows or hides the leg drawn on the `side` footpeg (−1 left, 1 right): hidden while
+## the rider's foot on that side is down (VisualFeet draws it there).
+func show_leg_on_peg(side: float, shown: bool) -> void:
+	for node: Node3D in _peg_legs[signf(side)]:
+		node.visible = shown
 
 
 ## How long the rear shock's coil is drawn now (m, between its mounts).
@@ -176,7 +184,7 @@ func _build_swingarm() -> void:
 	coil.height = _shock_rest_length
 	_shock = MeshInstance3D.new()
 	_shock.mesh = coil
-	_shock.material_override = _material("spring")
+	_shock.material_override = BikeLooks.material("spring")
 	_shock.top_level = true
 	_shock.name = "shock_spring"
 	add_child(_shock)
@@ -231,6 +239,7 @@ func _build_rider() -> void:
 	var elbow_grip := _capsule_ends(LOWER_ARM, -BIKE_FORWARD)
 	for side: float in [-1.0, 1.0]:
 		var knee_out := side * 0.19
+		var first_leg_piece := _pieces.size()
 		_limb(LOWER_LEG, ankle_knee, side * 0.2, knee_out, 0.06, "trousers")
 		_limb(UPPER_LEG, knee_hip, knee_out, side * 0.13, 0.08, "trousers")
 		_box(
@@ -240,6 +249,8 @@ func _build_rider() -> void:
 			0.0,
 			"boots"
 		)
+		for piece: Dictionary in _pieces.slice(first_leg_piece):
+			_peg_legs[side].append(piece.node)
 		_limb(UPPER_ARM, shoulder_elbow, side * 0.19, side * 0.27, 0.05, "jacket")
 		_limb(LOWER_ARM, elbow_grip, side * 0.27, side * 0.35, 0.045, "jacket")
 		var glove := SphereMesh.new()
@@ -319,7 +330,7 @@ func _ellipsoid(body: int, centre: Vector3, size: Vector3, look: String) -> void
 func _add(body: int, mesh: Mesh, look: String, world_at_rest: Transform3D) -> void:
 	var node := MeshInstance3D.new()
 	node.mesh = mesh
-	node.material_override = _material(look)
+	node.material_override = BikeLooks.material(look)
 	node.top_level = true
 	node.name = "%s_%d" % [look, _pieces.size()]
 	add_child(node)
@@ -357,37 +368,3 @@ static func _basis_with_y(y: Vector3, x_hint: Vector3) -> Basis:
 	)
 	var x := (hint - y * hint.dot(y)).normalized()
 	return Basis(x, y, x.cross(y))
-
-
-func _material(look: String) -> StandardMaterial3D:
-	if _materials.has(look):
-		return _materials[look]
-	var material := StandardMaterial3D.new()
-	var colours := {
-		tyre = Color(0.06, 0.06, 0.07),
-		rim = Color(0.2, 0.2, 0.22),
-		metal = Color(0.7, 0.7, 0.72),
-		frame = Color(0.12, 0.12, 0.13),
-		engine = Color(0.25, 0.25, 0.27),
-		paint = Color(0.92, 0.35, 0.08),
-		seat = Color(0.08, 0.08, 0.09),
-		tail_light = Color(0.9, 0.05, 0.05),
-		exhaust = Color(0.55, 0.55, 0.58),
-		spring = Color(0.95, 0.75, 0.1),
-		rubber = Color(0.05, 0.05, 0.05),
-		lamp = Color(1.0, 0.97, 0.85),
-		trousers = Color(0.12, 0.13, 0.17),
-		boots = Color(0.05, 0.05, 0.05),
-		jacket = Color(0.13, 0.32, 0.7),
-		gloves = Color(0.08, 0.08, 0.08),
-		helmet = Color(0.95, 0.95, 0.95),
-		visor = Color(0.05, 0.06, 0.1),
-	}
-	material.albedo_color = colours.get(look, Color.MAGENTA)
-	material.roughness = 0.35 if look in ["paint", "helmet", "visor", "metal", "exhaust"] else 0.8
-	material.metallic = 0.6 if look in ["metal", "exhaust"] else 0.0
-	if look in ["lamp", "tail_light"]:
-		material.emission_enabled = true
-		material.emission = material.albedo_color
-	_materials[look] = material
-	return material

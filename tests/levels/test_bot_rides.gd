@@ -95,6 +95,43 @@ func test_a_wheelie_lifts_the_bike_onto_the_skate_parks_platform() -> void:
 	print("bot wheelie onto the platform: front up to %.0f degrees" % highest_pitch)
 
 
+func test_a_stop_on_a_foot_for_30_s_and_a_pull_away() -> void:
+	# Up the middle at 8 km/h, the brake to a stop, 30 s standing, and off again: the
+	# bike stands on the rider's foot, drawn down, and the feet come up riding off.
+	await _start(SKATE_PARK, "combined")
+	var path := _straight(Vector3(0, 0, 14), Vector3(0, 0, -28))
+	_follow(path, 8.0)
+	await wait_physics_frames(120)
+	_bot.speed_kmh = 0.0
+	var feet := _game.bike.get_node(^"VisualBikeView/VisualFeet") as VisualFeet
+	var on_a_foot := 0
+	var leg_drawn_down := 0
+	var widest_lean := 0.0
+	for frame in 32 * 60:
+		await wait_physics_frames(1)
+		assert_false(
+			_game.bike.is_crashed(), "fell standing, %.1f s after braking" % (frame / 60.0)
+		)
+		if _game.bike.is_crashed():
+			return
+		if frame < 120:
+			continue
+		widest_lean = maxf(widest_lean, absf(_game.bike.get_lean()))
+		for foot: Dictionary in _game.bike.get_feet():
+			on_a_foot += int(foot.on_ground)
+		leg_drawn_down += int(feet.is_leg_down(-1.0) or feet.is_leg_down(1.0))
+	assert_lt(absf(_game.bike.get_speed()), 0.1, "standing still")
+	assert_gt(on_a_foot, 0, "a foot stood on the road")
+	assert_gt(leg_drawn_down, 25 * 60, "a leg drawn down for most of the 30 s")
+	assert_lt(rad_to_deg(widest_lean), 6.0, "stood within 6° of upright (4.8° measured)")
+	_bot.speed_kmh = 8.0
+	await wait_physics_frames(4 * 60)
+	assert_false(_game.bike.is_crashed(), "fell pulling away")
+	assert_gt(_game.bike.get_speed() * 3.6, 7.0, "back at 8 km/h within 4 s")
+	assert_false(feet.is_leg_down(-1.0) or feet.is_leg_down(1.0), "feet up riding")
+	print("bot stop on a foot: leaned at most %.1f degrees" % rad_to_deg(widest_lean))
+
+
 func test_a_u_turn_of_3_m_radius_at_walking_pace() -> void:
 	# Up the middle, round a half circle of 3 m radius, and back, at 7 km/h: the tightest
 	# circle the turn stick asks for.

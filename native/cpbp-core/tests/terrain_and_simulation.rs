@@ -300,7 +300,15 @@ fn a_blown_up_world_is_recovered_at_the_spawn_point() {
 
 #[test]
 fn lifting_stands_a_fallen_bike_up_where_it_lies() {
-    let mut sim = Simulation::new(SimulationConfig::default(), flat(), spawn_at(0.0));
+    // Without the rider's feet, which would catch the push (`tests/feet.rs`).
+    let config = SimulationConfig {
+        bike: cpbp_core::bike::BikeParams {
+            feet: None,
+            ..Default::default()
+        },
+        ..SimulationConfig::default()
+    };
+    let mut sim = Simulation::new(config, flat(), spawn_at(0.0));
     let frame = sim.bike().body(Part::Frame);
     sim.world_mut()
         .set_body_angular_velocity(frame, [3.0, 0.0, 0.0]); // tip it over

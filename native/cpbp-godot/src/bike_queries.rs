@@ -218,6 +218,28 @@ impl BikeSimulation {
             .is_some_and(|s| s.bike().wheel_contacts(s.world()).1)
     }
 
+    /// The rider's feet, left then right (none on the classic physics' rigid bike): one
+    /// Dictionary each with `down` (put down: below walking pace, throttle closed),
+    /// `on_ground` (stood on the ground in the last step) and `on_frame` (the sole's
+    /// centre in the frame body's frame, for `get_body_transform(FRAME) * on_frame`).
+    #[func]
+    fn get_feet(&self) -> Array<Dictionary<Variant, Variant>> {
+        let Some(sim) = self.sim() else {
+            return Array::new();
+        };
+        sim.bike()
+            .feet(sim.world())
+            .iter()
+            .map(|foot| {
+                let mut d = Dictionary::new();
+                d.set("down", foot.down);
+                d.set("on_ground", foot.on_ground);
+                d.set("on_frame", vector3(foot.on_frame));
+                d
+            })
+            .collect()
+    }
+
     /// True after a crash, until the next reset or lift.
     #[func]
     fn is_crashed(&self) -> bool {

@@ -99,9 +99,10 @@ pub struct BikeSimulation {
     /// The baselines plan the steering alone, the rider on the pose PD (else every joint).
     #[export]
     pub(crate) baseline_steering_only: bool,
-    /// Hold the bike still where it was placed until the first throttle (and again after
-    /// each reset): standing still, no steering can balance a bike, so the ride starts
-    /// when the player does.
+    /// The ride starts with the first throttle (and again after each reset): until then
+    /// `is_waiting_for_throttle` is true. A bike with feet stands on them meanwhile; one
+    /// without (the classic physics' rigid bike) is held still where it was placed, since
+    /// standing still no steering can balance it.
     #[export]
     pub(crate) wait_for_throttle: bool,
     pub(crate) ride: Option<Ride>,
@@ -181,7 +182,8 @@ impl INode3D for BikeSimulation {
         // Fixed control steps whatever the tick rate; at most 4 per tick, so a stall does
         // not snowball into a burst of steps.
         self.accumulator = (self.accumulator + delta).min(4.0 * dt);
-        if !ride.try_start() {
+        ride.try_start();
+        if ride.holds_the_bike() {
             self.accumulator = 0.0;
             return;
         }

@@ -3,6 +3,7 @@
 
 use std::os::raw::c_void;
 
+use crate::feet::Foot;
 use crate::tyre::Tyre;
 use crate::{ffi, Vec3};
 
@@ -37,6 +38,27 @@ pub(crate) struct CollideContext<'a> {
     pub(crate) surface: SurfaceParams,
     pub(crate) touching_static: &'a mut Vec<bool>,
     pub(crate) tyres: &'a [Tyre],
+    pub(crate) feet: &'a mut [Foot],
+    /// The step's length (s): a foot's spring–damper depends on it.
+    pub(crate) dt: f64,
+    /// The feet's contacts of this step, by foot: their joints are made after every other
+    /// contact's, in foot order, so their rows do not depend on the order ODE's space
+    /// happens to list its geoms in (which after a reset differs from a fresh world's).
+    pub(crate) foot_contacts: Vec<(usize, ffi::dContact, ffi::dBodyID, ffi::dBodyID)>,
+}
+
+impl CollideContext<'_> {
+    /// Makes the contact joints of the feet gathered during the collision, in foot order.
+    pub(crate) fn attach_foot_contacts(&mut self) {
+        self.foot_contacts.sort_by_key(|(foot, ..)| *foot);
+        for (_, contact, b1, b2) in &self.foot_contacts {
+            // SAFETY: the world, group and bodies are this world's, alive for the step.
+            unsafe {
+                let joint = ffi::dJointCreateContact(self.world, self.contacts, contact);
+                ffi::dJointAttach(joint, *b1, *b2);
+            }
+        }
+    }
 }
 
 /// Surface mode of a contact: soft, with friction proportional to the normal force (the
@@ -143,6 +165,23 @@ pub(crate) unsafe extern "C" fn near_callback(
             &mut contacts[0].geom,
             std::mem::size_of::<ffi::dContact>() as i32,
         );
+        let foot = context
+            .feet
+            .iter()
+            .position(|f| f.geom == o1 || f.geom == o2);
+        if let Some(index) = foot {
+            let foot = &mut context.feet[index];
+            let (erp, cfm) = foot.surface.erp_cfm(context.dt);
+            for contact in contacts.iter_mut().take(count.max(0) as usize) {
+                contact.surface.mode = friction_mode(false);
+                contact.surface.mu = foot.surface.mu;
+                contact.surface.soft_erp = erp;
+                contact.surface.soft_cfm = cfm;
+                context.foot_contacts.push((index, *contact, b1, b2));
+            }
+            foot.touching |= count > 0;
+            return;
+        }
         let mut made: Vec<ffi::dContactGeom> = Vec::new();
         for contact in contacts.iter_mut().take(count.max(0) as usize) {
             let tyre = match shape_tyre(context.tyres, o1, o2, &mut contact.geom) {

@@ -5,6 +5,7 @@
 //! joint group, bodies and geoms, and hands out plain index handles ([`BodyId`], [`GeomId`]).
 
 mod contact;
+mod feet;
 mod ffi;
 mod joints;
 mod mass;
@@ -16,6 +17,7 @@ mod tyre;
 mod world;
 
 pub use contact::SurfaceParams;
+pub use feet::FootSurface;
 pub use joints::{JointId, MotorState};
 pub use mass::Mass;
 pub use runtime::{c_library_version, configuration, ensure_thread_data, Configuration};

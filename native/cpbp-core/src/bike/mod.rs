@@ -1,10 +1,12 @@
-//! The motorcycle and its simplified rider (thesis §4.2): nine rigid bodies, hinges at the
-//! axles, steering axis, knee and elbow, motorised ball joints at waist, shoulder and wrist,
-//! and a passive ankle on the footpeg.
+//! The motorcycle and its simplified rider (thesis §4.2): eleven rigid bodies (nine on
+//! the thesis's rigid bike), hinges at the axles, steering axis, knee and elbow, motorised
+//! ball joints at waist, shoulder and wrist, a passive ankle on the footpeg, a sprung fork
+//! and swingarm, and a foot each side for standing still.
 
 mod controls;
 mod crash;
 mod drive;
+mod feet;
 mod layout;
 mod manual;
 mod model;
@@ -19,9 +21,10 @@ pub use controls::{
 };
 pub use crash::{CrashCause, CrashMonitor};
 pub use drive::DriveInput;
+pub use feet::Feet;
 pub use layout::Layout;
 pub use manual::{manual_controls, POSE_GAIN};
-pub use model::{from_quat, to_quat, Bike, Part, PartShape, Placement, Shape, PARTS};
+pub use model::{from_quat, to_quat, Bike, FootState, Part, PartShape, Placement, Shape, PARTS};
 pub use params::{BikeParams, GRAVITY};
 pub use rider_position::{
     rider_position_cost, RiderPosition, BACK_POSE, COM_REACH_FORWARD, COM_REACH_RIGHT,

@@ -19,6 +19,7 @@
 //! carry the mass of both sides: legs 15.0 kg (thighs) and 9.15 kg (shanks and feet),
 //! arms 4.2 kg (upper) and 3.3 kg (forearms and hands); torso with head 43.35 kg.
 
+use super::feet::Feet;
 use super::suspension::Suspension;
 use super::wheelie_control::WheelieControl;
 
@@ -58,6 +59,9 @@ pub struct BikeParams {
     pub suspension: Option<Suspension>,
     /// The drive's anti-wheelie, which reads the fork: only on a sprung bike.
     pub wheelie_control: Option<WheelieControl>,
+    /// The rider's feet at a stop (`Feet`): on the game's bike; the rigid bike of the
+    /// thesis has none.
+    pub feet: Option<Feet>,
 }
 
 impl Default for BikeParams {
@@ -79,17 +83,19 @@ impl Default for BikeParams {
             tyre_friction: 1.0,
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),
+            feet: Some(Feet::default()),
         }
     }
 }
 
 impl BikeParams {
     /// The same bike without suspension: lower legs fixed to the fork, swingarm to the
-    /// frame (and no anti-wheelie, which reads the fork).
+    /// frame (and no anti-wheelie, which reads the fork, and no feet: the thesis's bike).
     pub fn rigid(&self) -> Self {
         Self {
             suspension: None,
             wheelie_control: None,
+            feet: None,
             ..self.clone()
         }
     }

@@ -29,8 +29,9 @@ pub struct Ride {
     raw_controls: Option<Controls>,
     turn: TurnIntent,
     pub planner: PlannerSettings,
-    /// Hold the bike where it was placed until the first throttle: standing still, no
-    /// steering can balance a bike, so the ride starts when the player does.
+    /// The ride starts with the first throttle (a level's clock waits for it). A bike
+    /// without feet to stand on (the thesis's rigid bike) is also held where it was
+    /// placed until then: standing still, no steering can balance it.
     pub wait_for_throttle: bool,
     started: bool,
     steps: u64,
@@ -115,6 +116,12 @@ impl Ride {
     /// Opens the start gate whatever the input (headless runs step explicitly).
     pub fn start(&mut self) {
         self.started = true;
+    }
+
+    /// True while the bike must be held still: waiting for the first throttle without
+    /// feet to stand on (`BikeParams::feet`).
+    pub fn holds_the_bike(&self) -> bool {
+        self.is_waiting_for_throttle() && self.sim.bike().params().feet.is_none()
     }
 
     /// True while the bike stands waiting for the first throttle.

@@ -10,6 +10,7 @@ use std::ptr;
 use std::sync::Arc;
 
 use crate::contact::{near_callback, read_vec3, CollideContext, SurfaceParams};
+use crate::feet::Foot;
 use crate::ffi;
 use crate::joints::JointKind;
 use crate::mass::Mass;
@@ -55,6 +56,8 @@ pub struct World {
     touching_static: Vec<bool>,
     /// Torus tyres: sphere geoms whose contacts are moved to where a torus would touch.
     tyres: Vec<Tyre>,
+    /// Feet: sphere geoms that stand on the terrain like a rider's foot (`add_foot`).
+    feet: Vec<Foot>,
     /// Shared collision data the geoms read; released only after `Drop` destroyed the space.
     shared_meshes: Vec<Arc<TriMeshData>>,
     shared_heights: Vec<Arc<HeightFieldData>>,
@@ -104,6 +107,7 @@ impl World {
                 surface: SurfaceParams::default(),
                 touching_static: Vec::new(),
                 tyres: Vec::new(),
+                feet: Vec::new(),
                 shared_meshes: Vec::new(),
                 shared_heights: Vec::new(),
                 solver: Solver::default(),
@@ -285,12 +289,16 @@ impl World {
         self.add_explicit_gyroscopic_torques();
         self.canonicalise_geom_order();
         self.touching_static.iter_mut().for_each(|t| *t = false);
+        self.feet.iter_mut().for_each(|f| f.touching = false);
         let mut context = CollideContext {
             world: self.world,
             contacts: self.contacts,
             surface: self.surface,
             touching_static: &mut self.touching_static,
             tyres: &self.tyres,
+            feet: &mut self.feet,
+            dt,
+            foot_contacts: Vec::new(),
         };
         // SAFETY: the callback only runs during this call and gets a pointer to `context`,
         // which outlives it; all ids belong to this world.
@@ -300,6 +308,7 @@ impl World {
                 (&mut context as *mut CollideContext).cast::<c_void>(),
                 Some(near_callback),
             );
+            context.attach_foot_contacts();
             // The seed is thread-local in our ODE build: nothing else runs on this thread
             // between setting it and reading it back.
             ffi::dRandSetSeed(self.random_seed as _);

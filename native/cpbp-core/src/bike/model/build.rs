@@ -105,6 +105,18 @@ impl Bike {
             builder.world.set_spring(joints.fork_slider, fork_spring);
             builder.world.set_spring(joints.swingarm_pivot, rear_spring);
         }
+        // Last of the bike's geoms: up, they change nothing about how the others collide.
+        let feet = params.feet.as_ref().map(|feet| {
+            let frame_rest = builder.rest[Part::Frame as usize].0;
+            feet.positions().map(|at| {
+                let foot = builder.world.add_foot(feet.radius, frame, feet.surface);
+                let offset = to_array(at - frame_rest);
+                builder
+                    .world
+                    .set_geom_offset(foot, offset, to_quat(DQuat::IDENTITY));
+                foot
+            })
+        });
         let rest = builder.rest.try_into().expect("one rest pose per part");
         let bodies = [
             rear, front, fork, frame, fork_lower, swingarm, lower_leg, upper_leg, torso, upper_arm,
@@ -122,6 +134,7 @@ impl Bike {
             steer,
             rear_axle,
             suspension: suspension_joints,
+            feet,
             own_parts,
             waist,
             knee,

@@ -5,7 +5,19 @@
 use glam::DVec3;
 
 use super::{from_array, from_quat, Bike, Part};
+use crate::bike::controls::{index, Controls, ForceClass};
 use crate::ode::World;
+
+/// One of the rider's feet as `Bike::feet` reports it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FootState {
+    /// The sole's centre in the frame body's frame (m).
+    pub on_frame: DVec3,
+    /// Put down (below walking pace, throttle closed).
+    pub down: bool,
+    /// Stood on the ground in the last step.
+    pub on_ground: bool,
+}
 
 impl Bike {
     /// Each tyre's lowest point, rear and front (torus tyres: the contact lies in the
@@ -66,6 +78,49 @@ impl Bike {
         let support_velocity = rear + (front - rear) * ((1.0 - lift.clamp(0.0, 1.0)) / 2.0);
         let rate = (self.center_of_mass_velocity(world) - support_velocity).dot(heading);
         (ahead, rate)
+    }
+
+    /// Puts the rider's feet down below walking pace and lifts them above it or when the
+    /// throttle opens (`Feet`).
+    pub(super) fn place_feet(&self, world: &mut World, controls: &Controls, up: DVec3) {
+        let (Some(feet), Some(geoms)) = (&self.params.feet, &self.feet) else {
+            return;
+        };
+        let c = controls.values();
+        let throttle_open =
+            c[index::REAR_WHEEL] > 0.0 && c[index::FORCE + ForceClass::RearWheel as usize] > 0.0;
+        let down = feet.down_at(self.forward_speed(world, up), throttle_open);
+        for foot in geoms {
+            world.set_foot_down(*foot, down);
+        }
+    }
+
+    /// Whether the rider's left and right feet stood on the ground in the last step.
+    pub fn feet_on_ground(&self, world: &World) -> (bool, bool) {
+        match &self.feet {
+            Some([left, right]) => (
+                world.foot_touches_ground(*left),
+                world.foot_touches_ground(*right),
+            ),
+            None => (false, false),
+        }
+    }
+
+    /// The rider's feet, left then right (none on a bike without them), for drawing.
+    pub fn feet(&self, world: &World) -> Vec<FootState> {
+        let (Some(feet), Some(geoms)) = (&self.params.feet, &self.feet) else {
+            return Vec::new();
+        };
+        let frame_rest = self.rest[Part::Frame as usize].0;
+        feet.positions()
+            .iter()
+            .zip(geoms)
+            .map(|(at, &geom)| FootState {
+                on_frame: *at - frame_rest,
+                down: world.is_foot_down(geom),
+                on_ground: world.foot_touches_ground(geom),
+            })
+            .collect()
     }
 
     /// Whether the rear and front wheels touched the ground in the last step.

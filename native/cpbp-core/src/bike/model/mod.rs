@@ -6,11 +6,13 @@ mod drive;
 mod ground;
 mod rider;
 
+pub use ground::FootState;
+
 use glam::{DQuat, DVec3};
 
 use crate::bike::controls::{index, Controls, ForceClass};
 use crate::bike::params::BikeParams;
-use crate::ode::{BodyId, JointId, World};
+use crate::ode::{BodyId, GeomId, JointId, World};
 
 /// Number of rigid bodies of bike and rider.
 pub const PARTS: usize = 11;
@@ -136,6 +138,8 @@ pub struct Bike {
     rear_axle: JointId,
     /// The suspension's joints; none on a rigid bike.
     suspension: Option<SuspensionJoints>,
+    /// The rider's feet (left, right), if the bike has them (`BikeParams::feet`).
+    feet: Option<[GeomId; 2]>,
     /// The parts with a body of their own, found once at build: the centre of mass, which
     /// every rollout step's cost reads, sums over them.
     own_parts: Vec<Part>,
@@ -186,6 +190,7 @@ impl Bike {
             controls.max_torque(ForceClass::Steering),
         );
         self.set_rear_motor(world, controls, lift, up);
+        self.place_feet(world, controls, up);
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
         for axis in 0..3 {

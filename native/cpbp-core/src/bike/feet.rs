@@ -1,0 +1,63 @@
+//! The rider's feet at a stop (thesis §5.3's dropped second-leg experiment; issue 14):
+//! below walking pace the rider puts a foot down on whichever side the bike leans to, and
+//! the bike rests on it as on a leg, indefinitely; riding off, the feet come up again.
+//!
+//! The foot is a sole on a leg held stiff from the frame (the rider's mid-plane leg stays
+//! on the pegs, and the planners' control vector is unchanged): a sphere on the frame
+//! beside the footpeg, a stride's width out, that touches the road when the bike leans a
+//! degree or so, with a leg's give (a spring–damper) and a shoe's grip. Up, it does not
+//! collide at all, so riding is exactly what it was; a launch with the throttle open
+//! lifts them at once, so every ride that sets off at full throttle (the experiment's,
+//! the tests') is exactly what it was too.
+
+use glam::DVec3;
+
+use crate::ode::FootSurface;
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Feet {
+    /// Centre of the right foot's sole in the bike frame as built (x forward, y up, z to
+    /// the right; the left foot mirrors it in z).
+    pub right_foot: DVec3,
+    /// Radius of the sole's sphere (m).
+    pub radius: f64,
+    pub surface: FootSurface,
+    /// Below this forward speed (m/s) the feet are down.
+    pub down_below: f64,
+}
+
+impl Default for Feet {
+    /// A foot 0.40 m out beside the footpeg, its sole a 5 cm sphere 4.5 cm above the
+    /// road with the bike upright as built: with the suspension's sag it meets the road
+    /// at about 1° of lean, and the bike stands within 3° of upright on whichever foot it
+    /// leans to (`tests/feet.rs`). The leg gives 1 cm under 200 N (20 kN/m, damped at
+    /// about critical for the bike's roll on it) and the shoe grips at μ = 0.8 (rubber
+    /// soles on asphalt). Down below 0.8 m/s (about 3 km/h), where steering no longer
+    /// balances.
+    fn default() -> Self {
+        Self {
+            right_foot: DVec3::new(-0.05, 0.045, 0.40),
+            radius: 0.05,
+            surface: FootSurface {
+                mu: 0.8,
+                stiffness: 20_000.0,
+                damping: 1_500.0,
+            },
+            down_below: 0.8,
+        }
+    }
+}
+
+impl Feet {
+    /// The left foot's and the right foot's sole centres in the bike frame as built.
+    pub fn positions(&self) -> [DVec3; 2] {
+        let right = self.right_foot;
+        [DVec3::new(right.x, right.y, -right.z), right]
+    }
+
+    /// Whether the feet are down at forward speed `speed` (m/s), with the throttle open
+    /// or closed: a rider pulling away lifts them as the drive takes up.
+    pub fn down_at(&self, speed: f64, throttle_open: bool) -> bool {
+        speed.abs() < self.down_below && !throttle_open
+    }
+}

@@ -1,0 +1,81 @@
+//! The rider's feet (`bike::Feet`): brought to a stop the bike stands on a foot put down,
+//! indefinitely, with every controller, and pulls away when the throttle opens.
+
+mod common;
+
+use cpbp_core::bike::DriveInput;
+use cpbp_core::physics::PhysicsModel;
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
+
+/// Sets the triggers: `throttle` towards 8 km/h, or the brake.
+fn drive(ride: &mut Ride, throttle: bool) {
+    let drive = DriveInput {
+        throttle: if throttle { 1.0 } else { 0.0 },
+        brake: if throttle { 0.0 } else { 1.0 },
+        max_speed: 8.0 / 3.6,
+    };
+    ride.set_intent(Intent {
+        drive,
+        ..*ride.intent()
+    });
+}
+
+/// Rides `seconds`, failing on a crash; returns the largest lean (degrees) and in how
+/// many steps a foot stood on the ground.
+fn ride_for(ride: &mut Ride, seconds: f64) -> (f64, usize) {
+    let (mut lean, mut on_a_foot) = (0f64, 0);
+    for _ in 0..(seconds * common::FRAMES_PER_SECOND as f64) as usize {
+        ride.step();
+        assert_eq!(ride.sim().crashed(), None, "{:?} fell", ride.controller());
+        lean = lean.max(common::lean(ride).abs().to_degrees());
+        let sim = ride.sim();
+        let (left, right) = sim.bike().feet_on_ground(sim.world());
+        on_a_foot += usize::from(left || right);
+    }
+    (lean, on_a_foot)
+}
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
+fn every_controller_stops_on_a_foot_for_30_seconds_and_pulls_away() {
+    for kind in [
+        ControllerKind::Arcade,
+        ControllerKind::Combined,
+        ControllerKind::Optimizer,
+    ] {
+        let mut ride = common::ride_in(PhysicsModel::Exact, kind, 8.0, 10);
+        ride_for(&mut ride, 3.0);
+        drive(&mut ride, false);
+        ride_for(&mut ride, 2.0);
+        let (lean, on_a_foot) = ride_for(&mut ride, 30.0);
+        assert!(lean < 5.0, "{kind:?} leaned {lean:.1}° standing");
+        assert!(on_a_foot > 0, "{kind:?} stood without a foot down");
+        // The planners' plans carry the triggers they were made with: the feet come up
+        // a step or two after the throttle opens.
+        drive(&mut ride, true);
+        let (lean_setting_off, _) = ride_for(&mut ride, 1.0);
+        let (lean, on_a_foot) = ride_for(&mut ride, 3.0);
+        let lean = lean.max(lean_setting_off);
+        assert!(lean < 10.0, "{kind:?} leaned {lean:.1}° pulling away");
+        assert_eq!(on_a_foot, 0, "{kind:?} rode on with a foot down");
+        let sim = ride.sim();
+        let kmh = sim.bike().forward_speed(sim.world(), sim.up()) * 3.6;
+        assert!(kmh > 7.5, "{kind:?} at {kmh:.1} km/h after 4 s");
+    }
+}
+
+#[test]
+fn a_released_bike_stands_on_a_foot_from_rest() {
+    // No controller's help and no crutch: put down at rest, the bike falls onto a foot
+    // and stays there.
+    let mut ride = Ride::new(
+        common::flat_ride_in(PhysicsModel::Exact),
+        ControllerKind::Manual,
+    );
+    let (lean, on_a_foot) = ride_for(&mut ride, 10.0);
+    assert!(lean < 5.0, "leaned {lean:.1}°");
+    assert!(on_a_foot > 100, "a foot down in only {on_a_foot} steps");
+}

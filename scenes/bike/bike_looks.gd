@@ -1,0 +1,42 @@
+class_name BikeLooks
+extends RefCounted
+## The materials the drawn bike and rider are made of, by name: one shared material per
+## look, made on first use.
+
+const COLOURS := {
+	tyre = Color(0.06, 0.06, 0.07),
+	rim = Color(0.2, 0.2, 0.22),
+	metal = Color(0.7, 0.7, 0.72),
+	frame = Color(0.12, 0.12, 0.13),
+	engine = Color(0.25, 0.25, 0.27),
+	paint = Color(0.92, 0.35, 0.08),
+	seat = Color(0.08, 0.08, 0.09),
+	tail_light = Color(0.9, 0.05, 0.05),
+	exhaust = Color(0.55, 0.55, 0.58),
+	spring = Color(0.95, 0.75, 0.1),
+	rubber = Color(0.05, 0.05, 0.05),
+	lamp = Color(1.0, 0.97, 0.85),
+	trousers = Color(0.12, 0.13, 0.17),
+	boots = Color(0.05, 0.05, 0.05),
+	jacket = Color(0.13, 0.32, 0.7),
+	gloves = Color(0.08, 0.08, 0.08),
+	helmet = Color(0.95, 0.95, 0.95),
+	visor = Color(0.05, 0.06, 0.1),
+}
+
+static var _made := {}
+
+
+## The material of `look` (magenta for a look nobody defined, so it shows).
+static func material(look: String) -> StandardMaterial3D:
+	if _made.has(look):
+		return _made[look]
+	var made := StandardMaterial3D.new()
+	made.albedo_color = COLOURS.get(look, Color.MAGENTA)
+	made.roughness = 0.35 if look in ["paint", "helmet", "visor", "metal", "exhaust"] else 0.8
+	made.metallic = 0.6 if look in ["metal", "exhaust"] else 0.0
+	if look in ["lamp", "tail_light"]:
+		made.emission_enabled = true
+		made.emission = made.albedo_color
+	_made[look] = made
+	return made
