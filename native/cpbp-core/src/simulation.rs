@@ -6,7 +6,9 @@ use std::sync::Arc;
 
 use glam::DVec3;
 
-use crate::bike::{Bike, BikeParams, Controls, CrashCause, CrashMonitor, Part, Placement, GRAVITY};
+use crate::bike::{
+    Bike, BikeParams, Controls, CrashCause, CrashMonitor, Part, PitchRequest, Placement, GRAVITY,
+};
 use crate::ode::World;
 use crate::physics::PhysicsModel;
 use crate::terrain::Terrain;
@@ -58,8 +60,8 @@ pub struct Simulation {
     world: World,
     bike: Bike,
     controls: Controls,
-    /// The wheelie the player asks for (0–1, `Goal::wheelie_lift`).
-    wheelie_lift: f64,
+    /// The pitch the rider's weight asks for (`Goal::pitch_request`).
+    pitch_request: PitchRequest,
     crash: CrashMonitor,
     crashed: Option<CrashCause>,
     airborne_for: f64,
@@ -76,7 +78,7 @@ impl Simulation {
             world,
             bike,
             controls: Controls::default(),
-            wheelie_lift: 0.0,
+            pitch_request: PitchRequest::default(),
             crash: CrashMonitor::default(),
             crashed: None,
             airborne_for: 0.0,
@@ -132,10 +134,11 @@ impl Simulation {
         self.controls = controls;
     }
 
-    /// The wheelie the player asks for from the next step on (0–1, `Goal::wheelie_lift`);
-    /// the bike's wheelie control holds it, if it has one.
-    pub fn set_wheelie_lift(&mut self, lift: f64) {
-        self.wheelie_lift = lift;
+    /// The pitch the rider's weight asks for from the next step on (a wheelie, a turn
+    /// in the air: `Goal::pitch_request`); the bike's wheelie control does it, if it has
+    /// one.
+    pub fn set_pitch_request(&mut self, request: PitchRequest) {
+        self.pitch_request = request;
     }
 
     /// Advances one control step.
@@ -143,9 +146,9 @@ impl Simulation {
         let mut events = StepEvents::default();
         let dt = self.config.control_dt / self.config.substeps as f64;
         let up = self.up();
-        let lift = self.bike.wheelie_lift(&self.world, up, self.wheelie_lift);
+        let held = self.bike.held_pitch(&self.world, up, self.pitch_request);
         self.bike
-            .apply_lifting(&mut self.world, &self.controls, lift, up);
+            .apply_pitching(&mut self.world, &self.controls, held, up);
         let mut airborne_at_start = self.airborne_for > AIRBORNE_AFTER;
         for _ in 0..self.config.substeps {
             self.world.step(dt);
@@ -181,7 +184,7 @@ impl Simulation {
         self.world.reset_motors();
         self.world.reset_random_seed();
         self.controls = Controls::default();
-        self.wheelie_lift = 0.0;
+        self.pitch_request = PitchRequest::default();
         self.crash.reset();
         self.crashed = None;
         self.airborne_for = 0.0;

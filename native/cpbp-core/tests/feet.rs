@@ -79,3 +79,27 @@ fn a_released_bike_stands_on_a_foot_from_rest() {
     assert!(lean < 5.0, "leaned {lean:.1}°");
     assert!(on_a_foot > 100, "a foot down in only {on_a_foot} steps");
 }
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
+fn every_controller_rides_at_walking_pace_straight_and_round_the_tightest_turn() {
+    // 3.2 km/h, just above where the feet come down; then 5 km/h on the turn stick's
+    // tightest circle, 3 m (3.7° of lean). Planners wobble about 10° in the turn.
+    let tightest = (5.0f64 / 3.6).powi(2) / (3.0 * 9.81);
+    for kind in [
+        ControllerKind::Arcade,
+        ControllerKind::Combined,
+        ControllerKind::Optimizer,
+    ] {
+        let mut ride = common::ride_in(PhysicsModel::Exact, kind, 3.2, 10);
+        common::ride(&mut ride, 3.0, 0.0);
+        let (lean, _) = ride_for(&mut ride, 9.0);
+        assert!(lean < 5.0, "{kind:?} leaned {lean:.1}° at 3.2 km/h");
+        let mut ride = common::ride_in(PhysicsModel::Exact, kind, 5.0, 10);
+        common::ride(&mut ride, 3.0, tightest.atan());
+        ride_for(&mut ride, 9.0);
+    }
+}

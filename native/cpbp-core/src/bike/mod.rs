@@ -31,4 +31,4 @@ pub use rider_position::{
     FORWARD_POSE, RIDER_JOINTS, RIGHT_POSE,
 };
 pub use suspension::{static_wheel_loads, Suspension};
-pub use wheelie_control::{wheelie_lift, WheelieControl};
+pub use wheelie_control::{pitch_request, PitchRequest, WheelieControl};

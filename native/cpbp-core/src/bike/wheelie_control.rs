@@ -48,6 +48,9 @@ pub struct WheelieControl {
     /// within millimetres per second of that speed, so this never acts.
     pub overrun_margin: f64,
     pub overrun_share: f64,
+    /// In the air, the share of the rear wheel's torque the rider's full weight shift
+    /// spins it up or brakes it with.
+    pub air_share: f64,
 }
 
 impl Default for WheelieControl {
@@ -66,6 +69,7 @@ impl Default for WheelieControl {
             lift_none_beyond: 16f64.to_radians(),
             overrun_margin: 1.0,
             overrun_share: 0.1,
+            air_share: AIR_SHARE,
         }
     }
 }
@@ -75,13 +79,32 @@ impl Default for WheelieControl {
 /// closed loop of about 4 rad/s, damped at 0.8.
 const HOLD_GAIN: f64 = 3.6;
 const HOLD_RATE_GAIN: f64 = 0.9;
+/// A fifth of the rear wheel's torque: braked with it from 8 m/s the wheel stops in
+/// about a quarter of a second and its spin's reaction turns the nose about 10° down.
+const AIR_SHARE: f64 = 0.2;
 
-/// How high a wheelie the player asks for (0–1, the balance point at 1): the rider's
-/// weight back times the throttle. Nothing without both, so riding with the stick
-/// released is riding as before.
-pub fn wheelie_lift(rider: &RiderPosition, drive: &DriveInput) -> f64 {
+/// What the rider's weight asks of the bike's pitch through the rear wheel: a wheelie
+/// on the ground, a turn of the nose in the air. Both zero with the stick released, so
+/// riding without it is riding as before.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PitchRequest {
+    /// How high a wheelie (0–1, the balance point at 1): the weight back times the
+    /// throttle.
+    pub lift: f64,
+    /// In the air, the nose up (positive, the weight back) or down (negative, the weight
+    /// forward), −1 to 1: the rear wheel spun up or braked, whose reaction pitches the
+    /// bike as riders use throttle and rear brake in a jump. The rider's body alone moves
+    /// the pitch by about 3° in a 0.7 s jump, and the other way (`tests/air_control.rs`).
+    pub air: f64,
+}
+
+/// The pitch the rider's weight and the throttle ask for (`PitchRequest`).
+pub fn pitch_request(rider: &RiderPosition, drive: &DriveInput) -> PitchRequest {
     let (rider, _) = rider.sanitized();
-    (-rider.forward).max(0.0) * drive.sanitized().throttle
+    PitchRequest {
+        lift: (-rider.forward).max(0.0) * drive.sanitized().throttle,
+        air: -rider.forward,
+    }
 }
 
 impl WheelieControl {
@@ -166,19 +189,23 @@ mod tests {
             forward: -1.0,
             right: 0.3,
         };
-        assert_eq!(wheelie_lift(&back, &drive(1.0)), 1.0);
-        assert_eq!(wheelie_lift(&back, &drive(0.5)), 0.5);
-        assert_eq!(wheelie_lift(&back, &drive(0.0)), 0.0);
-        assert_eq!(wheelie_lift(&RiderPosition::NEUTRAL, &drive(1.0)), 0.0);
+        let lift = |rider: &RiderPosition, throttle| pitch_request(rider, &drive(throttle)).lift;
+        assert_eq!(lift(&back, 1.0), 1.0);
+        assert_eq!(lift(&back, 0.5), 0.5);
+        assert_eq!(lift(&back, 0.0), 0.0);
+        assert_eq!(lift(&RiderPosition::NEUTRAL, 1.0), 0.0);
+        assert_eq!(pitch_request(&back, &drive(0.0)).air, 1.0);
+        assert_eq!(pitch_request(&RiderPosition::NEUTRAL, &drive(1.0)).air, 0.0);
         let forward = RiderPosition {
             forward: 0.8,
             right: 0.0,
         };
-        assert_eq!(wheelie_lift(&forward, &drive(1.0)), 0.0);
+        assert_eq!(lift(&forward, 1.0), 0.0);
+        assert_eq!(pitch_request(&forward, &drive(1.0)).air, -0.8);
         let broken = RiderPosition {
             forward: f64::NAN,
             right: 0.0,
         };
-        assert_eq!(wheelie_lift(&broken, &drive(1.0)), 0.0);
+        assert_eq!(pitch_request(&broken, &drive(1.0)), PitchRequest::default());
     }
 }

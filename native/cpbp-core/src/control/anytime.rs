@@ -286,7 +286,7 @@ fn plan_requests(mut replica: Simulation, requests: Receiver<Message>, replies: 
             continue;
         }
         replica.set_controls(request.applied);
-        replica.set_wheelie_lift(request.goal.wheelie_lift());
+        replica.set_pitch_request(request.goal.pitch_request());
         replica.step();
         let optimizer = match &mut optimizer {
             Some(o) if o.config == request.config => o,

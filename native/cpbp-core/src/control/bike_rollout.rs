@@ -86,10 +86,10 @@ impl RolloutSystem for BikeRollout {
 
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         let controls = self.controls_for(u);
-        let asked = self.goal.wheelie_lift();
-        let lift = self.bike.wheelie_lift(&self.world, self.up, asked);
+        let asked = self.goal.pitch_request();
+        let held = self.bike.held_pitch(&self.world, self.up, asked);
         self.bike
-            .apply_lifting(&mut self.world, &controls, lift, self.up);
+            .apply_pitching(&mut self.world, &controls, held, self.up);
         let (substeps, dt) = self.stepping.ode_steps_at(step, self.step_dt);
         let mut crash = 0.0;
         for _ in 0..substeps {
@@ -105,9 +105,12 @@ impl RolloutSystem for BikeRollout {
         let desired = desired_lean_vector(heading, self.up, self.goal.lean);
         let current = current_lean_vector(
             self.bike.center_of_mass(&self.world),
-            self.bike.support_point_lifted(&self.world, self.up, lift),
+            self.bike
+                .support_point_lifted(&self.world, self.up, held.lift),
         );
-        let lean = if lift > 0.0 {
+        // Pitching on request (a wheelie, a turn in the air), the pitch is the bike's to
+        // hold: the planners answer for the roll alone.
+        let lean = if held.lift > 0.0 || held.air != 0.0 {
             roll_lean_cost(desired, current, heading, self.tolerances.lean)
         } else {
             lean_cost(desired, current, self.tolerances.lean)

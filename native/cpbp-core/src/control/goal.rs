@@ -1,7 +1,7 @@
 //! What the player asks of one control step, in the form every controller reads it: the
 //! lean the turn command asks for, throttle and brake, and where the rider's weight goes.
 
-use crate::bike::{wheelie_lift, DriveInput, RiderPosition};
+use crate::bike::{pitch_request, DriveInput, PitchRequest, RiderPosition};
 
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Goal {
@@ -24,8 +24,9 @@ impl Goal {
         }
     }
 
-    /// How high a wheelie the player asks for (0–1; `bike::wheelie_lift`).
-    pub fn wheelie_lift(&self) -> f64 {
-        wheelie_lift(&self.rider, &self.drive)
+    /// The pitch the rider's weight asks for: a wheelie, a turn in the air
+    /// (`bike::PitchRequest`).
+    pub fn pitch_request(&self) -> PitchRequest {
+        pitch_request(&self.rider, &self.drive)
     }
 }

@@ -177,7 +177,7 @@ impl Ride {
             None => self.controls_of_active(goal),
         };
         self.sim.set_controls(controls);
-        self.sim.set_wheelie_lift(goal.wheelie_lift());
+        self.sim.set_pitch_request(goal.pitch_request());
         let events = self.sim.step();
         self.steps += 1;
         if events.recovered_from.is_some() {

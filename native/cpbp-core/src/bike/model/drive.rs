@@ -5,6 +5,7 @@ use glam::DVec3;
 
 use super::Bike;
 use crate::bike::controls::{index, Controls, ForceClass, MAX_TORQUE};
+use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
 
 /// The rear wheel's full torque (N·m), which a wheelie hold commands directly.
@@ -12,18 +13,31 @@ const MAX_TORQUE_REAR: f64 = MAX_TORQUE[ForceClass::RearWheel as usize];
 
 impl Bike {
     /// Sets the rear wheel's motor from the controls' target and force tuning; driving,
-    /// the wheelie control keeps the front down (or, with `lift` > 0, holds a wheelie of
-    /// that height), and lets an overrunning wheel slow gently.
+    /// the wheelie control keeps the front down (or, with `held.lift` > 0, holds a
+    /// wheelie of that height), lets an overrunning wheel slow gently, and in the air
+    /// with `held.air` ≠ 0 spins the wheel up or brakes it.
     pub(super) fn set_rear_motor(
         &self,
         world: &mut World,
         controls: &Controls,
-        lift: f64,
+        held: PitchRequest,
         up: DVec3,
     ) {
         let c = controls.values();
         let driving = c[index::REAR_WHEEL] > 0.0;
+        let lift = held.lift;
         match &self.params.wheelie_control {
+            Some(control) if held.air != 0.0 => {
+                // Spun up (towards the throttle's speed and the hold's headroom beyond
+                // it, no further) the wheel's reaction lifts the nose; braked, it drops.
+                let target = if held.air > 0.0 {
+                    c[index::REAR_WHEEL].max(0.0) + control.hold_headroom / self.params.wheel_radius
+                } else {
+                    0.0
+                };
+                let torque = MAX_TORQUE_REAR * held.air.abs() * control.air_share;
+                world.set_motor(self.rear_axle, 0, target, torque);
+            }
             Some(control) if driving && lift > 0.0 => {
                 let (ahead, rate) = self.weight_ahead_of_support(world, up, lift);
                 let share = control.hold_share(ahead, rate);

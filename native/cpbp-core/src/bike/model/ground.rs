@@ -6,6 +6,7 @@ use glam::DVec3;
 
 use super::{from_array, from_quat, Bike, Part};
 use crate::bike::controls::{index, Controls, ForceClass};
+use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
 
 /// One of the rider's feet as `Bike::feet` reports it.
@@ -53,17 +54,27 @@ impl Bike {
         }
     }
 
-    /// The wheelie this bike holds now when `asked` (0–1, `wheelie_lift`): less as it
-    /// topples sideways (`WheelieControl::held_lift`), none with the rear tyre off the
-    /// ground (there is no balance point in the air) and none without a wheelie control
-    /// (the rigid bike keeps the thesis's plain drive).
-    pub fn wheelie_lift(&self, world: &World, up: DVec3, asked: f64) -> f64 {
-        match &self.params.wheelie_control {
-            Some(control) if asked > 0.0 && self.wheel_contacts(world).0 => {
-                control.held_lift(asked, self.lean(world, up))
-            }
-            _ => 0.0,
-        }
+    /// What of `asked` this bike does now: a wheelie with the rear tyre on the ground,
+    /// lower as it topples sideways (`WheelieControl::held_lift`); a turn of the nose
+    /// with both wheels in the air; nothing without a wheelie control (the rigid bike
+    /// keeps the thesis's plain drive).
+    pub fn held_pitch(&self, world: &World, up: DVec3, asked: PitchRequest) -> PitchRequest {
+        let Some(control) = &self.params.wheelie_control else {
+            return PitchRequest::default();
+        };
+        let (rear, front) = self.wheel_contacts(world);
+        let lift = if asked.lift > 0.0 && rear {
+            control.held_lift(asked.lift, self.lean(world, up))
+        } else {
+            0.0
+        };
+        let airborne = !rear && !front;
+        let air = if airborne && asked.air.is_finite() {
+            asked.air.clamp(-1.0, 1.0)
+        } else {
+            0.0
+        };
+        PitchRequest { lift, air }
     }
 
     /// How far (m) the centre of mass is ahead of the lifted support point along the

@@ -12,6 +12,7 @@ use glam::{DQuat, DVec3};
 
 use crate::bike::controls::{index, Controls, ForceClass};
 use crate::bike::params::BikeParams;
+use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::{BodyId, GeomId, JointId, World};
 
 /// Number of rigid bodies of bike and rider.
@@ -172,16 +173,23 @@ impl Bike {
         &self.shapes
     }
 
-    /// Sets every joint motor from a control vector, no wheelie asked for.
+    /// Sets every joint motor from a control vector, no pitch asked for.
     pub fn apply(&self, world: &mut World, controls: &Controls) {
-        self.apply_lifting(world, controls, 0.0, DVec3::Y);
+        self.apply_pitching(world, controls, PitchRequest::default(), up_y());
     }
 
-    /// Sets every joint motor from a control vector while the player asks for a wheelie
-    /// of height `lift` (0–1, `wheelie_lift`; `up` is against gravity): driving, the
-    /// wheelie control holds the rider's weight over the lifted support point instead
-    /// of keeping the front down.
-    pub fn apply_lifting(&self, world: &mut World, controls: &Controls, lift: f64, up: DVec3) {
+    /// Sets every joint motor from a control vector while the rider's weight asks for a
+    /// pitch (`held`, as `held_pitch` gives it; `up` is against gravity): driving with a
+    /// wheelie asked for, the wheelie control holds the rider's weight over the lifted
+    /// support point instead of keeping the front down; in the air it spins the rear
+    /// wheel up or brakes it to turn the nose.
+    pub fn apply_pitching(
+        &self,
+        world: &mut World,
+        controls: &Controls,
+        held: PitchRequest,
+        up: DVec3,
+    ) {
         let c = controls.values();
         world.set_motor(
             self.steer,
@@ -189,7 +197,7 @@ impl Bike {
             c[index::STEER],
             controls.max_torque(ForceClass::Steering),
         );
-        self.set_rear_motor(world, controls, lift, up);
+        self.set_rear_motor(world, controls, held, up);
         self.place_feet(world, controls, up);
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
@@ -338,6 +346,10 @@ impl Bike {
         let forward = self.frame_rotation(world) * DVec3::X;
         (forward - up * forward.dot(up)).normalize_or(forward)
     }
+}
+
+fn up_y() -> DVec3 {
+    DVec3::Y
 }
 
 fn to_array(v: DVec3) -> [f64; 3] {
