@@ -17,6 +17,7 @@ Left stick / A D, ← →   turn (sets the lean)
 Right stick / I J K L   rider's weight (fore, aft, sides)
   back + throttle        wheelie
   in the air             nose up (back) or down (forward)
+  forward + brake        stoppie
 D-pad / numpad 8 4 6 2, right mouse drag   camera
 Start / C        cycle controller
 Back / Esc, P    pause

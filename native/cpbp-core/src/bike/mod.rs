@@ -7,6 +7,7 @@ mod controls;
 mod crash;
 mod drive;
 mod feet;
+mod front_brake;
 mod layout;
 mod manual;
 mod model;
@@ -22,6 +23,7 @@ pub use controls::{
 pub use crash::{CrashCause, CrashMonitor};
 pub use drive::DriveInput;
 pub use feet::Feet;
+pub use front_brake::FrontBrake;
 pub use layout::Layout;
 pub use manual::{manual_controls, POSE_GAIN};
 pub use model::{from_quat, to_quat, Bike, FootState, Part, PartShape, Placement, Shape, PARTS};

@@ -20,6 +20,7 @@
 //! arms 4.2 kg (upper) and 3.3 kg (forearms and hands); torso with head 43.35 kg.
 
 use super::feet::Feet;
+use super::front_brake::FrontBrake;
 use super::suspension::Suspension;
 use super::wheelie_control::WheelieControl;
 
@@ -62,6 +63,9 @@ pub struct BikeParams {
     /// The rider's feet at a stop (`Feet`): on the game's bike; the rigid bike of the
     /// thesis has none.
     pub feet: Option<Feet>,
+    /// The front brake (`FrontBrake`): on the game's bike; the thesis's braked the rear
+    /// alone.
+    pub front_brake: Option<FrontBrake>,
 }
 
 impl Default for BikeParams {
@@ -84,6 +88,7 @@ impl Default for BikeParams {
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),
             feet: Some(Feet::default()),
+            front_brake: Some(FrontBrake::default()),
         }
     }
 }
@@ -96,6 +101,7 @@ impl BikeParams {
             suspension: None,
             wheelie_control: None,
             feet: None,
+            front_brake: None,
             ..self.clone()
         }
     }

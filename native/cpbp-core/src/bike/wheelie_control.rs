@@ -96,14 +96,19 @@ pub struct PitchRequest {
     /// bike as riders use throttle and rear brake in a jump. The rider's body alone moves
     /// the pitch by about 3° in a 0.7 s jump, and the other way (`tests/air_control.rs`).
     pub air: f64,
+    /// How high a stoppie (0–1, the balance point over the front tyre at 1): the weight
+    /// forward times the brake.
+    pub stoppie: f64,
 }
 
 /// The pitch the rider's weight and the throttle ask for (`PitchRequest`).
 pub fn pitch_request(rider: &RiderPosition, drive: &DriveInput) -> PitchRequest {
     let (rider, _) = rider.sanitized();
+    let drive = drive.sanitized();
     PitchRequest {
-        lift: (-rider.forward).max(0.0) * drive.sanitized().throttle,
+        lift: (-rider.forward).max(0.0) * drive.throttle,
         air: -rider.forward,
+        stoppie: rider.forward.max(0.0) * drive.brake,
     }
 }
 

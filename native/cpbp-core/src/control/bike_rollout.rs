@@ -106,11 +106,11 @@ impl RolloutSystem for BikeRollout {
         let current = current_lean_vector(
             self.bike.center_of_mass(&self.world),
             self.bike
-                .support_point_lifted(&self.world, self.up, held.lift),
+                .support_point_lifted(&self.world, self.up, held.lift - held.stoppie),
         );
         // Pitching on request (a wheelie, a turn in the air), the pitch is the bike's to
         // hold: the planners answer for the roll alone.
-        let lean = if held.lift > 0.0 || held.air != 0.0 {
+        let lean = if held.lift > 0.0 || held.air != 0.0 || held.stoppie > 0.0 {
             roll_lean_cost(desired, current, heading, self.tolerances.lean)
         } else {
             lean_cost(desired, current, self.tolerances.lean)

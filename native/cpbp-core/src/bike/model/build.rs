@@ -75,7 +75,7 @@ impl Bike {
         // the axis pointing up, steering left is positive.
         let z = DVec3::Z;
         let rear_axle = b.hinge(swingarm, rear, l.rear_axle, z);
-        b.hinge(fork_lower, front, l.front_axle, z);
+        let front_axle = b.hinge(fork_lower, front, l.front_axle, z);
         let steer = b.hinge(fork, frame, l.steer_anchor, l.steer_axis);
         b.world
             .set_joint_limits(steer, 0, -params.steer_limit, params.steer_limit);
@@ -133,6 +133,7 @@ impl Bike {
             shapes: builder.shapes,
             steer,
             rear_axle,
+            front_axle,
             suspension: suspension_joints,
             feet,
             own_parts,

@@ -66,7 +66,12 @@ impl Bike {
                             control.torque_share(self.fork_compression(world))
                         }
                     }
-                    _ => 1.0,
+                    // Braking with a front brake too, the rear gets its share of the
+                    // trigger (`FrontBrake::rear_share`).
+                    _ => match &self.params.front_brake {
+                        Some(front) if c[index::REAR_WHEEL] == 0.0 => front.rear_share,
+                        _ => 1.0,
+                    },
                 };
                 world.set_motor(
                     self.rear_axle,
@@ -76,5 +81,32 @@ impl Bike {
                 );
             }
         }
+    }
+
+    /// Sets the front brake: with the triggers' brake (the controls' rear wheel held still
+    /// with some force), lifting off as the rear unloads, or holding a stoppie when
+    /// `held.stoppie` > 0; free otherwise. A bike without one keeps its front wheel free.
+    pub(super) fn set_front_brake(
+        &self,
+        world: &mut World,
+        controls: &Controls,
+        held: PitchRequest,
+        up: DVec3,
+    ) {
+        let Some(brake) = &self.params.front_brake else {
+            return;
+        };
+        let c = controls.values();
+        let level = c[index::FORCE + ForceClass::RearWheel as usize];
+        let braking = c[index::REAR_WHEEL] == 0.0 && level > 0.0;
+        let share = if !braking {
+            0.0
+        } else if held.stoppie > 0.0 {
+            let (ahead, rate) = self.weight_ahead_of_support(world, up, -held.stoppie);
+            brake.hold_share(ahead, rate)
+        } else {
+            level * brake.lift_off_share(self.suspension_compression(world).1)
+        };
+        world.set_motor(self.front_axle, 0, 0.0, brake.max_torque * share);
     }
 }

@@ -41,14 +41,17 @@ impl Bike {
         (rear + front) / 2.0
     }
 
-    /// The support point moved from the midpoint towards the rear tyre by `lift` (0–1):
-    /// where the rider's weight belongs in a wheelie of that height, the balance point
-    /// at 1. Exactly `support_point` at 0.
-    pub fn support_point_lifted(&self, world: &World, up: DVec3, lift: f64) -> DVec3 {
+    /// The support point moved from the midpoint towards the rear tyre by `shift` (0–1)
+    /// or towards the front tyre by −`shift`: where the rider's weight belongs in a
+    /// wheelie or a stoppie of that height, the balance point at ±1. Exactly
+    /// `support_point` at 0.
+    pub fn support_point_lifted(&self, world: &World, up: DVec3, shift: f64) -> DVec3 {
         let (rear, front) = self.tyre_contacts(world, up);
         let middle = (rear + front) / 2.0;
-        if lift > 0.0 {
-            middle + (rear - middle) * lift.min(1.0)
+        if shift > 0.0 {
+            middle + (rear - middle) * shift.min(1.0)
+        } else if shift < 0.0 {
+            middle + (front - middle) * (-shift).min(1.0)
         } else {
             middle
         }
@@ -74,19 +77,27 @@ impl Bike {
         } else {
             0.0
         };
-        PitchRequest { lift, air }
+        let stoppie = match &self.params.front_brake {
+            Some(_) if asked.stoppie > 0.0 && front => {
+                control.held_lift(asked.stoppie, self.lean(world, up))
+            }
+            _ => 0.0,
+        };
+        PitchRequest { lift, air, stoppie }
     }
 
-    /// How far (m) the centre of mass is ahead of the lifted support point along the
-    /// heading, and how fast that grows (m/s): what the wheelie hold regulates. The
-    /// support point moves with the axles above it.
-    pub fn weight_ahead_of_support(&self, world: &World, up: DVec3, lift: f64) -> (f64, f64) {
+    /// How far (m) the centre of mass is ahead of the shifted support point along the
+    /// heading (`support_point_lifted`), and how fast that grows (m/s): what the wheelie
+    /// and stoppie holds regulate. The support point moves with the axles above it.
+    pub fn weight_ahead_of_support(&self, world: &World, up: DVec3, shift: f64) -> (f64, f64) {
         let heading = self.heading(world, up);
-        let support = self.support_point_lifted(world, up, lift);
+        let support = self.support_point_lifted(world, up, shift);
         let ahead = (self.center_of_mass(world) - support).dot(heading);
         let velocity = |part: Part| from_array(world.body_linear_velocity(self.body(part)));
         let (rear, front) = (velocity(Part::RearWheel), velocity(Part::FrontWheel));
-        let support_velocity = rear + (front - rear) * ((1.0 - lift.clamp(0.0, 1.0)) / 2.0);
+        // Where between the axles the support point sits: 0 at the rear, 1 at the front.
+        let along = (1.0 - shift.clamp(-1.0, 1.0)) / 2.0;
+        let support_velocity = rear + (front - rear) * along;
         let rate = (self.center_of_mass_velocity(world) - support_velocity).dot(heading);
         (ahead, rate)
     }

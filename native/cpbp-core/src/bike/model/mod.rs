@@ -137,6 +137,7 @@ pub struct Bike {
     shapes: Vec<PartShape>,
     steer: JointId,
     rear_axle: JointId,
+    front_axle: JointId,
     /// The suspension's joints; none on a rigid bike.
     suspension: Option<SuspensionJoints>,
     /// The rider's feet (left, right), if the bike has them (`BikeParams::feet`).
@@ -198,6 +199,7 @@ impl Bike {
             controls.max_torque(ForceClass::Steering),
         );
         self.set_rear_motor(world, controls, held, up);
+        self.set_front_brake(world, controls, held, up);
         self.place_feet(world, controls, up);
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
