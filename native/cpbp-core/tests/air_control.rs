@@ -4,30 +4,16 @@
 //! weight forward brakes it and the nose drops, as riders use throttle and rear brake in
 //! the air. The rider's body alone turns the bike only about 3°, and the other way.
 
-use std::sync::Arc;
+mod common;
 
-use cpbp_core::bike::{Part, Placement, RiderPosition};
-use cpbp_core::control::PlanWait;
-use cpbp_core::physics::PhysicsModel;
-use cpbp_core::ride::{ControllerKind, Intent, Ride};
-use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::{Terrain, TerrainPiece};
-use glam::{DQuat, DVec3};
+use cpbp_core::bike::{Part, RiderPosition};
+use cpbp_core::ride::{ControllerKind, Intent};
 
 /// The frame's pitch (degrees, nose up) 0.67 s into a jump: the bike thrown level at
 /// 8 m/s from 3 m up, wheels turning with the ground speed, the rider's weight at
 /// `forward` (−1 back to 1 forward), no triggers.
 fn pitch_after_a_jump(kind: ControllerKind, forward: f64) -> f64 {
-    let config = SimulationConfig {
-        physics: PhysicsModel::Exact,
-        ..SimulationConfig::default()
-    };
-    let spawn = Placement {
-        position: DVec3::new(0.0, 3.0, 0.0),
-        rotation: DQuat::IDENTITY,
-    };
-    let terrain = Terrain::new(vec![TerrainPiece::flat_ground()]).expect("valid");
-    let mut sim = Simulation::new(config, Arc::new(terrain), spawn);
+    let mut sim = common::exact_sim_on(Vec::new(), 3.0);
     let bike = sim.bike().clone();
     let speed = 8.0;
     for part in Part::ALL {
@@ -40,9 +26,7 @@ fn pitch_after_a_jump(kind: ControllerKind, forward: f64) -> f64 {
         sim.world_mut()
             .set_body_angular_velocity(bike.body(wheel), [0.0, 0.0, spin]);
     }
-    let mut ride = Ride::new(sim, kind);
-    ride.planner.optimizer.particles = 10;
-    ride.planner.wait = PlanWait::EveryPlan;
+    let mut ride = common::planned_ride(sim, kind);
     ride.set_intent(Intent {
         lean: Some(0.0),
         rider: RiderPosition {
@@ -56,9 +40,7 @@ fn pitch_after_a_jump(kind: ControllerKind, forward: f64) -> f64 {
         let sim = ride.sim();
         assert_eq!(sim.bike().wheel_contacts(sim.world()), (false, false));
     }
-    let sim = ride.sim();
-    let nose = sim.bike().frame_rotation(sim.world()) * DVec3::X;
-    nose.dot(sim.up()).asin().to_degrees()
+    common::pitch(&ride)
 }
 
 #[test]

@@ -7,7 +7,6 @@ mod common;
 use cpbp_core::bike::{DriveInput, RiderPosition};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent};
-use glam::DVec3;
 
 /// From 20 km/h, `brake` with the weight at `forward` for 3 s: the lowest pitch (degrees,
 /// nose down negative) and when the bike stopped (s). It must not fall.
@@ -30,9 +29,8 @@ fn brake_from_20(kind: ControllerKind, brake: f64, forward: f64) -> (f64, f64) {
     for step in 0..3 * common::FRAMES_PER_SECOND {
         ride.step();
         assert_eq!(ride.sim().crashed(), None, "{kind:?} fell braking");
+        lowest = lowest.min(common::pitch(&ride));
         let sim = ride.sim();
-        let nose = sim.bike().frame_rotation(sim.world()) * DVec3::X;
-        lowest = lowest.min(nose.dot(sim.up()).asin().to_degrees());
         if stopped.is_nan() && sim.bike().forward_speed(sim.world(), sim.up()) < 0.3 {
             stopped = (step + 1) as f64 / common::FRAMES_PER_SECOND as f64;
         }

@@ -8,14 +8,12 @@
 
 mod common;
 
-use std::sync::Arc;
-
+use common::pitch;
 use cpbp_core::bike::{BikeParams, Part, Placement, RiderPosition};
-use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
-use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use cpbp_core::simulation::SimulationConfig;
+use cpbp_core::terrain::{TerrainPiece, TerrainShape};
 use glam::{DQuat, DVec3};
 
 /// A full-throttle launch towards 25 km/h with arcade for 2 s: the largest frame pitch
@@ -58,13 +56,6 @@ fn without_the_control_the_same_launch_loops() {
     };
     let (pitch, _) = launch(bike);
     assert!(pitch > 45.0, "the front rose only to {pitch:.1} degrees");
-}
-
-/// The frame's pitch (degrees, nose up).
-fn pitch(ride: &Ride) -> f64 {
-    let sim = ride.sim();
-    let forward = sim.bike().frame_rotation(sim.world()) * DVec3::X;
-    forward.dot(sim.up()).asin().to_degrees()
 }
 
 /// Holds the rider's weight `back` (0–1) with full throttle.
@@ -158,18 +149,7 @@ fn ride_at_a_platform(kind: ControllerKind, wheelie: bool) -> DVec3 {
             rotation: DQuat::IDENTITY,
         },
     };
-    let terrain = Terrain::new(vec![platform, TerrainPiece::flat_ground()]).expect("valid");
-    let config = SimulationConfig {
-        physics: PhysicsModel::Exact,
-        ..SimulationConfig::default()
-    };
-    let spawn = Placement {
-        position: DVec3::new(0.0, 0.02, 0.0),
-        rotation: DQuat::IDENTITY,
-    };
-    let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);
-    ride.planner.optimizer.particles = 10;
-    ride.planner.wait = PlanWait::EveryPlan;
+    let mut ride = common::planned_ride(common::exact_sim_on(vec![platform], 0.02), kind);
     ride.set_intent(Intent::cruise(10.0));
     let centre = |ride: &Ride, part| {
         let sim = ride.sim();

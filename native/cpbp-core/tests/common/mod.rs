@@ -14,7 +14,7 @@ use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::Terrain;
+use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
 
 pub const FRAMES_PER_SECOND: usize = 30;
@@ -40,6 +40,38 @@ pub fn flat_ride_with(config: SimulationConfig) -> Simulation {
         rotation: DQuat::from_rotation_y(0.3),
     };
     Simulation::new(config, Arc::new(Terrain::flat()), spawn)
+}
+
+/// A simulation in the game's physics on `pieces` and endless flat ground, the bike at
+/// rest `height` m up at the origin, facing +x.
+pub fn exact_sim_on(mut pieces: Vec<TerrainPiece>, height: f64) -> Simulation {
+    pieces.push(TerrainPiece::flat_ground());
+    let config = SimulationConfig {
+        physics: PhysicsModel::Exact,
+        ..SimulationConfig::default()
+    };
+    let spawn = Placement {
+        position: DVec3::new(0.0, height, 0.0),
+        rotation: DQuat::IDENTITY,
+    };
+    let terrain = Terrain::new(pieces).expect("valid terrain");
+    Simulation::new(config, Arc::new(terrain), spawn)
+}
+
+/// A `kind` ride of `sim` whose planners plan with 10 trajectories and wait for every
+/// plan, so it repeats exactly.
+pub fn planned_ride(sim: Simulation, kind: ControllerKind) -> Ride {
+    let mut ride = Ride::new(sim, kind);
+    ride.planner.optimizer.particles = 10;
+    ride.planner.wait = PlanWait::EveryPlan;
+    ride
+}
+
+/// The frame's pitch now (degrees, nose up).
+pub fn pitch(ride: &Ride) -> f64 {
+    let sim = ride.sim();
+    let nose = sim.bike().frame_rotation(sim.world()) * DVec3::X;
+    nose.dot(sim.up()).asin().to_degrees()
 }
 
 /// Full throttle towards `kmh`.
