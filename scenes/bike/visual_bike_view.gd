@@ -19,6 +19,10 @@ const UPPER_ARM := BikeSimulation.UPPER_ARM
 const LOWER_ARM := BikeSimulation.LOWER_ARM
 ## Directions in the bike frame.
 const BIKE_FORWARD := Vector3(1, 0, 0)
+## How far out from the mid-plane the thighs are drawn at the hips (m), and a boot's size
+## (length, height, width; VisualFeet draws the leg put down with both).
+const HIP_OUT := 0.13
+const BOOT_SIZE := Vector3(0.26, 0.1, 0.1)
 const BIKE_DOWN := Vector3(0, -1, 0)
 
 ## The simulation to draw; by default the parent.
@@ -241,14 +245,8 @@ func _build_rider() -> void:
 		var knee_out := side * 0.19
 		var first_leg_piece := _pieces.size()
 		_limb(LOWER_LEG, ankle_knee, side * 0.2, knee_out, 0.06, "trousers")
-		_limb(UPPER_LEG, knee_hip, knee_out, side * 0.13, 0.08, "trousers")
-		_box(
-			LOWER_LEG,
-			ankle_knee[0] + Vector3(0.05, -0.02, side * 0.2),
-			Vector3(0.26, 0.1, 0.1),
-			0.0,
-			"boots"
-		)
+		_limb(UPPER_LEG, knee_hip, knee_out, side * HIP_OUT, 0.08, "trousers")
+		_box(LOWER_LEG, ankle_knee[0] + Vector3(0.05, -0.02, side * 0.2), BOOT_SIZE, 0.0, "boots")
 		for piece: Dictionary in _pieces.slice(first_leg_piece):
 			_peg_legs[side].append(piece.node)
 		_limb(UPPER_ARM, shoulder_elbow, side * 0.19, side * 0.27, 0.05, "jacket")

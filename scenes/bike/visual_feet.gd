@@ -7,10 +7,8 @@ extends Node3D
 const FRAME := BikeSimulation.FRAME
 const UPPER_LEG := BikeSimulation.UPPER_LEG
 const LOWER_LEG := BikeSimulation.LOWER_LEG
-## How far out from the mid-plane the drawn hips are (m): VisualBikeView's thighs.
-const HIP_OUT := 0.13
-## The sole's sphere radius is the simulation's; the boot sits on top of it (m).
-const BOOT_SIZE := Vector3(0.26, 0.1, 0.1)
+const HIP_OUT := VisualBikeView.HIP_OUT
+const BOOT_SIZE := VisualBikeView.BOOT_SIZE
 
 ## The simulation to draw, and the VisualBikeView whose peg legs it hides (by default
 ## the parent, so hiding the drawn bike hides these legs too).

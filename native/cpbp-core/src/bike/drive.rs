@@ -61,6 +61,26 @@ impl DriveInput {
     }
 }
 
+/// Whether `controls` drive the rear wheel (a speed target ahead, as the throttle and a
+/// coasting bike set it: `DriveInput::apply`).
+pub fn drives(controls: &Controls) -> bool {
+    controls.get(index::REAR_WHEEL) > 0.0
+}
+
+/// Whether `controls` drive with the throttle open (some force towards the target).
+pub fn throttle_open(controls: &Controls) -> bool {
+    drives(controls) && controls.get(index::FORCE + ForceClass::RearWheel as usize) > 0.0
+}
+
+/// How hard (0–1) `controls` brake: the force holding the rear wheel still, 0 otherwise.
+pub fn brake_level(controls: &Controls) -> f64 {
+    if controls.get(index::REAR_WHEEL) == 0.0 {
+        controls.get(index::FORCE + ForceClass::RearWheel as usize)
+    } else {
+        0.0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -94,6 +114,24 @@ mod tests {
         }
         .apply(0.3, &mut controls);
         assert_eq!(controls.get(index::FORCE + 1), 0.0);
+    }
+
+    #[test]
+    fn the_triggers_read_back_from_the_controls() {
+        let mut controls = Controls::default();
+        let drive = |throttle, brake| DriveInput {
+            throttle,
+            brake,
+            max_speed: 6.0,
+        };
+        drive(0.4, 0.0).apply(0.3, &mut controls);
+        assert!(drives(&controls) && throttle_open(&controls));
+        assert_eq!(brake_level(&controls), 0.0);
+        drive(0.0, 0.0).apply(0.3, &mut controls);
+        assert!(drives(&controls) && !throttle_open(&controls));
+        drive(0.2, 0.7).apply(0.3, &mut controls);
+        assert!(!drives(&controls) && !throttle_open(&controls));
+        assert_eq!(brake_level(&controls), 0.7);
     }
 
     #[test]

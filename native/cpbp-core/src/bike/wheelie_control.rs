@@ -113,6 +113,11 @@ pub fn pitch_request(rider: &RiderPosition, drive: &DriveInput) -> PitchRequest 
 }
 
 impl WheelieControl {
+    /// `hold_headroom` as the rear wheel's spin (rad/s) for wheels of `radius` (m).
+    pub fn headroom_spin(&self, radius: f64) -> f64 {
+        self.hold_headroom / radius
+    }
+
     /// The lift held (0–1) when `asked` with the bike leaned `lean` (rad): all of it
     /// upright, less as the bike topples sideways.
     pub fn held_lift(&self, asked: f64, lean: f64) -> f64 {

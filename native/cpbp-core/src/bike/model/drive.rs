@@ -1,10 +1,11 @@
-//! The rear wheel's motor: the throttle's and brake's targets, through the wheelie
-//! control when the bike has one.
+//! The wheels' motors: the rear's from the throttle's and brake's targets, through the
+//! wheelie control when the bike has one, and the front brake.
 
 use glam::DVec3;
 
 use super::Bike;
 use crate::bike::controls::{index, Controls, ForceClass, MAX_TORQUE};
+use crate::bike::drive::{brake_level, drives};
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
 
@@ -24,14 +25,14 @@ impl Bike {
         up: DVec3,
     ) {
         let c = controls.values();
-        let driving = c[index::REAR_WHEEL] > 0.0;
+        let driving = drives(controls);
         let lift = held.lift;
         match &self.params.wheelie_control {
             Some(control) if held.air != 0.0 => {
                 // Spun up (towards the throttle's speed and the hold's headroom beyond
                 // it, no further) the wheel's reaction lifts the nose; braked, it drops.
                 let target = if held.air > 0.0 {
-                    c[index::REAR_WHEEL].max(0.0) + control.hold_headroom / self.params.wheel_radius
+                    c[index::REAR_WHEEL].max(0.0) + control.headroom_spin(self.params.wheel_radius)
                 } else {
                     0.0
                 };
@@ -45,7 +46,7 @@ impl Bike {
                 // would leave no torque to lift with) and past that lets the wheel run
                 // free rather than brake it; braking, it holds the wheel still.
                 let (target, share) = if share >= 0.0 {
-                    let headroom = control.hold_headroom / self.params.wheel_radius;
+                    let headroom = control.headroom_spin(self.params.wheel_radius);
                     let limit = c[index::REAR_WHEEL] + headroom;
                     let running_free = world.hinge_rate(self.rear_axle) >= limit;
                     (limit, if running_free { 0.0 } else { share })
@@ -69,7 +70,7 @@ impl Bike {
                     // Braking with a front brake too, the rear gets its share of the
                     // trigger (`FrontBrake::rear_share`).
                     _ => match &self.params.front_brake {
-                        Some(front) if c[index::REAR_WHEEL] == 0.0 => front.rear_share,
+                        Some(front) if brake_level(controls) > 0.0 => front.rear_share,
                         _ => 1.0,
                     },
                 };
@@ -96,10 +97,8 @@ impl Bike {
         let Some(brake) = &self.params.front_brake else {
             return;
         };
-        let c = controls.values();
-        let level = c[index::FORCE + ForceClass::RearWheel as usize];
-        let braking = c[index::REAR_WHEEL] == 0.0 && level > 0.0;
-        let share = if !braking {
+        let level = brake_level(controls);
+        let share = if level == 0.0 {
             0.0
         } else if held.stoppie > 0.0 {
             let (ahead, rate) = self.weight_ahead_of_support(world, up, -held.stoppie);

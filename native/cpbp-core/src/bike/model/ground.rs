@@ -5,7 +5,8 @@
 use glam::DVec3;
 
 use super::{from_array, from_quat, Bike, Part};
-use crate::bike::controls::{index, Controls, ForceClass};
+use crate::bike::controls::Controls;
+use crate::bike::drive::throttle_open;
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
 
@@ -65,6 +66,9 @@ impl Bike {
         let Some(control) = &self.params.wheelie_control else {
             return PitchRequest::default();
         };
+        if asked == PitchRequest::default() {
+            return asked;
+        }
         let (rear, front) = self.wheel_contacts(world);
         let lift = if asked.lift > 0.0 && rear {
             control.held_lift(asked.lift, self.lean(world, up))
@@ -108,10 +112,7 @@ impl Bike {
         let (Some(feet), Some(geoms)) = (&self.params.feet, &self.feet) else {
             return;
         };
-        let c = controls.values();
-        let throttle_open =
-            c[index::REAR_WHEEL] > 0.0 && c[index::FORCE + ForceClass::RearWheel as usize] > 0.0;
-        let down = feet.down_at(self.forward_speed(world, up), throttle_open);
+        let down = feet.down_at(self.forward_speed(world, up), throttle_open(controls));
         for foot in geoms {
             world.set_foot_down(*foot, down);
         }
