@@ -23,6 +23,7 @@ const DEFAULTS := {
 	&"max_speed_kmh": 40.0,
 	&"auto_speed_kmh": 15,
 	&"auto_accelerate": false,
+	&"camera": "chase",
 }
 const SECTION := "game"
 ## Settings files saved before controllers were named hold BikeSimulation's old integers.
@@ -47,6 +48,9 @@ func reload() -> void:
 		var value: Variant = config.get_value(SECTION, key, DEFAULTS[key])
 		if key == &"controller":
 			value = _controller_name(value)
+		elif key == &"camera" and not FollowCamera.MODES.has(value):
+			push_warning("settings: no camera mode is called %s; using the default" % value)
+			value = DEFAULTS[key]
 		if typeof(value) == typeof(DEFAULTS[key]):
 			_values[key] = value
 		elif typeof(DEFAULTS[key]) == TYPE_FLOAT and typeof(value) == TYPE_INT:
@@ -85,6 +89,9 @@ func set_value(key: StringName, value: Variant) -> void:
 		return
 	if key == &"controller" and not NativeModule.controller_names().has(value):
 		push_error("settings: no controller is called '%s'" % value)
+		return
+	if key == &"camera" and not FollowCamera.MODES.has(value):
+		push_error("settings: no camera mode is called '%s'" % value)
 		return
 	if _values[key] == value:
 		return

@@ -24,6 +24,9 @@ const BIKE_FORWARD := Vector3(1, 0, 0)
 const HIP_OUT := 0.13
 const BOOT_SIZE := Vector3(0.26, 0.1, 0.1)
 const BIKE_DOWN := Vector3(0, -1, 0)
+## Render layer of the neck, helmet and visor alone, so a camera at the rider's eyes can leave
+## them out (layer 20, the last one the editor names).
+const HEAD_LAYER := 1 << 19
 
 ## The simulation to draw; by default the parent.
 @export var simulation_path: NodePath = ^".."
@@ -45,6 +48,8 @@ var _shock_rest_length := 1.0
 ## One stanchion (on the fork) and the lower leg it slides in, to measure the drawn fork.
 var _stanchion: Node3D
 var _fork_leg: Node3D
+## The helmet, for the view from the rider's eyes.
+var _helmet: Node3D
 
 
 func _ready() -> void:
@@ -99,6 +104,14 @@ func drawn_fork_length() -> float:
 func show_leg_on_peg(side: float, shown: bool) -> void:
 	for node: Node3D in _peg_legs[signf(side)]:
 		node.visible = shown
+
+
+## Where the rider's eyes are now (global), inside the helmet: a camera there leaves out
+## HEAD_LAYER.
+func eye_point() -> Vector3:
+	# The helmet is authored in Godot's axes: −z is the rider's forward.
+	var helmet := _helmet.global_transform
+	return helmet.origin - helmet.basis.z.normalized() * 0.08 + helmet.basis.y.normalized() * 0.02
 
 
 ## How long the rear shock's coil is drawn now (m, between its mounts).
@@ -265,7 +278,11 @@ func _build_rider() -> void:
 	helmet.height = 0.28
 	var head := hip + along * 0.66
 	_add(TORSO, helmet, "helmet", Transform3D(_bike_basis(), _world_of(head)))
+	_helmet = _pieces[-1].node
 	_ellipsoid(TORSO, head + Vector3(0.09, 0.0, 0.0), Vector3(0.1, 0.11, 0.2), "visor")
+	# Neck, helmet and visor.
+	for head_piece: Dictionary in _pieces.slice(-3):
+		(head_piece.node as VisualInstance3D).layers = HEAD_LAYER
 
 
 ## The two ends (bike frame) of a rider body's capsule, the one furthest along

@@ -1,18 +1,39 @@
 class_name FollowCamera
 extends Camera3D
-## Follows the bike from behind and a little to the side (the thesis's camera, §6.2, so
-## both rider and road stay in view), smoothly and never upside down. The d-pad (or
-## numpad 8/4/6/2, or dragging with the right mouse button) orbits around the bike; the
-## view drifts back behind it when let go. The camera never goes through the level's
-## geometry: it moves in front of whatever is between it and the bike.
+## Follows the bike in one of three modes (`mode`, cycled by the camera button):
+## **chase** from behind and a little to the side (the thesis's camera, §6.2, so both rider
+## and road stay in view), **low side** from beside the bike near the ground, as a
+## trackside camera, and **helmet** from the rider's eyes. Smoothly, never upside down.
+## The d-pad (or numpad 8/4/6/2, or dragging with the right mouse button) orbits around
+## the bike, or turns the rider's head in the helmet view; the view drifts back when let
+## go. The camera never goes through the level's geometry: it moves in front of whatever
+## is between it and the bike.
+
+## The modes, in the order the camera button cycles them; saved in the settings by name.
+const MODES: Array[String] = ["chase", "low_side", "helmet"]
+const MODE_LABELS := {chase = "Chase", low_side = "Low side", helmet = "Helmet"}
+## Metres behind, beside (to the right) and above the bike's centre of mass, per mode
+## that looks at the bike from outside.
+const OFFSETS := {chase = Vector3(2.6, 1.5, 4.2), low_side = Vector3(3.4, -0.25, 1.4)}
+## Share of the bike's lean the helmet view rolls with: riders keep their eyes nearer
+## level than the bike.
+const HELMET_ROLL := 0.5
+## How far the helmet view looks down (rad), so the bars and the road ahead are in view.
+const HELMET_PITCH := 0.25
 
 ## Lowest and highest pitch of the orbit (rad) relative to the default view.
 const PITCH_LIMITS := Vector2(-0.25, 1.0)
 ## Distance kept from geometry between the camera and the bike (m).
 const CLEARANCE := 0.3
 
-## Metres behind, beside (to the right) and above the bike's centre of mass.
-@export var offset := Vector3(2.6, 1.5, 4.2)
+## How the camera follows the bike: one of MODES.
+@export_enum("chase", "low_side", "helmet") var mode := "chase":
+	set(value):
+		if not MODES.has(value):
+			push_error("FollowCamera: no camera mode is called '%s'" % value)
+			return
+		mode = value
+		_placed = false
 ## How quickly the camera catches up (1/s); higher is stiffer.
 @export var stiffness := 4.0
 ## Orbit speed with the d-pad held (rad/s).
@@ -36,6 +57,14 @@ func _process(delta: float) -> void:
 	if target == null or not target.is_running():
 		return
 	_orbit_from_buttons(delta)
+	# From the rider's eyes the helmet is left out of the picture.
+	if mode == "helmet":
+		cull_mask &= ~VisualBikeView.HEAD_LAYER
+	else:
+		cull_mask |= VisualBikeView.HEAD_LAYER
+	if mode == "helmet":
+		_look_from_helmet(delta)
+		return
 	var centre := target.get_center_of_mass()
 	var frame := target.get_body_transform(BikeSimulation.FRAME)
 	# The frame's forward (−z of the bike's node frame is +x of its body frame).
@@ -47,11 +76,46 @@ func _process(delta: float) -> void:
 		var blended := _heading.lerp(forward.normalized(), clampf(stiffness * delta, 0.0, 1.0))
 		if blended.length() > 1e-3:
 			_heading = blended.normalized()
-	var wanted := centre + _offset_around(_heading)
+	var wanted := centre + _offset_around(_heading, OFFSETS[mode])
 	var catch_up := clampf(stiffness * delta, 0.0, 1.0) if _placed else 1.0
 	global_position = _unblocked(centre, global_position.lerp(wanted, catch_up))
 	_placed = true
-	look_at(centre + _heading * 2.0 * cos(orbit.x), Vector3.UP)
+	# The chase view looks ahead of the bike; the low one at the bike, which fills it.
+	var ahead := 2.0 if mode == "chase" else 0.6
+	look_at(centre + _heading * ahead * cos(orbit.x), Vector3.UP)
+
+
+## Cycles to the next mode (`step` 1) or the previous (−1); returns its name.
+func cycle_mode(step := 1) -> String:
+	mode = MODES[posmod(MODES.find(mode) + step, MODES.size())]
+	return mode
+
+
+## From the rider's eyes (the drawn helmet's visor), looking along the bike's heading and
+## rolling with part of its lean; the orbit turns the head.
+func _look_from_helmet(delta: float) -> void:
+	var frame := target.get_body_transform(BikeSimulation.FRAME)
+	var forward := frame.basis.x.normalized()
+	var up := Vector3.UP.lerp(frame.basis.y.normalized(), HELMET_ROLL).normalized()
+	var right := forward.cross(up).normalized()
+	var looking := Basis(right, right.cross(forward), -forward)
+	looking = looking.rotated(up, orbit.x) if orbit.x != 0.0 else looking
+	looking = looking * Basis(Vector3.RIGHT, orbit.y * 0.5 - HELMET_PITCH)
+	var eye := _eye_point()
+	var catch_up := clampf(4.0 * stiffness * delta, 0.0, 1.0) if _placed else 1.0
+	global_basis = global_basis.slerp(looking.orthonormalized(), catch_up).orthonormalized()
+	global_position = eye
+	_placed = true
+
+
+## Where the rider's eyes are: the drawn helmet's visor, or above the torso when the
+## drawn bike is not there.
+func _eye_point() -> Vector3:
+	var drawn := target.get_node_or_null(^"VisualBikeView") as VisualBikeView
+	if drawn != null and drawn.is_node_ready():
+		return drawn.eye_point()
+	var torso := target.get_body_transform(BikeSimulation.TORSO)
+	return torso.origin + Vector3.UP * 0.6
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -77,7 +141,7 @@ func _orbit_from_buttons(delta: float) -> void:
 
 
 ## The camera's offset from the bike for a heading, turned by the orbit.
-func _offset_around(heading: Vector3) -> Vector3:
+func _offset_around(heading: Vector3, offset: Vector3) -> Vector3:
 	var right := heading.cross(Vector3.UP).normalized()
 	var behind := -heading * offset.z + right * offset.x
 	var pitched := behind.length() * cos(orbit.y)

@@ -99,6 +99,9 @@ func _unhandled_input(event: InputEvent) -> void:
 		var current := cycle.find(Settings.get_value(&"controller"))
 		Settings.set_value(&"controller", cycle[(current + 1) % cycle.size()])
 		_hud.announce("Controller: %s" % controller_name())
+	elif event.is_action_pressed(&"cycle_camera"):
+		Settings.set_value(&"camera", _camera.cycle_mode())
+		_hud.announce("Camera: %s" % FollowCamera.MODE_LABELS[_camera.mode])
 	elif event.is_action_pressed(&"toggle_trajectories"):
 		Settings.set_value(&"show_trajectories", not Settings.get_value(&"show_trajectories"))
 	elif event.is_action_pressed(&"toggle_auto_accelerate") and not level.automatic:
@@ -186,6 +189,8 @@ func _apply_setting(key: StringName) -> void:
 			_driver.auto_accelerate = value or level.automatic
 		&"show_trajectories":
 			bike.get_node(^"TrajectoryView").visible = value
+		&"camera":
+			_camera.mode = value
 		&"physical_model":
 			bike.get_node(^"PhysicalBikeView").visible = value
 			bike.get_node(^"VisualBikeView").visible = not value

@@ -19,6 +19,7 @@ Right stick / I J K L   rider's weight (fore, aft, sides)
   in the air             nose up (back) or down (forward)
   forward + brake        stoppie
 D-pad / numpad 8 4 6 2, right mouse drag   camera
+Left stick click / Tab   camera: chase, low side, helmet
 Start / C        cycle controller
 Back / Esc, P    pause
 B / R            respawn

@@ -74,3 +74,17 @@ func test_a_lap_gate_counts_forward_crossings_within_its_width() -> void:
 	assert_eq(gate.crossing(Vector3(5, 0, 1), Vector3(5, 0, -1)), 0, "outside the posts")
 	assert_eq(gate.crossing(Vector3(0, 0, 2), Vector3(0, 0, 1)), 0, "not reached")
 	gate.free()
+
+
+func test_the_camera_mode_is_saved_and_an_unknown_one_refused() -> void:
+	Settings.set_value(&"camera", "helmet")
+	Settings.reload()
+	assert_eq(Settings.get_value(&"camera"), "helmet")
+	expect_error("no camera mode is called")
+	Settings.set_value(&"camera", "drone")
+	assert_eq(Settings.get_value(&"camera"), "helmet")
+	var config := ConfigFile.new()
+	config.set_value(Settings.SECTION, "camera", "drone")
+	config.save(SettingsSandbox.SETTINGS)
+	Settings.reload()
+	assert_eq(Settings.get_value(&"camera"), "chase", "a hand-edited unknown mode: the default")

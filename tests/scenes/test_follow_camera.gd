@@ -59,3 +59,29 @@ func test_the_d_pad_orbits_and_the_view_drifts_back() -> void:
 	assert_lt(_camera.orbit.x, -0.5, "orbited")
 	await wait_frames(300)
 	assert_almost_eq(_camera.orbit.x, 0.0, 0.1, "back behind the bike after a while")
+
+
+func test_the_low_side_view_looks_at_the_bike_from_beside_it_near_the_ground() -> void:
+	_camera.mode = "low_side"
+	_bike.max_speed_kmh = 15.0
+	_bike.set_drive(1.0, 0.0)
+	await wait_frames(120)
+	var centre := _bike.get_center_of_mass()
+	var forward := _bike.get_body_transform(BikeSimulation.FRAME).basis.x.normalized()
+	var right := forward.cross(Vector3.UP).normalized()
+	var to_camera := _camera.global_position - centre
+	assert_lt(_camera.global_position.y, centre.y, "below the rider's centre of mass")
+	assert_gt(to_camera.dot(right), 2.5, "well out to the right of the bike")
+	var to_bike := (centre - _camera.global_position).normalized()
+	assert_gt(-_camera.global_basis.z.dot(to_bike), 0.9, "looking at the bike")
+
+
+func test_the_camera_button_cycles_the_modes_in_order() -> void:
+	var seen: Array[String] = []
+	for i in FollowCamera.MODES.size():
+		seen.append(_camera.cycle_mode())
+	assert_eq(seen, ["low_side", "helmet", "chase"])
+	assert_eq(_camera.cycle_mode(-1), "helmet", "and back")
+	expect_error("no camera mode")
+	_camera.mode = "drone"
+	assert_eq(_camera.mode, "helmet", "an unknown mode is refused")

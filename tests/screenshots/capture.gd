@@ -1,7 +1,7 @@
 extends Node
 ## Opens a scene in a real window, waits for it to render, saves a screenshot and fails
 ## when the picture is blank (one flat colour, or nearly so): a scene that loads but shows
-## a grey screen is a bug. Run under Xvfb by tools/screenshot.sh.
+## a grey screen is a bug. Run under Xvfb by tools/screenshot.sh, with scratch settings.
 ##
 ## Arguments after `--`: `--scene=res://…`, `--out=PATH.png`, `--frames=N` (default 30),
 ## and to stage the picture: `--set=property=value` (on the scene's root before it enters
@@ -26,6 +26,9 @@ func _ready() -> void:
 	if options.scene.is_empty() or options.out.is_empty():
 		_quit_with("usage: -- --scene=res://… --out=PATH.png [--frames=N]", 2)
 		return
+	# Pictures start from the default settings and no records, whatever this machine's
+	# player last chose (a camera mode, a controller), so they are repeatable.
+	SettingsSandbox.enter()
 	var packed := load(options.scene) as PackedScene
 	if packed == null:
 		_quit_with("cannot load scene %s" % options.scene, 1)
