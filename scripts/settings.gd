@@ -24,6 +24,8 @@ const DEFAULTS := {
 	&"auto_speed_kmh": 15,
 	&"auto_accelerate": false,
 	&"camera": "chase",
+	&"master_volume": 0.8,
+	&"engine_volume": 1.0,
 }
 const SECTION := "game"
 ## Settings files saved before controllers were named hold BikeSimulation's old integers.
@@ -58,6 +60,7 @@ func reload() -> void:
 		else:
 			push_warning("settings: ignoring %s = %s (wrong type)" % [key, value])
 	_records = ConfigStore.load_or_empty(records_path)
+	_apply_master_volume()
 
 
 ## A saved controller as a name players can pick: old integers become names, anything
@@ -100,7 +103,16 @@ func set_value(key: StringName, value: Variant) -> void:
 	for k: StringName in _values:
 		config.set_value(SECTION, k, _values[k])
 	ConfigStore.save(config, settings_path)
+	if key == &"master_volume":
+		_apply_master_volume()
 	changed.emit(key)
+
+
+## The master bus plays at the player's volume (silent at 0).
+func _apply_master_volume() -> void:
+	var volume := clampf(get_value(&"master_volume"), 0.0, 1.0)
+	AudioServer.set_bus_mute(0, volume <= 0.0)
+	AudioServer.set_bus_volume_db(0, linear_to_db(maxf(volume, 1e-4)))
 
 
 ## Best lap time (s) on `level`, or INF when there is none.

@@ -30,11 +30,12 @@ step "rustfmt"              tools/cargo fmt --all --check
 step "clippy"               tools/cargo clippy --workspace --all-targets --quiet -- -D warnings
 step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot
 # The controllers' ride tests simulate minutes of planning: fast only in a release build.
-step "controller rides (release)" tools/cargo test --release -p cpbp-core --test optimizer --test anytime --test reproducible --test ride --test physics_models --test sampling_planners --test rider_position --test suspension --test wheelie_control --test feet --test air_control --test front_brake
+step "controller rides (release)" tools/cargo test --release -p cpbp-core --test optimizer --test anytime --test reproducible --test ride --test physics_models --test sampling_planners --test rider_position --test suspension --test wheelie_control --test feet --test air_control --test front_brake --test contact_patch
 # The benchmark bicycle built from the game's bodies and tyres is the paper's bicycle.
 step "bicycle benchmark"    env PYTHONPATH=tools .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
 # The experiment's statistics, results file and scheduling (no Godot needed).
 step "experiment unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest discover -s tools/cpbp_experiment/tests -t tools
+step "sound check unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest sound_check.tests.test_sound_check
 step "planner scenario unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest planner_scenarios.tests.test_planner_scenarios
 step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdlint"
 step "gdformat"             bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdformat --check"
@@ -59,6 +60,9 @@ screenshots() {
 }
 
 step "screenshots (Xvfb)"   screenshots
+# The engine recorded by Godot's movie writer sounds at its firing frequency, rising with
+# speed; a paused game is exactly silent.
+step "bike sound (Xvfb)"    tools/sound-check.sh
 step "export + smoke run"   tools/export.sh
 
 printf '\n%s\n' "${summary[@]}"

@@ -67,6 +67,8 @@ func _build(args: ExperimentArgs) -> bool:
 	_bike.motor_force = Settings.DEFAULTS[&"motor_force"]
 	# Wait for every plan: no step uses a late plan, and a ride repeats exactly.
 	_bike.wait_for_every_plan = true
+	# Nothing is heard either.
+	_bike.get_node(^"Sound").free()
 	add_child(_bike)
 	_level.attach(_bike)
 	# Only TestRun drives the bike; nothing is drawn.

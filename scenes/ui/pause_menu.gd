@@ -1,10 +1,10 @@
 class_name PauseMenu
 extends CanvasLayer
 ## The pause menu (Back / Esc): stops the simulation and offers resume, the trajectory
-## view, physical or visual model, motor force, top speed, controller, trajectory count,
-## auto-accelerate speed, restart and quit; lists the controls. Every change is saved in
-## the settings at once. Works with a gamepad alone (d-pad/stick to move, A to choose,
-## B or Back to resume).
+## view, physical or visual model, motor force, top speed, volume (all and the engine's),
+## controller, trajectory count, auto-accelerate speed, restart and quit; lists the
+## controls. Every change is saved in the settings at once. Works with a gamepad alone
+## (d-pad/stick to move, A to choose, B or Back to resume).
 
 ## The player asked to start the attempt again, or to leave for the start menu.
 signal restart_requested
@@ -37,6 +37,10 @@ var _syncing := false
 @onready var _motor_force_label: Label = %MotorForceLabel
 @onready var _max_speed: HSlider = %MaxSpeed
 @onready var _max_speed_label: Label = %MaxSpeedLabel
+@onready var _master_volume: HSlider = %MasterVolume
+@onready var _master_volume_label: Label = %MasterVolumeLabel
+@onready var _engine_volume: HSlider = %EngineVolume
+@onready var _engine_volume_label: Label = %EngineVolumeLabel
 @onready var _controller: OptionButton = %Controller
 @onready var _trajectory_count: OptionButton = %TrajectoryCount
 @onready var _auto_speed: OptionButton = %AutoSpeed
@@ -59,6 +63,8 @@ func _ready() -> void:
 	_physical.toggled.connect(_save.bind(&"physical_model"))
 	_motor_force.value_changed.connect(_save.bind(&"motor_force"))
 	_max_speed.value_changed.connect(_save.bind(&"max_speed_kmh"))
+	_master_volume.value_changed.connect(_save.bind(&"master_volume"))
+	_engine_volume.value_changed.connect(_save.bind(&"engine_volume"))
 	_controller.item_selected.connect(
 		func(i: int) -> void: _save(NativeModule.controller_names()[i], &"controller")
 	)
@@ -96,6 +102,8 @@ func _sync() -> void:
 	_physical.button_pressed = Settings.get_value(&"physical_model")
 	_motor_force.value = Settings.get_value(&"motor_force")
 	_max_speed.value = Settings.get_value(&"max_speed_kmh")
+	_master_volume.value = Settings.get_value(&"master_volume")
+	_engine_volume.value = Settings.get_value(&"engine_volume")
 	_controller.selected = maxi(
 		NativeModule.controller_names().find(Settings.get_value(&"controller")), 0
 	)
@@ -117,6 +125,8 @@ func _save(value: Variant, key: StringName) -> void:
 func _update_labels() -> void:
 	_motor_force_label.text = "Motor force: %d %%" % roundi(_motor_force.value * 100.0)
 	_max_speed_label.text = "Top speed: %d km/h" % roundi(_max_speed.value)
+	_master_volume_label.text = "Volume: %d %%" % roundi(_master_volume.value * 100.0)
+	_engine_volume_label.text = "Engine: %d %%" % roundi(_engine_volume.value * 100.0)
 
 
 func _on_restart() -> void:

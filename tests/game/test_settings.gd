@@ -88,3 +88,13 @@ func test_the_camera_mode_is_saved_and_an_unknown_one_refused() -> void:
 	config.save(SettingsSandbox.SETTINGS)
 	Settings.reload()
 	assert_eq(Settings.get_value(&"camera"), "chase", "a hand-edited unknown mode: the default")
+
+
+func test_the_volume_is_the_master_bus_and_zero_mutes_it() -> void:
+	Settings.set_value(&"master_volume", 0.5)
+	assert_almost_eq(AudioServer.get_bus_volume_db(0), linear_to_db(0.5), 0.01)
+	assert_false(AudioServer.is_bus_mute(0))
+	Settings.set_value(&"master_volume", 0.0)
+	assert_true(AudioServer.is_bus_mute(0), "silent at 0")
+	Settings.reload()
+	assert_true(AudioServer.is_bus_mute(0), "and still after a restart")

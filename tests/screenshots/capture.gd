@@ -117,4 +117,4 @@ func _picture_stats(image: Image) -> Dictionary:
 func _quit_with(message: String, code: int) -> void:
 	if not message.is_empty():
 		printerr("capture: %s" % message)
-	get_tree().quit(code)
+	CleanExit.quit(get_tree(), code)

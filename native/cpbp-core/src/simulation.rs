@@ -65,6 +65,8 @@ pub struct Simulation {
     crash: CrashMonitor,
     crashed: Option<CrashCause>,
     airborne_for: f64,
+    /// The ground's blow in the last step beyond the weight's share (N·s along up).
+    ground_blow: f64,
     spawn: Placement,
 }
 
@@ -82,6 +84,7 @@ impl Simulation {
             crash: CrashMonitor::default(),
             crashed: None,
             airborne_for: 0.0,
+            ground_blow: 0.0,
             spawn,
         }
     }
@@ -150,6 +153,8 @@ impl Simulation {
         self.bike
             .apply_pitching(&mut self.world, &self.controls, held, up);
         let mut airborne_at_start = self.airborne_for > AIRBORNE_AFTER;
+        let momentum_before = self.bike.momentum(&self.world);
+        self.ground_blow = 0.0;
         for _ in 0..self.config.substeps {
             self.world.step(dt);
             if let Some(reason) = self.bike.explosion(&self.world) {
@@ -173,7 +178,15 @@ impl Simulation {
                 }
             }
         }
+        let momentum_gained = self.bike.momentum(&self.world) - momentum_before;
+        self.ground_blow = momentum_gained.dot(up).max(0.0);
         events
+    }
+
+    /// How hard the ground pushed the bike up in the last step beyond carrying its weight
+    /// (N·s): a landing's or an impact's blow, about zero riding along.
+    pub fn ground_blow(&self) -> f64 {
+        self.ground_blow
     }
 
     /// Puts the bike at rest at `placement` (and makes that the spawn point). The ride
@@ -188,6 +201,7 @@ impl Simulation {
         self.crash.reset();
         self.crashed = None;
         self.airborne_for = 0.0;
+        self.ground_blow = 0.0;
     }
 
     /// Shoves the bike with an impulse (N·s, world frame) through the frame's centre of

@@ -5,6 +5,7 @@ mod bike_queries;
 mod bike_rider;
 mod bike_settings;
 mod bike_simulation;
+mod bike_synth;
 mod controller_choice;
 mod convert;
 mod native_info;

@@ -2,6 +2,7 @@
 //! controllers need: transforms, speed, lean, steering, contacts, crash.
 
 mod build;
+mod contact_patch;
 mod drive;
 mod ground;
 mod rider;

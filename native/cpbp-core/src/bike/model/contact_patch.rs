@@ -1,0 +1,49 @@
+//! How the tyres move over the ground and how hard the ground pushes back, as the game's
+//! sound hears them: the rear rim's speed (the engine turns with it), each tyre's slide at
+//! its contact patch, and the bike's momentum (whose change in a step is the ground's
+//! blow).
+
+use glam::DVec3;
+
+use super::{from_array, Bike, Part};
+use crate::ode::World;
+
+impl Bike {
+    /// Speed of the rear tyre's rim (m/s, forward positive): the wheel's spin about its
+    /// axle times its radius, whether or not it grips.
+    pub fn rear_rim_speed(&self, world: &World) -> f64 {
+        world.hinge_rate(self.rear_axle) * self.params.wheel_radius
+    }
+
+    /// How fast each tyre (rear, front) slides over the ground at its contact point
+    /// (m/s): the contact's velocity as part of the spinning wheel, across `up`. Zero for
+    /// a tyre off the ground and for one rolling without slip.
+    pub fn tyre_slip(&self, world: &World, up: DVec3) -> (f64, f64) {
+        let (rear_contact, front_contact) = self.tyre_contacts(world, up);
+        let slip = |part: Part, contact: DVec3| {
+            let body = self.body(part);
+            if !world.body_touches_static(body) {
+                return 0.0;
+            }
+            let centre = from_array(world.body_position(body));
+            let velocity = from_array(world.body_linear_velocity(body))
+                + from_array(world.body_angular_velocity(body)).cross(contact - centre);
+            (velocity - up * velocity.dot(up)).length()
+        };
+        (
+            slip(Part::RearWheel, rear_contact),
+            slip(Part::FrontWheel, front_contact),
+        )
+    }
+
+    /// Linear momentum of bike and rider (N·s). Over a step, gravity and the ground are
+    /// the only outside forces, so its change along up is the ground's blow beyond what
+    /// carries the weight: about zero riding along, a spike on landing.
+    pub fn momentum(&self, world: &World) -> DVec3 {
+        let mass: f64 = self
+            .own_parts()
+            .map(|p| world.body_mass(self.body(p)))
+            .sum();
+        self.center_of_mass_velocity(world) * mass
+    }
+}

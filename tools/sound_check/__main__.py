@@ -1,0 +1,49 @@
+"""python -m sound_check RIDE.wav RIDE.csv: fails unless the recorded engine sounds at
+its logged firing frequency (so its pitch rises with speed in every gear), is heard while
+riding, and pausing the game is exactly silent."""
+
+import sys
+
+import numpy as np
+
+from . import analysis
+
+# At least this share of windows within TOLERANCE of the logged firing frequency.
+SHARE, TOLERANCE = 0.9, 0.05
+
+
+def main(argv: list[str]) -> int:
+    if len(argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    rec = analysis.load(*argv)
+    lag, windows = analysis.best_lag(rec)
+    close = [w for w in windows if w.error < TOLERANCE]
+    print(f"sound: {rec.rate} Hz, {len(rec.samples) / rec.rate:.1f} s; "
+          f"sound {lag} frames behind the log")
+    for w in windows[::3]:
+        print(f"  frame {w.first_frame:4d}  {w.speed * 3.6:5.1f} km/h  gear {w.gear}  "
+              f"firing {w.expected:6.1f} Hz  heard {w.heard:6.1f} Hz")
+    failures = []
+    if len(windows) < 10 or len(close) < SHARE * len(windows):
+        failures.append(f"only {len(close)} of {len(windows)} windows sound within "
+                        f"{TOLERANCE:.0%} of the firing frequency")
+    pairs, higher = analysis.rises_with_speed(windows)
+    print(f"  {higher} of {pairs} pairs of windows in one gear sound higher at the higher speed")
+    if pairs < 10 or higher < SHARE * pairs:
+        failures.append(f"the pitch rises with speed in only {higher} of {pairs} pairs")
+    loudness = analysis.riding_rms(rec)
+    print(f"  riding: RMS {loudness:.3f}")
+    if loudness < 0.02:
+        failures.append(f"riding is nearly silent (RMS {loudness:.4f})")
+    tail = analysis.paused_tail(rec)
+    print(f"  paused: {len(tail)} samples, loudest {np.abs(tail).max() if len(tail) else 0:.6f}")
+    if len(tail) < rec.rate // 2 or np.any(tail != 0.0):
+        failures.append("pausing the game is not exactly silent")
+    for failure in failures:
+        print(f"sound check: {failure}", file=sys.stderr)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
