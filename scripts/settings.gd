@@ -1,7 +1,7 @@
 extends Node
 ## The player's settings and records (autoload `Settings`). Every change is saved at once,
-## atomically, to `user://settings.cfg`, and best laps to `user://records.cfg`, so a crash
-## or a kill loses nothing.
+## atomically, to `user://settings.cfg`, and best laps to `user://records.cfg` (their
+## ghosts under `user://ghosts/`), so a crash or a kill loses nothing.
 
 ## A setting changed (by a menu or by a key); `key` is its name.
 signal changed(key: StringName)
@@ -33,6 +33,8 @@ const LEGACY_CONTROLLERS: Array[String] = ["arcade", "manual", "optimizer", "com
 
 var settings_path := "user://settings.cfg"
 var records_path := "user://records.cfg"
+## Where ghosts of best laps are kept, one file a level (`GhostFile`).
+var ghosts_dir := "user://ghosts"
 
 var _values := {}
 var _records := ConfigFile.new()
@@ -113,6 +115,11 @@ func _apply_master_volume() -> void:
 	var volume := clampf(get_value(&"master_volume"), 0.0, 1.0)
 	AudioServer.set_bus_mute(0, volume <= 0.0)
 	AudioServer.set_bus_volume_db(0, linear_to_db(maxf(volume, 1e-4)))
+
+
+## The file the ghost of the best lap on `level` is kept in.
+func ghost_path(level: String) -> String:
+	return ghosts_dir.path_join(level.validate_filename() + ".ghost")
 
 
 ## Best lap time (s) on `level`, or INF when there is none.

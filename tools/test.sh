@@ -41,6 +41,8 @@ step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_file
 step "gdformat"             bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdformat --check"
 step "test runner self-test" tools/test-runner-selftest.sh
 step "GDScript suites"      godot_suites
+# Settings, records and a ghost saved in a loop and killed with SIGKILL read back whole.
+step "saves survive kill -9" tools/kill-test.sh 8
 # Quick mode with real workers: a run killed part-way resumes with nothing lost or doubled.
 step "experiment quick run" env PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_quick_run
 # An attempt repeats exactly (fresh or after other rides, 1 or 2 threads); platforms do not
@@ -56,9 +58,19 @@ screenshots() {
     && tools/screenshot.sh $game build/screenshots/skate-park.png 150 \
          --set=level_path=$levels/skate_park/skate_park.tscn --tap=next_spawn@5 --hold=throttle:0.6 \
     && tools/screenshot.sh $game build/screenshots/pause-menu.png 60 \
-         --set=level_path=$levels/track/track.tscn --tap=pause@40
+         --set=level_path=$levels/track/track.tscn --tap=pause@40 \
+    && tools/screenshot.sh $game build/screenshots/camera-low-side.png 200 \
+         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 --hold=steer_right:0.4 \
+         --tap=cycle_camera@5 \
+    && tools/screenshot.sh $game build/screenshots/camera-helmet.png 200 \
+         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 --hold=steer_right:0.4 \
+         --tap=cycle_camera@5 --tap=cycle_camera@8 \
+    && tools/screenshot.sh $game build/screenshots/ghost-race.png 190 \
+         --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 \
+         "--copy=res://build/ghosts/track.ghost>user://test-ghosts/track.ghost"
 }
 
+# The ghost race races the lap the bot rode in the GDScript suites (build/ghosts/).
 step "screenshots (Xvfb)"   screenshots
 # The engine recorded by Godot's movie writer sounds at its firing frequency, rising with
 # speed; a paused game is exactly silent.

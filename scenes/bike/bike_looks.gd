@@ -1,7 +1,7 @@
 class_name BikeLooks
 extends RefCounted
 ## The materials the drawn bike and rider are made of, by name: one shared material per
-## look, made on first use.
+## look, made on first use, and a see-through one for ghosts.
 
 const COLOURS := {
 	tyre = Color(0.06, 0.06, 0.07),
@@ -24,7 +24,12 @@ const COLOURS := {
 	visor = Color(0.05, 0.06, 0.1),
 }
 
+## What a ghost's pieces look like: their colour washed towards this, at this opacity.
+const GHOST_TINT := Color(0.55, 0.8, 1.0)
+const GHOST_ALPHA := 0.35
+
 static var _made := {}
+static var _ghosts := {}
 
 
 ## The material of `look` (magenta for a look nobody defined, so it shows).
@@ -39,4 +44,17 @@ static func material(look: String) -> StandardMaterial3D:
 		made.emission_enabled = true
 		made.emission = made.albedo_color
 	_made[look] = made
+	return made
+
+
+## The see-through version of `look` a ghost is drawn in: lit, tinted, casting no shadow.
+static func ghost_material(look: String) -> StandardMaterial3D:
+	if _ghosts.has(look):
+		return _ghosts[look]
+	var made := material(look).duplicate() as StandardMaterial3D
+	made.albedo_color = made.albedo_color.lerp(GHOST_TINT, 0.5)
+	made.albedo_color.a = GHOST_ALPHA
+	made.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
+	made.metallic = 0.0
+	_ghosts[look] = made
 	return made

@@ -30,6 +30,9 @@ const HEAD_LAYER := 1 << 19
 
 ## The simulation to draw; by default the parent.
 @export var simulation_path: NodePath = ^".."
+## Drawn see-through, posed by `show_pose` (a recording) instead of following the
+## simulation, which only gives the shapes and the rest pose.
+@export var ghost := false
 
 var _simulation: BikeSimulation
 ## The bike node's transform when the bodies were at rest: bike frame → world.
@@ -71,15 +74,12 @@ func _ready() -> void:
 
 
 func _process(_delta: float) -> void:
-	if visible:
+	if visible and not ghost:
 		_follow()
 
 
-func _follow() -> void:
-	# One native call per body, not per piece: some sixty pieces ride on eleven bodies.
-	var bodies: Array[Transform3D] = []
-	for body in _simulation.get_body_count():
-		bodies.append(_simulation.get_body_transform(body))
+## Puts every piece on the bodies at `bodies` (global transforms, in body order).
+func show_pose(bodies: Array[Transform3D]) -> void:
 	for piece: Dictionary in _pieces:
 		(piece.node as Node3D).global_transform = bodies[piece.body] * (piece.offset as Transform3D)
 	# The coil between its mounts: it shortens as the swingarm rises.
@@ -90,6 +90,14 @@ func _follow() -> void:
 	_shock.global_transform = Transform3D(
 		basis.scaled_local(Vector3(1, stretch, 1)), (top + bottom) / 2.0
 	)
+
+
+func _follow() -> void:
+	# One native call per body, not per piece: some sixty pieces ride on eleven bodies.
+	var bodies: Array[Transform3D] = []
+	for body in _simulation.get_body_count():
+		bodies.append(_simulation.get_body_transform(body))
+	show_pose(bodies)
 
 
 ## How long the fork is drawn now (m, from the middle of a lower leg up its axis to the
@@ -345,7 +353,11 @@ func _ellipsoid(body: int, centre: Vector3, size: Vector3, look: String) -> void
 func _add(body: int, mesh: Mesh, look: String, world_at_rest: Transform3D) -> void:
 	var node := MeshInstance3D.new()
 	node.mesh = mesh
-	node.material_override = BikeLooks.material(look)
+	if ghost:
+		node.material_override = BikeLooks.ghost_material(look)
+		node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+	else:
+		node.material_override = BikeLooks.material(look)
 	node.top_level = true
 	node.name = "%s_%d" % [look, _pieces.size()]
 	add_child(node)

@@ -15,6 +15,8 @@ const RESULT_PAUSE := 2.5
 
 var level: Level
 var bike: BikeSimulation
+## The ghost of the best lap, on levels with laps (null elsewhere).
+var ghost_race: GhostRace
 ## Attempts finished, and how many reached the goal, on this level.
 var attempts := 0
 var successes := 0
@@ -59,6 +61,13 @@ func _ready() -> void:
 	_pause_menu.quit_requested.connect(quit_to_menu)
 	level.attach(bike)
 	level.announced.connect(_hud.announce)
+	if level is Track:
+		ghost_race = GhostRace.new()
+		ghost_race.name = "GhostRace"
+		add_child(ghost_race)
+		ghost_race.announced.connect(_hud.announce)
+		ghost_race.split_measured.connect(_hud.show_split)
+		ghost_race.setup(bike, level as Track)
 	bike.crashed.connect(_on_crashed)
 	bike.controller_failed.connect(_on_controller_failed)
 	Settings.changed.connect(_apply_setting)

@@ -2,13 +2,15 @@ class_name Hud
 extends CanvasLayer
 ## The riding HUD: lean dial (wanted vs actual lean), the rider's weight (asked vs
 ## actual), speed, controller with its trajectory count and planning time, frame rate, the
-## level's timer line, attempt tally, and banners for what just happened.
+## level's timer line, attempt tally, banners for what just happened, and the split
+## against a ghost at each checkpoint.
 
 ## Seconds a banner stays before fading.
 const BANNER_SECONDS := 3.0
 
 var _game: Game
 var _banner_left := 0.0
+var _split_left := 0.0
 
 @onready var _dial: LeanDial = %LeanDial
 @onready var _rider: RiderPad = %RiderPad
@@ -18,6 +20,7 @@ var _banner_left := 0.0
 @onready var _performance: Label = %Performance
 @onready var _status: Label = %Status
 @onready var _banner: Label = %Banner
+@onready var _split: Label = %Split
 @onready var _hint: Label = %Hint
 
 
@@ -33,9 +36,27 @@ func announce(text: String) -> void:
 	_banner_left = BANNER_SECONDS
 
 
+## Shows for a few seconds how far behind the ghost (seconds; negative: ahead) the rider
+## crossed `checkpoint`: green ahead, red behind, as in Trials.
+func show_split(checkpoint: int, behind: float) -> void:
+	_split.text = "checkpoint %d   %+.2f s" % [checkpoint, behind]
+	_split.add_theme_color_override(
+		&"font_color", Color(1.0, 0.35, 0.3) if behind > 0.0 else Color(0.4, 1.0, 0.45)
+	)
+	_split.modulate.a = 1.0
+	_split_left = BANNER_SECONDS
+
+
+## The split shown now (empty once it faded).
+func split_text() -> String:
+	return _split.text if _split_left > 0.0 else ""
+
+
 func _process(delta: float) -> void:
 	_banner_left -= delta
 	_banner.modulate.a = clampf(_banner_left, 0.0, 1.0)
+	_split_left -= delta
+	_split.modulate.a = clampf(_split_left, 0.0, 1.0)
 	if _game == null or _game.bike == null or not _game.bike.is_running():
 		return
 	var bike := _game.bike

@@ -1,10 +1,11 @@
 class_name SettingsSandbox
 extends RefCounted
 ## Test helper: points the Settings autoload at scratch files, so tests never touch the
-## player's own settings and records, and back again.
+## player's own settings, records and ghosts, and back again.
 
 const SETTINGS := "user://test-settings.cfg"
 const RECORDS := "user://test-records.cfg"
+const GHOSTS := "user://test-ghosts"
 
 
 ## Switches Settings to empty scratch files (defaults).
@@ -13,6 +14,9 @@ static func enter() -> void:
 		DirAccess.remove_absolute(path)
 	Settings.settings_path = SETTINGS
 	Settings.records_path = RECORDS
+	Settings.ghosts_dir = GHOSTS
+	for ghost: String in DirAccess.get_files_at(GHOSTS):
+		DirAccess.remove_absolute(GHOSTS.path_join(ghost))
 	Settings.reload()
 
 
@@ -20,4 +24,5 @@ static func enter() -> void:
 static func leave() -> void:
 	Settings.settings_path = "user://settings.cfg"
 	Settings.records_path = "user://records.cfg"
+	Settings.ghosts_dir = "user://ghosts"
 	Settings.reload()

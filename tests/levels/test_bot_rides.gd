@@ -30,8 +30,40 @@ func test_a_lap_of_the_track_with_the_games_controller() -> void:
 	await _ride_a_lap("combined", 20.0)
 
 
-func test_a_lap_of_the_track_at_25_kmh_with_the_arcade_controller() -> void:
+func test_a_lap_of_the_track_at_25_kmh_with_the_arcade_controller_then_its_ghost() -> void:
 	await _ride_a_lap("arcade", 25.0)
+	# The lap is the best so far: it becomes the ghost, saved, raced from the next lap on.
+	var ghost := _game.ghost_race.ghost()
+	assert_not_null(ghost, "the best lap became the ghost")
+	if ghost == null:
+		return
+	assert_almost_eq(ghost.lap_time, Settings.best_lap("track"), 1e-6)
+	assert_almost_eq(ghost.duration(), ghost.lap_time, 0.1, "recorded from line to line")
+	var saved := GhostFile.load_ghost(Settings.ghost_path("track"), "track", 11)
+	assert_eq(saved.problem, "")
+	# Kept for the screenshot of a ghost race (tools/test.sh).
+	DirAccess.make_dir_recursive_absolute("res://build/ghosts")
+	DirAccess.copy_absolute(Settings.ghost_path("track"), "res://build/ghosts/track.ghost")
+	if saved.recording != null:
+		assert_eq((saved.recording as RideRecording).poses, ghost.poses, "saved exactly")
+	var splits: Array[String] = []
+	var gaps: Array[float] = []
+	var hud := _game.get_node(^"Hud") as Hud
+	while splits.is_empty() and (_game.level as Track).lap_time() < 40.0:
+		await wait_physics_frames(1)
+		if not hud.split_text().is_empty():
+			splits.append(hud.split_text())
+		if _game.ghost_race.is_ghost_shown():
+			var drawn := _game.ghost_race.ghost_view().eye_point()
+			gaps.append(drawn.distance_to(_game.bike.get_center_of_mass()))
+	assert_eq(splits.size(), 1, "a split at the first checkpoint of the second lap")
+	assert_gt(gaps.size(), 30, "the ghost rode beside the bike")
+	if not gaps.is_empty():
+		# The same bot on the same line: the ghost stays close.
+		assert_lt(gaps.max(), 6.0, "the ghost's rider within 6 m of the bike")
+		print(
+			"ghost race: %s; the ghost's rider %.1f–%.1f m away" % [splits, gaps.min(), gaps.max()]
+		)
 
 
 func test_the_skate_parks_steps_are_climbed_with_the_games_controller() -> void:

@@ -8,7 +8,9 @@ extends Node
 ## the tree, repeatable), `--hold=action` (held throughout, repeatable, `action:0.5` for
 ## part strength), `--tap=action@frame` (pressed once at that frame, repeatable) and
 ## `--call=node:method:argument@frame` (calls a method of a node under the scene's root,
-## found by name, with one string argument, at that frame; repeatable).
+## found by name, with one string argument, at that frame; repeatable), and
+## `--copy=SOURCE>user://DEST` (a file copied into the scratch user folder before the
+## scene loads: a ghost to race, say; repeatable).
 
 const MIN_DISTINCT_COLOURS := 12
 const MIN_LUMINANCE_SPREAD := 0.04
@@ -16,7 +18,7 @@ const MIN_LUMINANCE_SPREAD := 0.04
 
 func _ready() -> void:
 	var options := {scene = "", out = "", frames = "30"}
-	var staging := {"set": [], "hold": [], "tap": [], "call": []}
+	var staging := {"set": [], "hold": [], "tap": [], "call": [], "copy": []}
 	for argument: String in OS.get_cmdline_user_args():
 		var parts := argument.trim_prefix("--").split("=", true, 1)
 		if parts.size() == 2 and options.has(parts[0]):
@@ -29,6 +31,12 @@ func _ready() -> void:
 	# Pictures start from the default settings and no records, whatever this machine's
 	# player last chose (a camera mode, a controller), so they are repeatable.
 	SettingsSandbox.enter()
+	for copy: String in staging["copy"]:
+		var ends := copy.split(">")
+		DirAccess.make_dir_recursive_absolute(ends[-1].get_base_dir())
+		if ends.size() != 2 or DirAccess.copy_absolute(ends[0], ends[1]) != OK:
+			_quit_with("cannot copy %s" % copy, 2)
+			return
 	var packed := load(options.scene) as PackedScene
 	if packed == null:
 		_quit_with("cannot load scene %s" % options.scene, 1)

@@ -37,6 +37,9 @@ impl BikeSimulation {
     const UPPER_ARM: i64 = Part::UpperArm as i64;
     #[constant]
     const LOWER_ARM: i64 = Part::LowerArm as i64;
+    /// Numbers per body in `get_pose_frame`.
+    #[constant]
+    const POSE_FLOATS: i64 = 7;
 
     /// The controllers players pick, by name, in the order menus list them and the game
     /// cycles through them (the one list: `cpbp_core::ride::ControllerKind::ALL`).
@@ -49,6 +52,15 @@ impl BikeSimulation {
     #[func]
     fn get_step_count(&self) -> i64 {
         self.ride.as_ref().map_or(0, |r| r.steps() as i64)
+    }
+
+    /// Length of one control step (s): the rate poses change at.
+    #[func]
+    fn get_control_dt(&self) -> f64 {
+        self.sim().map_or(
+            cpbp_core::simulation::SimulationConfig::default().control_dt,
+            |s| s.config().control_dt,
+        )
     }
 
     /// Control steps since the bike was last placed at which the optimizer drove without a
@@ -283,6 +295,23 @@ impl BikeSimulation {
             before_position.lerp(now.0, alpha),
             before_rotation.slerp(now.1, alpha),
         )
+    }
+
+    /// Every body's pose at the last control step (not interpolated), for recording
+    /// ghosts and replays: per body in `Part` order, position x, y, z then rotation
+    /// x, y, z, w (`POSE_FLOATS` numbers a body).
+    #[func]
+    fn get_pose_frame(&self) -> PackedFloat32Array {
+        let Some(sim) = self.sim() else {
+            return PackedFloat32Array::new();
+        };
+        Part::ALL
+            .iter()
+            .flat_map(|part| {
+                let (p, q) = pose_of(sim, *part);
+                [p.x, p.y, p.z, q.x, q.y, q.z, q.w].map(|v| v as f32)
+            })
+            .collect()
     }
 
     /// The collision shapes, for drawing the physical model: one Dictionary per shape with

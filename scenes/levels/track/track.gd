@@ -5,6 +5,15 @@ extends Level
 ## a lap counts when every checkpoint was crossed in order before the line is crossed
 ## again. The best lap is saved with the player's records.
 
+## The clock started at the start/finish line.
+signal lap_started
+## Checkpoint `checkpoint` (1, 2, …) was passed in order, `lap_time` seconds into the lap.
+signal checkpoint_passed(checkpoint: int, lap_time: float)
+## A lap was completed in `lap_time` s; `best`: it is the new best lap.
+signal lap_finished(lap_time: float, best: bool)
+## The lap under way was given up (a respawn).
+signal lap_abandoned
+
 ## Key the best lap is saved under.
 @export var record_key := "track"
 
@@ -24,6 +33,8 @@ func _ready() -> void:
 
 func begin_attempt(bike: BikeSimulation, seed_value: int) -> void:
 	super(bike, seed_value)
+	if _lap_started:
+		lap_abandoned.emit()
 	_lap_started = false
 	_lap_time = 0.0
 	_next_checkpoint = 0
@@ -40,6 +51,11 @@ func judge(bike: BikeSimulation, delta: float) -> String:
 			_passed(gate.checkpoint)
 	_previous_centre = centre
 	return outcome
+
+
+## Seconds into the lap under way (0 before the start line is crossed).
+func lap_time() -> float:
+	return _lap_time if _lap_started else 0.0
 
 
 ## Checkpoints the lap needs, besides the start/finish line.
@@ -65,13 +81,17 @@ func _passed(checkpoint: int) -> void:
 		_lap_started = true
 		_lap_time = 0.0
 		_next_checkpoint = 1
+		lap_started.emit()
 	elif _lap_started and checkpoint == _next_checkpoint:
 		_next_checkpoint += 1
+		checkpoint_passed.emit(checkpoint, _lap_time)
 
 
 func _finish_lap() -> void:
 	_last_lap = _lap_time
-	if Settings.record_lap(record_key, _lap_time):
+	var best := Settings.record_lap(record_key, _lap_time)
+	if best:
 		announced.emit("New best lap: %s" % format_time(_lap_time))
 	else:
 		announced.emit("Lap: %s" % format_time(_lap_time))
+	lap_finished.emit(_lap_time, best)

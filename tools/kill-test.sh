@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Nothing a player saved is lost to a kill: tests/saves/save_stress saves settings, records
+# and a ghost in a loop and is killed with SIGKILL at random moments; after each kill the
+# game's own loaders must read every file back whole (the last save or the one before).
+source "$(dirname "$0")/common.sh"
+cd "$PROJECT_ROOT"
+mkdir -p build/logs
+rounds=${1:-8}
+for round in $(seq "$rounds"); do
+  fresh=$([[ $round -eq 1 ]] && echo --fresh || true)
+  tools/godot --headless --path . --audio-driver Dummy res://tests/saves/save_stress.tscn -- --write $fresh \
+    >build/logs/kill-test-writer.log 2>&1 &
+  writer=$!
+  # Let it start and save for a while: 1.5 to 4 s.
+  sleep "$(awk -v r="$RANDOM" 'BEGIN { printf "%.2f", 1.5 + 2.5 * r / 32767 }')"
+  kill -9 "$writer"
+  wait "$writer" 2>/dev/null || true
+  saved=$(grep -c "^saved round" build/logs/kill-test-writer.log || true)
+  (( saved > 0 )) || die "round $round: the writer saved nothing before the kill (build/logs/kill-test-writer.log)"
+  printf 'round %d: killed after %d saves; ' "$round" "$saved"
+  tools/godot --headless --path . --audio-driver Dummy res://tests/saves/save_stress.tscn -- --check \
+    2>&1 | grep "^kill test" || die "round $round: the saved files did not read back"
+  [[ ${PIPESTATUS[0]} -eq 0 ]] || die "round $round: the saved files did not read back"
+done
