@@ -22,8 +22,9 @@ play: build ## Launch the game window
 test: build ## Run every check: Rust fmt/clippy/tests, gdlint, GDScript suites, screenshots, export
 	@tools/test.sh
 
-bench: setup ## Print the performance figures (see docs/benchmarks.md)
+bench: build ## Print the performance figures, planning and frame time (see docs/benchmarks.md)
 	@tools/cargo run --release --quiet -p cpbp-core --bin cpbp-bench
+	@tools/frame-time.sh
 
 experiment: build ## Reproduce the thesis's evaluation headless (docs/experiment.md; ARGS="--tries 50")
 	@tools/experiment all $(ARGS)

@@ -65,6 +65,9 @@ screenshots() {
     && tools/screenshot.sh $game build/screenshots/camera-helmet.png 200 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 --hold=steer_right:0.4 \
          --tap=cycle_camera@5 --tap=cycle_camera@8 \
+    && tools/screenshot.sh $game build/screenshots/replay.png 330 \
+         --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 --hold=rider_back:0.4 \
+         --tap=pause@200 --tap=ui_down@205 --tap=ui_accept@210 \
     && tools/screenshot.sh $game build/screenshots/ghost-race.png 190 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 \
          "--copy=res://build/ghosts/track.ghost>user://test-ghosts/track.ghost"

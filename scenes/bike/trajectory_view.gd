@@ -3,6 +3,7 @@ extends MeshInstance3D
 ## Draws the optimizer's last plan as in the thesis's Figure 4.10: each trajectory's
 ## centre-of-mass path, the best in green, the refined (optimizer) or arcade (combined)
 ## one in yellow, the others in black. Draws nothing while another controller drives.
+## A replay's view draws recorded plans instead (`draw_paths`).
 
 const BEST_COLOUR := Color(0.1, 0.9, 0.2)
 const WARM_COLOUR := Color(1.0, 0.85, 0.1)
@@ -10,6 +11,8 @@ const OTHER_COLOUR := Color(0.02, 0.02, 0.02)
 
 ## The simulation whose plans to draw; by default the parent.
 @export var simulation_path: NodePath = ^".."
+## Draws the live plans of the simulation; off, only what `draw_paths` is given.
+@export var follows_simulation := true
 
 var _simulation: Node
 var _lines := ImmediateMesh.new()
@@ -26,18 +29,27 @@ func _ready() -> void:
 	material.vertex_color_use_as_albedo = true
 	material_override = material
 	cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-	if _simulation == null:
+	if not follows_simulation:
+		set_process(false)
+	elif _simulation == null:
 		push_error("TrajectoryView: no BikeSimulation at %s" % simulation_path)
 		set_process(false)
 
 
 func _process(_delta: float) -> void:
-	_lines.clear_surfaces()
 	if not visible or not _simulation.call(&"is_running"):
+		_lines.clear_surfaces()
 		return
-	var paths: Array[PackedVector3Array] = _simulation.call(&"get_trajectory_paths")
-	var best: int = _simulation.call(&"get_best_trajectory")
-	var warm: int = _simulation.call(&"get_warm_trajectory")
+	draw_paths(
+		_simulation.call(&"get_trajectory_paths"),
+		_simulation.call(&"get_best_trajectory"),
+		_simulation.call(&"get_warm_trajectory")
+	)
+
+
+## Draws `paths` (world coordinates), `best` in green and `warm` in yellow (−1: none).
+func draw_paths(paths: Array[PackedVector3Array], best: int, warm: int) -> void:
+	_lines.clear_surfaces()
 	# Others first, then the highlighted two on top of them.
 	var order: Array[int] = []
 	for i: int in paths.size():

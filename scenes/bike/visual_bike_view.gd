@@ -30,8 +30,10 @@ const HEAD_LAYER := 1 << 19
 
 ## The simulation to draw; by default the parent.
 @export var simulation_path: NodePath = ^".."
-## Drawn see-through, posed by `show_pose` (a recording) instead of following the
-## simulation, which only gives the shapes and the rest pose.
+## Posed by `show_pose` (a ghost, a replay) instead of following the simulation, which
+## then only gives the shapes and the rest pose.
+@export var posed_by_recording := false
+## Drawn see-through (a ghost).
 @export var ghost := false
 
 var _simulation: BikeSimulation
@@ -74,7 +76,7 @@ func _ready() -> void:
 
 
 func _process(_delta: float) -> void:
-	if visible and not ghost:
+	if visible and not posed_by_recording:
 		_follow()
 
 

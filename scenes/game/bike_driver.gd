@@ -19,21 +19,29 @@ var auto_speed_kmh := 15.0
 var steering_locked := false
 ## Top speed (km/h) of full throttle when driving by hand.
 var max_speed_kmh := 40.0
+## What the player's hands gave the bike at the last tick (for replays): the triggers
+## (0–1), the turn (−1 left to 1 right) and the rider stick (x right, y forward).
+var throttle := 0.0
+var brake := 0.0
+var turn := 0.0
+var rider := Vector2.ZERO
 
 
 func _physics_process(_delta: float) -> void:
 	if bike == null:
 		return
+	brake = Input.get_action_strength(&"brake")
 	if auto_accelerate:
 		bike.max_speed_kmh = auto_speed_kmh
-		bike.set_drive(AUTO_THROTTLE, Input.get_action_strength(&"brake"))
+		throttle = AUTO_THROTTLE
 	else:
 		bike.max_speed_kmh = max_speed_kmh
-		bike.set_drive(Input.get_action_strength(&"throttle"), Input.get_action_strength(&"brake"))
-	var turn := 0.0 if steering_locked else Input.get_axis(&"steer_left", &"steer_right")
+		throttle = Input.get_action_strength(&"throttle")
+	bike.set_drive(throttle, brake)
+	turn = 0.0 if steering_locked else Input.get_axis(&"steer_left", &"steer_right")
 	bike.set_turn(turn)
 	# Without a controller (manual mode) the stick steers the bar directly.
 	bike.set_steer_rate(-turn * 0.6)
 	# The rider's weight (right stick, I J K L): x to the right, y forward.
-	var rider := Input.get_vector(&"rider_left", &"rider_right", &"rider_back", &"rider_forward")
+	rider = Input.get_vector(&"rider_left", &"rider_right", &"rider_back", &"rider_forward")
 	bike.set_rider_position(rider.y, rider.x)

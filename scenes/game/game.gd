@@ -6,6 +6,7 @@ extends Node3D
 ## settings unless `level_path` names one.
 
 const BIKE := preload("res://scenes/bike/bike.tscn")
+const REPLAY := preload("res://scenes/replay/replay.tscn")
 const START_MENU := "res://scenes/ui/start_menu.tscn"
 ## Seconds a result stays on screen before an automatic level starts the next attempt.
 const RESULT_PAUSE := 2.5
@@ -17,6 +18,9 @@ var level: Level
 var bike: BikeSimulation
 ## The ghost of the best lap, on levels with laps (null elsewhere).
 var ghost_race: GhostRace
+## The last run, kept for the replay, and the replay's player.
+var recorder: ReplayRecorder
+var replay: Replay
 ## Attempts finished, and how many reached the goal, on this level.
 var attempts := 0
 var successes := 0
@@ -25,6 +29,8 @@ var falls := 0
 var _spawn_index := 0
 var _attempt_seed := 1
 var _finished_for := -1.0
+## What the last crash was (for the player): "the rider's head or body hit the ground".
+var _crash_cause := ""
 
 @onready var _driver: BikeDriver = $Driver
 @onready var _camera: FollowCamera = $Camera
@@ -58,6 +64,15 @@ func _ready() -> void:
 	_camera.target = bike
 	_hud.bind(self)
 	_pause_menu.restart_requested.connect(restart)
+	_pause_menu.replay_requested.connect(watch_replay)
+	recorder = ReplayRecorder.new()
+	recorder.name = "ReplayRecorder"
+	add_child(recorder)
+	recorder.setup(bike, _driver)
+	replay = REPLAY.instantiate() as Replay
+	add_child(replay)
+	replay.setup(bike)
+	replay.closed.connect(_on_replay_closed)
 	_pause_menu.quit_requested.connect(quit_to_menu)
 	level.attach(bike)
 	level.announced.connect(_hud.announce)
@@ -126,9 +141,24 @@ func restart() -> void:
 		return
 	_spawn_index = posmod(_spawn_index, spawns.size())
 	bike.reset_to(spawns[_spawn_index].spawn_transform())
+	_crash_cause = ""
+	if recorder != null:
+		recorder.start_run()
 	level.begin_attempt(bike, _attempt_seed)
 	_attempt_seed += 1
 	_finished_for = -1.0
+
+
+## Shows the replay of the last run (the game stays paused); back to the pause menu after.
+func watch_replay() -> void:
+	get_tree().paused = true
+	if ghost_race != null:
+		ghost_race.visible = false
+	if replay.open(recorder.run(), recorder.rate()):
+		_hud.visible = false
+	else:
+		_hud.announce("Nothing to replay yet: ride first")
+		_pause_menu.open()
 
 
 ## Moves to the next (`step` 1) or previous (−1) spawn point and respawns there.
@@ -170,11 +200,22 @@ func _finish(outcome: String) -> void:
 		Level.TIMEOUT:
 			_hud.announce("Out of time")
 		Level.FELL:
-			_hud.announce("Fell" if level.automatic else "Fell: B / R to respawn, A / T to lift")
+			var fell := "Fell: %s" % _crash_cause if not _crash_cause.is_empty() else "Fell"
+			_hud.announce(fell if level.automatic else fell + "\nB / R to respawn, A / T to lift")
 
 
-func _on_crashed(_cause: String) -> void:
+func _on_replay_closed() -> void:
+	_hud.visible = true
+	if ghost_race != null:
+		ghost_race.visible = true
+	_apply_setting(&"show_trajectories")
+	_apply_setting(&"physical_model")
+	_pause_menu.open()
+
+
+func _on_crashed(cause: String) -> void:
 	falls += 1
+	_crash_cause = cause
 
 
 func _on_controller_failed(_reason: String) -> void:

@@ -27,6 +27,7 @@ func setup(bike: BikeSimulation, track: Track) -> void:
 	_view = VisualBikeView.new()
 	_view.name = "GhostBike"
 	_view.ghost = true
+	_view.posed_by_recording = true
 	_view.simulation_path = bike.get_path()
 	add_child(_view)
 	_view.visible = false

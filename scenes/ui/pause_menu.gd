@@ -2,12 +2,14 @@ class_name PauseMenu
 extends CanvasLayer
 ## The pause menu (Back / Esc): stops the simulation and offers resume, the trajectory
 ## view, physical or visual model, motor force, top speed, volume (all and the engine's),
-## controller, trajectory count, auto-accelerate speed, restart and quit; lists the
-## controls. Every change is saved in the settings at once. Works with a gamepad alone
-## (d-pad/stick to move, A to choose, B or Back to resume).
+## controller, trajectory count, auto-accelerate speed, the replay of the last run,
+## restart and quit; lists the controls. Every change is saved in the settings at once.
+## Works with a gamepad alone (d-pad/stick to move, A to choose, B or Back to resume).
 
-## The player asked to start the attempt again, or to leave for the start menu.
+## The player asked to start the attempt again, to watch the last run, or to leave for
+## the start menu.
 signal restart_requested
+signal replay_requested
 signal quit_requested
 
 const CONTROLS := """Gamepad / keyboard
@@ -58,6 +60,7 @@ func _ready() -> void:
 		_auto_speed.add_item("%d km/h" % speed)
 	_resume.pressed.connect(close)
 	%Restart.pressed.connect(_on_restart)
+	%WatchReplay.pressed.connect(_on_replay)
 	%Quit.pressed.connect(_on_quit)
 	_trajectories_shown.toggled.connect(_save.bind(&"show_trajectories"))
 	_physical.toggled.connect(_save.bind(&"physical_model"))
@@ -132,6 +135,11 @@ func _update_labels() -> void:
 func _on_restart() -> void:
 	close()
 	restart_requested.emit()
+
+
+func _on_replay() -> void:
+	visible = false
+	replay_requested.emit()
 
 
 func _on_quit() -> void:

@@ -221,6 +221,8 @@ func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
 	var menu: PauseMenu = _game.get_node("PauseMenu")
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%Resume"))
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
+	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%WatchReplay"))
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%ShowTrajectories"))
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_eq(Settings.get_value(&"show_trajectories"), not before, "A toggled the trajectory view")

@@ -1,0 +1,122 @@
+extends Node
+## What the game-feel features cost per frame, riding the track by simulated input with a
+## ghost beside the bike: each feature's own per-frame work timed in place (the engine
+## sound's listening and mixing a frame of samples, the replay recorder's step, the ghost
+## race's posing), and the ghost's drawing as the paired difference in wall-clock frame
+## time between alternating blocks of frames with it shown and hidden, the game paused so
+## nothing else changes (95 % interval).
+## Run under Xvfb by tools/frame-time.sh; the ghost raced is the bot's lap from the
+## GDScript suites (build/ghosts/track.ghost), in scratch settings.
+##
+## Arguments after `--`: `--controller=NAME` (default combined), `--blocks=N` (pairs of
+## blocks, default 20).
+
+const GAME := preload("res://scenes/game/game.tscn")
+const BLOCK := 20
+## Frames ridden before measuring: past the start line, so the ghost rides along.
+const SETTLE := 150
+## Calls timed per feature.
+const REPEATS := 300
+
+var _game: Game
+
+
+func _ready() -> void:
+	var controller := "combined"
+	var blocks := 20
+	for argument: String in OS.get_cmdline_user_args():
+		if argument.begins_with("--controller="):
+			controller = argument.trim_prefix("--controller=")
+		elif argument.begins_with("--blocks="):
+			blocks = int(argument.trim_prefix("--blocks="))
+	SettingsSandbox.enter()
+	DirAccess.make_dir_recursive_absolute(Settings.ghosts_dir)
+	DirAccess.copy_absolute("res://build/ghosts/track.ghost", Settings.ghost_path("track"))
+	Settings.set_value(&"controller", controller)
+	_game = GAME.instantiate() as Game
+	_game.level_path = "res://scenes/levels/track/track.tscn"
+	add_child(_game)
+	Input.action_press(&"throttle", 0.5)
+	for frame in SETTLE:
+		await get_tree().process_frame
+	var costs := _feature_costs()
+	# The drawing is measured on a still picture (the game paused), where the ghost is all
+	# that changes between blocks.
+	process_mode = Node.PROCESS_MODE_ALWAYS
+	get_tree().paused = true
+	var drawing := await _ghost_drawing(blocks)
+	get_tree().paused = false
+	Input.action_release(&"throttle")
+	var total: float = costs.sound + costs.ghost + costs.recorder / 2.0 + drawing[0]
+	print(
+		(
+			(
+				"frame time (%s, ghost %s): sound %.3f ms, ghost posing %.3f ms, recorder"
+				+ " %.3f ms a step (every other frame), ghost drawing %+.2f ± %.2f ms;"
+				+ " together %.2f ms a frame"
+			)
+			% [
+				controller,
+				"shown" if _game.ghost_race.ghost() != null else "MISSING",
+				costs.sound,
+				costs.ghost,
+				costs.recorder,
+				drawing[0],
+				drawing[1],
+				total,
+			]
+		)
+	)
+	CleanExit.quit(get_tree())
+
+
+## Milliseconds per call of each feature's per-frame work, done as the game does it.
+func _feature_costs() -> Dictionary:
+	var synth := BikeSynth.at_rate(AudioServer.get_mix_rate())
+	var samples := int(AudioServer.get_mix_rate() / 60.0)
+	var started := Time.get_ticks_usec()
+	for i in REPEATS:
+		synth.listen(_game.bike, 1.0 / 60.0)
+		synth.mix(samples)
+	var sound := (Time.get_ticks_usec() - started) / 1000.0 / REPEATS
+	started = Time.get_ticks_usec()
+	for i in REPEATS:
+		_game.ghost_race._process(1.0 / 60.0)
+	var ghost := (Time.get_ticks_usec() - started) / 1000.0 / REPEATS
+	_game.recorder.capacity_seconds = 1.0
+	started = Time.get_ticks_usec()
+	for i in REPEATS:
+		_game.recorder._last_step = -1
+		_game.recorder._physics_process(1.0 / 60.0)
+	var recorder := (Time.get_ticks_usec() - started) / 1000.0 / REPEATS
+	_game.recorder.capacity_seconds = ReplayRecorder.MOST_SECONDS
+	return {sound = sound, ghost = ghost, recorder = recorder}
+
+
+## The ghost's drawing: frame time (ms) with it shown minus hidden, over `pairs` pairs of
+## blocks in alternating order, and the 95 % half-width.
+func _ghost_drawing(pairs: int) -> Array[float]:
+	var differences := PackedFloat64Array()
+	for pair in pairs:
+		var times := [0.0, 0.0]
+		# Alternate which comes first, so a drift does not favour either.
+		for shown: bool in [true, false] if pair % 2 == 0 else [false, true]:
+			_game.ghost_race.ghost_view().visible = shown
+			# One frame to settle on the new picture, then the block.
+			await get_tree().process_frame
+			var started := Time.get_ticks_usec()
+			for frame in BLOCK:
+				await get_tree().process_frame
+			times[int(shown)] = (Time.get_ticks_usec() - started) / 1000.0 / BLOCK
+		differences.append(times[1] - times[0])
+	var n := differences.size()
+	var mean := 0.0
+	for d in differences:
+		mean += d / n
+	var variance := 0.0
+	for d in differences:
+		variance += (d - mean) * (d - mean) / (n - 1)
+	# Student's t (97.5 %) for 5–30 degrees of freedom, near enough for a report.
+	var t := 2.0 + 2.6 / n
+	var result: Array[float] = [mean, t * sqrt(variance / n)]
+	return result
