@@ -32,8 +32,13 @@ func test_a_bike_laid_on_its_side_crashes() -> void:
 	await wait_physics_frames(90)
 	assert_eq(causes.size(), 1, "crashed once: %s" % [causes])
 	assert_true(_bike.is_crashed())
+	assert_true(
+		causes[0].ends_with("hit the ground") or causes[0].begins_with("leaned over"), causes[0]
+	)
+	assert_false(_bike.is_rider_on(), "the rider fell off")
 	_bike.lift_upright()
 	assert_false(_bike.is_crashed(), "lifting clears the crash")
+	assert_true(_bike.is_rider_on(), "and puts the rider back on")
 
 
 func test_throttle_drives_forward_and_reset_returns_to_the_spawn() -> void:

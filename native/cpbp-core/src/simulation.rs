@@ -149,9 +149,15 @@ impl Simulation {
         let mut events = StepEvents::default();
         let dt = self.config.control_dt / self.config.substeps as f64;
         let up = self.up();
-        let held = self.bike.held_pitch(&self.world, up, self.pitch_request);
+        // A rider who fell off neither rides nor asks anything of the bike.
+        let (controls, asked) = if self.bike.rider_is_on(&self.world) {
+            (self.controls, self.pitch_request)
+        } else {
+            (Controls::slack(), PitchRequest::default())
+        };
+        let held = self.bike.held_pitch(&self.world, up, asked);
         self.bike
-            .apply_pitching(&mut self.world, &self.controls, held, up);
+            .apply_pitching(&mut self.world, &controls, held, up);
         let mut airborne_at_start = self.airborne_for > AIRBORNE_AFTER;
         let momentum_before = self.bike.momentum(&self.world);
         self.ground_blow = 0.0;
@@ -178,6 +184,11 @@ impl Simulation {
                 }
             }
         }
+        // The rider lets go at the end of the step that crashed, so the step itself (and
+        // every result measured at a crash) is what it was before riders fell off.
+        if events.crashed.is_some() {
+            self.bike.release_rider(&mut self.world);
+        }
         let momentum_gained = self.bike.momentum(&self.world) - momentum_before;
         self.ground_blow = momentum_gained.dot(up).max(0.0);
         events
@@ -189,8 +200,14 @@ impl Simulation {
         self.ground_blow
     }
 
-    /// Puts the bike at rest at `placement` (and makes that the spawn point). The ride
-    /// from there repeats exactly whatever was simulated before.
+    /// Whether the rider is on the bike: after a crash the rider falls off (the same
+    /// bodies, let go, as a ragdoll) until the bike is placed again.
+    pub fn rider_is_on(&self) -> bool {
+        self.bike.rider_is_on(&self.world)
+    }
+
+    /// Puts the bike at rest at `placement` (and makes that the spawn point), the rider
+    /// back on it. The ride from there repeats exactly whatever was simulated before.
     pub fn reset_to(&mut self, placement: Placement) {
         self.spawn = placement;
         self.bike.reset(&mut self.world, &placement);

@@ -1,7 +1,6 @@
 //! What a ride's steps tell the scene: crashes, landings and recoveries as signals, and a
 //! controller that failed, reported once with an error.
 
-use cpbp_core::bike::CrashCause;
 use cpbp_core::ride::Ride;
 use cpbp_core::simulation::StepEvents;
 use godot::prelude::*;
@@ -12,11 +11,9 @@ impl BikeSimulation {
     /// Emits the signals for a step's events.
     pub(crate) fn emit(&mut self, events: StepEvents) {
         if let Some(cause) = events.crashed {
-            let text = match cause {
-                CrashCause::Touched(part) => format!("{} touched the ground", part.name()),
-                CrashCause::Leaned { lean } => format!("leaned over ({:.0}°)", lean.to_degrees()),
-            };
-            self.signals().crashed().emit(&GString::from(text.as_str()));
+            self.signals()
+                .crashed()
+                .emit(&GString::from(cause.describe().as_str()));
         }
         if events.landed {
             self.signals().landed().emit();

@@ -258,6 +258,13 @@ impl BikeSimulation {
         self.sim().is_some_and(|s| s.crashed().is_some())
     }
 
+    /// Whether the rider is on the bike: after a crash the rider falls off (a ragdoll of
+    /// the same bodies) until the next reset or lift.
+    #[func]
+    fn is_rider_on(&self) -> bool {
+        self.sim().is_some_and(Simulation::rider_is_on)
+    }
+
     /// Centre of mass of bike and rider.
     #[func]
     fn get_center_of_mass(&self) -> Vector3 {

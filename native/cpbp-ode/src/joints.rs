@@ -12,15 +12,17 @@ pub struct JointId(pub usize);
 /// ODE numbers the parameters of a joint's second and third axis in groups 0x100 apart.
 const PARAM_GROUP: i32 = 0x100;
 
-/// Velocity-motor settings of a joint, per axis (1 for hinges, 3 for Euler motors), and
-/// the angles an Euler motor cached during the last step. The settings are controls and
-/// the angles are derived, but both are state: a restored world must read and step
-/// exactly as the original.
+/// Velocity-motor settings of a joint, per axis (1 for hinges, 3 for Euler motors), the
+/// angles an Euler motor cached during the last step, and whether the joint is switched
+/// off (a rider let go of the bike). The settings are controls and the angles are
+/// derived, but all are state: a restored world must read and step exactly as the
+/// original.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct MotorState {
     pub velocity: [f64; 3],
     pub max_force: [f64; 3],
     pub cached_angles: [f64; 3],
+    pub disabled: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -129,10 +131,46 @@ impl World {
         }
     }
 
-    /// Motor settings of a motorised joint.
+    /// Switches a joint off (the bodies it held move freely) or back on.
+    pub fn set_joint_enabled(&mut self, joint: JointId, enabled: bool) {
+        let (id, _) = self.joints[joint.0];
+        // SAFETY: the joint belongs to this world.
+        unsafe {
+            if enabled {
+                ffi::dJointEnable(id);
+            } else {
+                ffi::dJointDisable(id);
+            }
+        }
+    }
+
+    /// How far apart (m) a ball joint's anchor is on its two bodies: about zero while the
+    /// joint holds, growing once it is switched off and the bodies drift apart.
+    pub fn ball_anchor_gap(&self, joint: JointId) -> f64 {
+        let (id, kind) = self.joints[joint.0];
+        debug_assert_eq!(kind, JointKind::Ball);
+        let (mut a, mut b) = ([0.0; 4], [0.0; 4]);
+        // SAFETY: a ball joint of this world; ODE writes 3 (of 4, dVector3) reals to each.
+        unsafe {
+            ffi::dJointGetBallAnchor(id, a.as_mut_ptr());
+            ffi::dJointGetBallAnchor2(id, b.as_mut_ptr());
+        }
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+    }
+
+    /// Whether a joint holds its bodies (see `set_joint_enabled`).
+    pub fn joint_enabled(&self, joint: JointId) -> bool {
+        // SAFETY: the joint belongs to this world.
+        unsafe { ffi::dJointIsEnabled(self.joints[joint.0].0) != 0 }
+    }
+
+    /// Motor settings of a joint, and whether it is switched off.
     pub fn motor_state(&self, joint: JointId) -> MotorState {
         let (id, kind) = self.joints[joint.0];
-        let mut state = MotorState::default();
+        let mut state = MotorState {
+            disabled: !self.joint_enabled(joint),
+            ..MotorState::default()
+        };
         for axis in 0..kind.motor_axes() {
             let group = PARAM_GROUP * axis as i32;
             // SAFETY: the joint belongs to this world and has this axis.
@@ -150,6 +188,7 @@ impl World {
     /// Restores motor settings saved by [`World::motor_state`].
     pub fn set_motor_state(&mut self, joint: JointId, state: &MotorState) {
         let (id, kind) = self.joints[joint.0];
+        self.set_joint_enabled(joint, !state.disabled);
         for axis in 0..kind.motor_axes() {
             self.set_motor(joint, axis, state.velocity[axis], state.max_force[axis]);
             if kind == JointKind::EulerMotor {
@@ -160,8 +199,8 @@ impl World {
         }
     }
 
-    /// Puts every motor back as built: no target velocity, no force, and Euler motors'
-    /// cached angles at zero. Otherwise a ride started afresh would inherit the last
+    /// Puts every motor back as built: every joint on, no target velocity, no force, and
+    /// Euler motors' cached angles at zero. Otherwise a ride started afresh would inherit the last
     /// ride's motor settings through its snapshots, and a planner reading the cached
     /// angles before the first step would see the old ride's pose.
     pub fn reset_motors(&mut self) {

@@ -11,6 +11,27 @@ pub enum CrashCause {
     Leaned { lean: f64 },
 }
 
+impl CrashCause {
+    /// What happened, for the player: "the rider's head hit the ground", "leaned over
+    /// (68°)".
+    pub fn describe(&self) -> String {
+        match self {
+            CrashCause::Touched(part) => {
+                let what = match part {
+                    Part::Torso => "the rider's head or body",
+                    Part::UpperLeg | Part::LowerLeg => "the rider's leg",
+                    Part::UpperArm | Part::LowerArm => "the rider's arm",
+                    _ => "the bike",
+                };
+                format!("{what} hit the ground")
+            }
+            CrashCause::Leaned { lean } => {
+                format!("leaned over ({:.0}°)", lean.abs().to_degrees())
+            }
+        }
+    }
+}
+
 /// Tracks the lean over time; feed it once per step.
 #[derive(Clone, Copy, Debug)]
 pub struct CrashMonitor {

@@ -174,6 +174,11 @@ impl Ride {
                 self.last_driver = None;
                 controls
             }
+            // Nobody rides a bike whose rider fell off: no controller, no planning.
+            None if !self.sim.rider_is_on() => {
+                self.last_driver = None;
+                Controls::slack()
+            }
             None => self.controls_of_active(goal),
         };
         self.sim.set_controls(controls);

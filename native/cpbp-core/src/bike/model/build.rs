@@ -90,14 +90,14 @@ impl Bike {
             }
         });
 
-        b.ball(lower_leg, frame, l.ankle);
+        let ankle = b.ball(lower_leg, frame, l.ankle);
         let knee = b.hinge(upper_leg, lower_leg, l.knee, z);
         b.world.set_joint_limits(knee, 0, -1.0, 1.0);
-        let waist = b.ball_with_motor(upper_leg, torso, l.hip, [0.7, 0.5, 0.4]);
-        let shoulder = b.ball_with_motor(torso, upper_arm, l.shoulder, [1.0, 0.8, 0.6]);
+        let (_, waist) = b.ball_with_motor(upper_leg, torso, l.hip, [0.7, 0.5, 0.4]);
+        let (_, shoulder) = b.ball_with_motor(torso, upper_arm, l.shoulder, [1.0, 0.8, 0.6]);
         let elbow = b.hinge(upper_arm, lower_arm, l.elbow, z);
         b.world.set_joint_limits(elbow, 0, -1.0, 1.0);
-        let wrist = b.ball_with_motor(lower_arm, fork, l.grip, [0.8, 0.6, 0.6]);
+        let (grip, wrist) = b.ball_with_motor(lower_arm, fork, l.grip, [0.8, 0.6, 0.6]);
 
         if let (Some(s), Some(joints)) = (&params.suspension, &suspension_joints) {
             let (fork_spring, rear_spring) =
@@ -137,6 +137,7 @@ impl Bike {
             suspension: suspension_joints,
             feet,
             own_parts,
+            rider_holds: [ankle, grip, wrist],
             waist,
             knee,
             shoulder,
@@ -250,21 +251,22 @@ impl Builder<'_> {
             .add_hinge(a, Some(b), to_array(anchor), to_array(axis))
     }
 
-    fn ball(&mut self, a: BodyId, b: BodyId, anchor: DVec3) {
+    fn ball(&mut self, a: BodyId, b: BodyId, anchor: DVec3) -> JointId {
         self.world
-            .add_ball(a, Some(b), to_array(self.placement.transform_point(anchor)));
+            .add_ball(a, Some(b), to_array(self.placement.transform_point(anchor)))
     }
 
     /// A ball joint driven by an Euler motor: pitch about z (fixed to `a`), twist about
     /// the derived middle axis, roll about x (fixed to `b`), each limited to ±`limits`.
+    /// Returns the ball and the motor.
     fn ball_with_motor(
         &mut self,
         a: BodyId,
         b: BodyId,
         anchor: DVec3,
         limits: [f64; 3],
-    ) -> JointId {
-        self.ball(a, b, anchor);
+    ) -> (JointId, JointId) {
+        let ball = self.ball(a, b, anchor);
         let axis0 = self.placement.rotation * DVec3::Z;
         let axis2 = self.placement.rotation * DVec3::X;
         let motor = self
@@ -273,7 +275,7 @@ impl Builder<'_> {
         for (axis, limit) in limits.into_iter().enumerate() {
             self.world.set_joint_limits(motor, axis, -limit, limit);
         }
-        motor
+        (ball, motor)
     }
 
     fn shape(&mut self, part: Part, shape: Shape, offset: DVec3, rotation: DQuat) {

@@ -107,12 +107,13 @@ impl Bike {
     }
 
     /// Puts the rider's feet down below walking pace and lifts them above it or when the
-    /// throttle opens (`Feet`).
+    /// throttle opens (`Feet`); a rider who fell off has no feet on the bike.
     pub(super) fn place_feet(&self, world: &mut World, controls: &Controls, up: DVec3) {
         let (Some(feet), Some(geoms)) = (&self.params.feet, &self.feet) else {
             return;
         };
-        let down = feet.down_at(self.forward_speed(world, up), throttle_open(controls));
+        let down = self.rider_is_on(world)
+            && feet.down_at(self.forward_speed(world, up), throttle_open(controls));
         for foot in geoms {
             world.set_foot_down(*foot, down);
         }

@@ -4,6 +4,7 @@
 mod build;
 mod contact_patch;
 mod drive;
+mod falling_off;
 mod ground;
 mod rider;
 
@@ -146,6 +147,9 @@ pub struct Bike {
     /// The parts with a body of their own, found once at build: the centre of mass, which
     /// every rollout step's cost reads, sums over them.
     own_parts: Vec<Part>,
+    /// What holds the rider on: the foot on the peg, the hand on the grip and the wrist's
+    /// motor. Switched off when the rider falls off (`release_rider`).
+    rider_holds: [JointId; 3],
     waist: JointId,
     knee: JointId,
     shoulder: JointId,
