@@ -2,7 +2,8 @@ extends Node
 ## Rides the track by simulated input while Godot's movie writer records the sound, and
 ## logs what the engine should sound like frame by frame, for tools/sound_check to
 ## compare with the recording: idle, pull away and accelerate through the gears, coast,
-## brake hard, then pause (which must be silent). Run by tools/sound-check.sh.
+## brake hard, then pause (which must be silent), with the arcade controller. Run by
+## tools/sound-check.sh.
 ##
 ## Arguments after `--`: `--log=PATH.csv`.
 
@@ -33,6 +34,9 @@ func _ready() -> void:
 		get_tree().quit(2)
 		return
 	SettingsSandbox.enter()
+	# The arcade controller plans nothing, so the ride, and the sound, are the same
+	# however busy the machine is.
+	Settings.set_value(&"controller", "arcade")
 	# Only the sound matters here: the movie's pictures skip the 3D scene, which would
 	# cost most of the run on a software renderer.
 	get_viewport().disable_3d = true
