@@ -31,10 +31,15 @@ const SECTION := "game"
 ## Settings files saved before controllers were named hold BikeSimulation's old integers.
 const LEGACY_CONTROLLERS: Array[String] = ["arcade", "manual", "optimizer", "combined"]
 
-var settings_path := "user://settings.cfg"
-var records_path := "user://records.cfg"
-## Where ghosts of best laps are kept, one file a level (`GhostFile`).
-var ghosts_dir := "user://ghosts"
+## The player's own files: settings, best laps, and the folder of ghosts of best laps
+## (one file a level, `GhostFile`).
+const PLAYER_SETTINGS := "user://settings.cfg"
+const PLAYER_RECORDS := "user://records.cfg"
+const PLAYER_GHOSTS := "user://ghosts"
+
+var settings_path := PLAYER_SETTINGS
+var records_path := PLAYER_RECORDS
+var ghosts_dir := PLAYER_GHOSTS
 
 var _values := {}
 var _records := ConfigFile.new()

@@ -68,6 +68,9 @@ screenshots() {
     && tools/screenshot.sh $game build/screenshots/replay.png 330 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 --hold=rider_back:0.4 \
          --tap=pause@200 --tap=ui_down@205 --tap=ui_accept@210 \
+    && tools/screenshot.sh $game build/screenshots/rider-foot-down.png 400 \
+         --set=level_path=$levels/skate_park/skate_park.tscn --hold=throttle:0.5@0-100 \
+         --hold=brake:0.6@100- --hold=camera_left:0.5@150-175 \
     && tools/screenshot.sh $game build/screenshots/ghost-race.png 190 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 \
          "--copy=res://build/ghosts/track.ghost>user://test-ghosts/track.ghost"

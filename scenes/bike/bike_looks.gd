@@ -16,6 +16,8 @@ const COLOURS := {
 	spring = Color(0.95, 0.75, 0.1),
 	rubber = Color(0.05, 0.05, 0.05),
 	lamp = Color(1.0, 0.97, 0.85),
+	chain = Color(0.3, 0.28, 0.26),
+	plate = Color(0.95, 0.85, 0.2),
 	trousers = Color(0.12, 0.13, 0.17),
 	boots = Color(0.05, 0.05, 0.05),
 	jacket = Color(0.13, 0.32, 0.7),
@@ -30,6 +32,7 @@ const GHOST_ALPHA := 0.35
 
 static var _made := {}
 static var _ghosts := {}
+static var _skins := {}
 
 
 ## The material of `look` (magenta for a look nobody defined, so it shows).
@@ -38,7 +41,9 @@ static func material(look: String) -> StandardMaterial3D:
 		return _made[look]
 	var made := StandardMaterial3D.new()
 	made.albedo_color = COLOURS.get(look, Color.MAGENTA)
-	made.roughness = 0.35 if look in ["paint", "helmet", "visor", "metal", "exhaust"] else 0.8
+	made.roughness = (
+		0.35 if look in ["paint", "helmet", "visor", "metal", "exhaust", "chain"] else 0.8
+	)
 	made.metallic = 0.6 if look in ["metal", "exhaust"] else 0.0
 	if look in ["lamp", "tail_light"]:
 		made.emission_enabled = true
@@ -57,4 +62,19 @@ static func ghost_material(look: String) -> StandardMaterial3D:
 	made.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
 	made.metallic = 0.0
 	_ghosts[look] = made
+	return made
+
+
+## The material of a mesh coloured by its vertices (the skinned rider, whose vertices
+## carry their look's colour), see-through for a ghost.
+static func skin_material(ghost: bool) -> StandardMaterial3D:
+	if _skins.has(ghost):
+		return _skins[ghost]
+	var made := StandardMaterial3D.new()
+	made.vertex_color_use_as_albedo = true
+	made.roughness = 0.8
+	if ghost:
+		made.albedo_color = Color(GHOST_TINT.lightened(0.4), GHOST_ALPHA)
+		made.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
+	_skins[ghost] = made
 	return made

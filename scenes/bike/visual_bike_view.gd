@@ -1,32 +1,18 @@
 class_name VisualBikeView
 extends Node3D
-## The bike and rider as the player sees them: a stylised naked motorcycle and a rider
-## with two arms and two legs, built from primitive meshes and carried by the simulated
-## bodies (thesis §4.2). The simulation has one arm and one leg in the mid-plane; each is
-## drawn twice, moved out to either side, so the hands reach the grips and the knees hug
-## the tank. Every piece is authored in the bike's frame at rest (x forward, y up,
-## z right, origin on the ground between the wheels) and then rides on its body.
+## The bike and rider as the player sees them (thesis §4.2): a stylised naked motorcycle
+## built from primitive meshes, each authored in the bike's frame at rest (BikeRestFrame)
+## and carried by its simulated body, and the skinned rider posed on the rider's bodies
+## by IK (RiderFigure).
 
 const WHEELS: Array[int] = [BikeSimulation.REAR_WHEEL, BikeSimulation.FRONT_WHEEL]
 const FORK := BikeSimulation.FORK
 const FRAME := BikeSimulation.FRAME
 const FORK_LOWER := BikeSimulation.FORK_LOWER
 const SWINGARM := BikeSimulation.SWINGARM
-const LOWER_LEG := BikeSimulation.LOWER_LEG
-const UPPER_LEG := BikeSimulation.UPPER_LEG
-const TORSO := BikeSimulation.TORSO
-const UPPER_ARM := BikeSimulation.UPPER_ARM
 const LOWER_ARM := BikeSimulation.LOWER_ARM
-## Directions in the bike frame.
-const BIKE_FORWARD := Vector3(1, 0, 0)
-## How far out from the mid-plane the thighs are drawn at the hips (m), and a boot's size
-## (length, height, width; VisualFeet draws the leg put down with both).
-const HIP_OUT := 0.13
-const BOOT_SIZE := Vector3(0.26, 0.1, 0.1)
-const BIKE_DOWN := Vector3(0, -1, 0)
-## Render layer of the neck, helmet and visor alone, so a camera at the rider's eyes can leave
-## them out (layer 20, the last one the editor names).
-const HEAD_LAYER := 1 << 19
+const BIKE_FORWARD := BikeRestFrame.FORWARD
+const BIKE_DOWN := BikeRestFrame.DOWN
 
 ## The simulation to draw; by default the parent.
 @export var simulation_path: NodePath = ^".."
@@ -37,12 +23,10 @@ const HEAD_LAYER := 1 << 19
 @export var ghost := false
 
 var _simulation: BikeSimulation
-## The bike node's transform when the bodies were at rest: bike frame → world.
-var _rest := Transform3D.IDENTITY
+## The bike as it stood when its drawing was built.
+var _frame: BikeRestFrame
 ## Per piece: the mesh, the body it rides on and its offset within that body.
 var _pieces: Array[Dictionary] = []
-## Per side (−1 left, 1 right): the nodes of the leg drawn on that footpeg.
-var _peg_legs := {-1.0: [], 1.0: []}
 ## Centre of the grips (bike frame), where the simulated hand holds the bar.
 var _grip := Vector3.ZERO
 ## The rear shock's coil, stretched between its mounts every frame: its mounts on the
@@ -53,8 +37,7 @@ var _shock_rest_length := 1.0
 ## One stanchion (on the fork) and the lower leg it slides in, to measure the drawn fork.
 var _stanchion: Node3D
 var _fork_leg: Node3D
-## The helmet, for the view from the rider's eyes.
-var _helmet: Node3D
+var _rider: RiderFigure
 
 
 func _ready() -> void:
@@ -65,41 +48,69 @@ func _ready() -> void:
 		push_error("VisualBikeView: no running BikeSimulation at %s" % simulation_path)
 		set_process(false)
 		return
-	_rest = _simulation.global_transform
-	_grip = _capsule_ends(LOWER_ARM, -BIKE_FORWARD)[1]
+	_frame = BikeRestFrame.new(_simulation)
+	_grip = _frame.capsule_ends(LOWER_ARM, -BIKE_FORWARD)[1]
 	_build_wheels()
 	_build_frame()
 	_build_swingarm()
 	_build_fork()
-	_build_rider()
-	_follow()
+	_rider = RiderFigure.new()
+	_rider.name = "Rider"
+	_rider.ghost = ghost
+	add_child(_rider)
+	_rider.build(_frame)
+	follow()
 
 
 func _process(_delta: float) -> void:
 	if visible and not posed_by_recording:
-		_follow()
+		follow()
 
 
-## Puts every piece on the bodies at `bodies` (global transforms, in body order).
-func show_pose(bodies: Array[Transform3D]) -> void:
+## Puts every piece on the bodies at `bodies` (global transforms, in body order), the
+## rider's feet put down on the road at `feet_down` (see RiderFigure.pose).
+func show_pose(bodies: Array[Transform3D], feet_down: Array[Dictionary] = []) -> void:
+	_rider.pose(bodies, feet_down)
 	for piece: Dictionary in _pieces:
 		(piece.node as Node3D).global_transform = bodies[piece.body] * (piece.offset as Transform3D)
 	# The coil between its mounts: it shortens as the swingarm rises.
 	var top := bodies[FRAME] * _shock_mounts[0]
 	var bottom := bodies[SWINGARM] * _shock_mounts[1]
 	var stretch := top.distance_to(bottom) / _shock_rest_length
-	var basis := _basis_with_y((top - bottom).normalized(), _rest.basis.x)
+	var basis := _basis_with_y((top - bottom).normalized(), _frame.right())
 	_shock.global_transform = Transform3D(
 		basis.scaled_local(Vector3(1, stretch, 1)), (top + bottom) / 2.0
 	)
 
 
-func _follow() -> void:
+## Poses the drawing on the simulation now (it does so every frame by itself).
+func follow() -> void:
 	# One native call per body, not per piece: some sixty pieces ride on eleven bodies.
 	var bodies: Array[Transform3D] = []
 	for body in _simulation.get_body_count():
 		bodies.append(_simulation.get_body_transform(body))
-	show_pose(bodies)
+	show_pose(bodies, _feet_down())
+
+
+## The feet the rider has put down that stand on the road (or on the side the bike leans
+## to, about to): each {side, sole (world), up}.
+func _feet_down() -> Array[Dictionary]:
+	var down: Array[Dictionary] = []
+	var feet := _simulation.get_feet()
+	var frame := _simulation.get_body_transform(FRAME)
+	var lean := _simulation.get_lean()
+	for i in feet.size():
+		var side := -1.0 if i == 0 else 1.0
+		var foot: Dictionary = feet[i]
+		if foot.down and (foot.on_ground or lean * side > 0.0):
+			down.append(
+				{
+					side = side,
+					sole = frame * (foot.on_frame as Vector3),
+					up = frame.basis.y.normalized()
+				}
+			)
+	return down
 
 
 ## How long the fork is drawn now (m, from the middle of a lower leg up its axis to the
@@ -109,19 +120,20 @@ func drawn_fork_length() -> float:
 	return (_stanchion.global_position - _fork_leg.global_position).dot(up)
 
 
-## Shows or hides the leg drawn on the `side` footpeg (−1 left, 1 right): hidden while
-## the rider's foot on that side is down (VisualFeet draws it there).
-func show_leg_on_peg(side: float, shown: bool) -> void:
-	for node: Node3D in _peg_legs[signf(side)]:
-		node.visible = shown
+## Whether the rider's leg on `side` (−1 left, 1 right) is drawn down to the road.
+func is_leg_down(side: float) -> bool:
+	return _rider.is_leg_down(side)
+
+
+## The drawn rider.
+func rider() -> RiderFigure:
+	return _rider
 
 
 ## Where the rider's eyes are now (global), inside the helmet: a camera there leaves out
-## HEAD_LAYER.
+## RiderFigure.HEAD_LAYER.
 func eye_point() -> Vector3:
-	# The helmet is authored in Godot's axes: −z is the rider's forward.
-	var helmet := _helmet.global_transform
-	return helmet.origin - helmet.basis.z.normalized() * 0.08 + helmet.basis.y.normalized() * 0.02
+	return _rider.eye_point()
 
 
 ## How long the rear shock's coil is drawn now (m, between its mounts).
@@ -131,8 +143,8 @@ func drawn_shock_length() -> float:
 
 func _build_wheels() -> void:
 	for body in WHEELS:
-		var hub := _rest_of(body).origin
-		var axle := _rest.basis.x.normalized()
+		var hub := _frame.rest_of(body).origin
+		var axle := _frame.right().normalized()
 		var facing := _basis_with_y(axle, Vector3.UP)
 		var tyre := TorusMesh.new()
 		tyre.inner_radius = 0.225
@@ -152,7 +164,7 @@ func _build_wheels() -> void:
 		for i in 5:
 			var spoke := BoxMesh.new()
 			spoke.size = Vector3(0.02, 0.2, 0.035)
-			var radial := _rest.basis.y.rotated(axle, TAU * i / 5.0)
+			var radial := _frame.basis().y.rotated(axle, TAU * i / 5.0)
 			_add(body, spoke, "rim", Transform3D(_basis_with_y(radial, axle), hub + radial * 0.1))
 		if body == BikeSimulation.REAR_WHEEL:
 			var disc := CylinderMesh.new()
@@ -182,14 +194,16 @@ func _build_frame() -> void:
 		)
 	_rod(FRAME, Vector3(0.0, 0.28, 0.15), Vector3(-0.42, 0.42, 0.2), 0.045, "metal")
 	_rod(FRAME, Vector3(-0.42, 0.42, 0.2), Vector3(-0.72, 0.52, 0.2), 0.06, "exhaust")
+	# The number plate under the tail light, leaning back with the tail.
+	_box(FRAME, Vector3(-0.86, 0.86, 0.0), Vector3(0.015, 0.13, 0.19), 0.3, "plate")
 
 
 ## The swingarm's two arms from the pivot to the axle, and the rear shock from the frame
 ## to the swingarm: its coil is stretched between the mounts every frame.
 func _build_swingarm() -> void:
-	var pivot_axle := _capsule_ends(SWINGARM, BIKE_FORWARD)
+	var pivot_axle := _frame.capsule_ends(SWINGARM, BIKE_FORWARD)
 	var pivot: Vector3 = pivot_axle[0]
-	var axle := _bike_of(_rest_of(BikeSimulation.REAR_WHEEL).origin)
+	var axle := _frame.bike_of(_frame.rest_of(BikeSimulation.REAR_WHEEL).origin)
 	for side: float in [-1.0, 1.0]:
 		_rod(
 			SWINGARM,
@@ -199,6 +213,7 @@ func _build_swingarm() -> void:
 			"frame"
 		)
 	_rod(SWINGARM, pivot + Vector3(0, 0, -0.1), pivot + Vector3(0, 0, 0.1), 0.035, "frame")
+	_build_chain(pivot, axle)
 	# A monoshock under the seat: from the frame to a third of the way along the arm.
 	var bottom := pivot.lerp(axle, 0.35) + Vector3(0, 0.04, 0)
 	var top := pivot + Vector3(-0.12, 0.36, 0)
@@ -216,17 +231,48 @@ func _build_swingarm() -> void:
 	_shock.name = "shock_spring"
 	add_child(_shock)
 	_shock_mounts = [
-		_rest_of(FRAME).affine_inverse() * _world_of(top),
-		_rest_of(SWINGARM).affine_inverse() * _world_of(bottom),
+		_frame.rest_of(FRAME).affine_inverse() * _frame.world_of(top),
+		_frame.rest_of(SWINGARM).affine_inverse() * _frame.world_of(bottom),
 	]
+
+
+## The final drive on the left: a sprocket on the gearbox's shaft at the swingarm's pivot,
+## one on the rear wheel (turning with it), and the chain's two runs between them, which
+## swing with the arm.
+func _build_chain(pivot: Vector3, axle: Vector3) -> void:
+	var left := Vector3(0, 0, -0.13)
+	var sprockets := {
+		FRAME: [pivot + Vector3(0.06, 0.0, 0.0), 0.045], BikeSimulation.REAR_WHEEL: [axle, 0.09]
+	}
+	for body: int in sprockets:
+		var disc := CylinderMesh.new()
+		disc.top_radius = sprockets[body][1]
+		disc.bottom_radius = sprockets[body][1]
+		disc.height = 0.012
+		var centre: Vector3 = sprockets[body][0] + left
+		_add(
+			body,
+			disc,
+			"chain",
+			Transform3D(_basis_with_y(_frame.right(), Vector3.UP), _frame.world_of(centre))
+		)
+	var front: Vector3 = sprockets[FRAME][0] + left
+	for run: float in [-1.0, 1.0]:
+		_rod(
+			SWINGARM,
+			front + Vector3(0, run * 0.045, 0),
+			axle + left + Vector3(0, run * 0.09, 0),
+			0.008,
+			"chain"
+		)
 
 
 ## The fork: stanchions on the steered part slide into the lower legs, which carry the
 ## axle and the mudguard, so the fork visibly compresses.
 func _build_fork() -> void:
-	var axle := _bike_of(_rest_of(BikeSimulation.FRONT_WHEEL).origin)
-	var lower_top: Vector3 = _capsule_ends(FORK_LOWER, BIKE_DOWN)[1]
-	var stanchions := _capsule_ends(FORK, BIKE_DOWN)
+	var axle := _frame.bike_of(_frame.rest_of(BikeSimulation.FRONT_WHEEL).origin)
+	var lower_top: Vector3 = _frame.capsule_ends(FORK_LOWER, BIKE_DOWN)[1]
+	var stanchions := _frame.capsule_ends(FORK, BIKE_DOWN)
 	var top: Vector3 = stanchions[1]
 	for side: float in [-1.0, 1.0]:
 		var out := Vector3(0, 0, side * 0.09)
@@ -254,73 +300,13 @@ func _build_fork() -> void:
 	var lamp := SphereMesh.new()
 	lamp.radius = 0.085
 	lamp.height = 0.15
-	_add(FORK, lamp, "lamp", Transform3D(_bike_basis(), _world_of(top + Vector3(0.14, -0.12, 0.0))))
+	_add(
+		FORK,
+		lamp,
+		"lamp",
+		Transform3D(_frame.basis(), _frame.world_of(top + Vector3(0.14, -0.12, 0.0)))
+	)
 	_box(FORK_LOWER, axle + Vector3(0.0, 0.35, 0.0), Vector3(0.3, 0.03, 0.14), 0.0, "paint")
-
-
-func _build_rider() -> void:
-	var ankle_knee := _capsule_ends(LOWER_LEG, BIKE_DOWN)
-	var knee_hip := _capsule_ends(UPPER_LEG, BIKE_FORWARD)
-	var hip_head := _capsule_ends(TORSO, BIKE_DOWN)
-	var shoulder_elbow := _capsule_ends(UPPER_ARM, -BIKE_DOWN)
-	var elbow_grip := _capsule_ends(LOWER_ARM, -BIKE_FORWARD)
-	for side: float in [-1.0, 1.0]:
-		var knee_out := side * 0.19
-		var first_leg_piece := _pieces.size()
-		_limb(LOWER_LEG, ankle_knee, side * 0.2, knee_out, 0.06, "trousers")
-		_limb(UPPER_LEG, knee_hip, knee_out, side * HIP_OUT, 0.08, "trousers")
-		_box(LOWER_LEG, ankle_knee[0] + Vector3(0.05, -0.02, side * 0.2), BOOT_SIZE, 0.0, "boots")
-		for piece: Dictionary in _pieces.slice(first_leg_piece):
-			_peg_legs[side].append(piece.node)
-		_limb(UPPER_ARM, shoulder_elbow, side * 0.19, side * 0.27, 0.05, "jacket")
-		_limb(LOWER_ARM, elbow_grip, side * 0.27, side * 0.35, 0.045, "jacket")
-		var glove := SphereMesh.new()
-		glove.radius = 0.05
-		glove.height = 0.1
-		var grip := elbow_grip[1] + Vector3(0, 0, side * 0.35)
-		_add(LOWER_ARM, glove, "gloves", Transform3D(_bike_basis(), _world_of(grip)))
-	var hip: Vector3 = hip_head[0]
-	var along: Vector3 = (hip_head[1] - hip).normalized()
-	_rod(TORSO, hip + along * 0.05, hip + along * 0.5, 0.17, "jacket", 1.25)
-	_rod(TORSO, hip + along * 0.5, hip + along * 0.6, 0.06, "trousers")
-	var helmet := SphereMesh.new()
-	helmet.radius = 0.135
-	helmet.height = 0.28
-	var head := hip + along * 0.66
-	_add(TORSO, helmet, "helmet", Transform3D(_bike_basis(), _world_of(head)))
-	_helmet = _pieces[-1].node
-	_ellipsoid(TORSO, head + Vector3(0.09, 0.0, 0.0), Vector3(0.1, 0.11, 0.2), "visor")
-	# Neck, helmet and visor.
-	for head_piece: Dictionary in _pieces.slice(-3):
-		(head_piece.node as VisualInstance3D).layers = HEAD_LAYER
-
-
-## The two ends (bike frame) of a rider body's capsule, the one furthest along
-## `first_towards` (bike frame direction) first.
-func _capsule_ends(body: int, first_towards: Vector3) -> Array[Vector3]:
-	for shape: Dictionary in _simulation.get_shapes():
-		if shape.body != body or shape.kind != "capsule":
-			continue
-		var offset: Transform3D = shape.offset
-		var half := offset.basis.z.normalized() * float(shape.length) / 2.0
-		var body_rest := _rest_of(body)
-		var a := _bike_of(body_rest * (offset.origin + half))
-		var b := _bike_of(body_rest * (offset.origin - half))
-		var ends: Array[Vector3] = [a, b]
-		if b.dot(first_towards) > a.dot(first_towards):
-			ends.reverse()
-		return ends
-	push_error("VisualBikeView: body %d has no capsule" % body)
-	var fallback: Array[Vector3] = [Vector3.ZERO, Vector3.UP]
-	return fallback
-
-
-## A limb drawn between `ends`, moved out to z = `from_side` at the first end and
-## `to_side` at the second.
-func _limb(
-	body: int, ends: Array[Vector3], from_side: float, to_side: float, radius: float, look: String
-) -> void:
-	_rod(body, ends[0] + Vector3(0, 0, from_side), ends[1] + Vector3(0, 0, to_side), radius, look)
 
 
 ## A capsule (rounded rod) from `a` to `b` (bike frame), `widen` times wider sideways.
@@ -328,9 +314,9 @@ func _rod(body: int, a: Vector3, b: Vector3, radius: float, look: String, widen 
 	var capsule := CapsuleMesh.new()
 	capsule.radius = radius
 	capsule.height = a.distance_to(b) + 2.0 * radius
-	var from := _world_of(a)
-	var to := _world_of(b)
-	var basis := _basis_with_y((to - from).normalized(), _rest.basis.x).scaled_local(
+	var from := _frame.world_of(a)
+	var to := _frame.world_of(b)
+	var basis := _basis_with_y((to - from).normalized(), _frame.right()).scaled_local(
 		Vector3(widen, 1.0, 1.0)
 	)
 	_add(body, capsule, look, Transform3D(basis, (from + to) / 2.0))
@@ -339,16 +325,16 @@ func _rod(body: int, a: Vector3, b: Vector3, radius: float, look: String, widen 
 func _box(body: int, centre: Vector3, size: Vector3, pitch: float, look: String) -> void:
 	var box := BoxMesh.new()
 	box.size = Vector3(size.z, size.y, size.x)
-	var basis := _bike_basis() * Basis(Vector3.RIGHT, pitch)
-	_add(body, box, look, Transform3D(basis, _world_of(centre)))
+	var basis := _frame.basis() * Basis(Vector3.RIGHT, pitch)
+	_add(body, box, look, Transform3D(basis, _frame.world_of(centre)))
 
 
 func _ellipsoid(body: int, centre: Vector3, size: Vector3, look: String) -> void:
 	var sphere := SphereMesh.new()
 	sphere.radius = 0.5
 	sphere.height = 1.0
-	var basis := _bike_basis() * Basis.from_scale(Vector3(size.z, size.y, size.x))
-	_add(body, sphere, look, Transform3D(basis, _world_of(centre)))
+	var basis := _frame.basis() * Basis.from_scale(Vector3(size.z, size.y, size.x))
+	_add(body, sphere, look, Transform3D(basis, _frame.world_of(centre)))
 
 
 ## Adds a mesh placed at `world_at_rest` that rides on `body` from now on.
@@ -363,29 +349,7 @@ func _add(body: int, mesh: Mesh, look: String, world_at_rest: Transform3D) -> vo
 	node.top_level = true
 	node.name = "%s_%d" % [look, _pieces.size()]
 	add_child(node)
-	_pieces.append(
-		{node = node, body = body, offset = _rest_of(body).affine_inverse() * world_at_rest}
-	)
-
-
-func _rest_of(body: int) -> Transform3D:
-	return _simulation.get_body_transform(body)
-
-
-## World rest position of a bike-frame point.
-func _world_of(point: Vector3) -> Vector3:
-	return _rest * Vector3(point.z, point.y, -point.x)
-
-
-## Bike-frame point of a world rest position.
-func _bike_of(world: Vector3) -> Vector3:
-	var local := _rest.affine_inverse() * world
-	return Vector3(-local.z, local.y, local.x)
-
-
-## World rest basis whose x is the bike's right, y up and z backwards (Godot's meshes).
-func _bike_basis() -> Basis:
-	return _rest.basis.orthonormalized()
+	_pieces.append({node = node, body = body, offset = _frame.on_body(body, world_at_rest)})
 
 
 ## An orthonormal basis whose y is `y` and whose x is as close to `x_hint` as it can be.

@@ -34,6 +34,11 @@ const CLEARANCE := 0.3
 			return
 		mode = value
 		_placed = false
+		# From the rider's eyes the helmet is left out of the picture.
+		if mode == "helmet":
+			cull_mask &= ~RiderFigure.HEAD_LAYER
+		else:
+			cull_mask |= RiderFigure.HEAD_LAYER
 ## How quickly the camera catches up (1/s); higher is stiffer.
 @export var stiffness := 4.0
 ## Orbit speed with the d-pad held (rad/s).
@@ -57,11 +62,6 @@ func _process(delta: float) -> void:
 	if target == null or not target.is_running():
 		return
 	_orbit_from_buttons(delta)
-	# From the rider's eyes the helmet is left out of the picture.
-	if mode == "helmet":
-		cull_mask &= ~VisualBikeView.HEAD_LAYER
-	else:
-		cull_mask |= VisualBikeView.HEAD_LAYER
 	if mode == "helmet":
 		_look_from_helmet(delta)
 		return

@@ -67,6 +67,12 @@ func _physics_process(_delta: float) -> void:
 
 
 func _process(_delta: float) -> void:
+	show_ghost()
+
+
+## Shows the ghost where it was at this point of its lap (once a frame, by itself); hides
+## it when there is no ghost to race or it has finished its lap.
+func show_ghost() -> void:
 	if _ghost == null or _recording == null:
 		_view.visible = false
 		return
@@ -77,7 +83,7 @@ func _process(_delta: float) -> void:
 
 
 func _on_lap_started() -> void:
-	_recording = RideRecording.new(1.0 / _control_dt())
+	_recording = RideRecording.new(1.0 / _bike.get_control_dt())
 	_last_step = _bike.get_step_count()
 	_recording.add(_bike.get_pose_frame())
 
@@ -105,7 +111,3 @@ func _on_lap_abandoned() -> void:
 
 func _path() -> String:
 	return Settings.ghost_path(_track.record_key)
-
-
-func _control_dt() -> float:
-	return _bike.get_control_dt()

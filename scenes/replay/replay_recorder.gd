@@ -63,6 +63,12 @@ func _physics_process(_delta: float) -> void:
 	if step == _last_step:
 		return
 	_last_step = step
+	record_step()
+
+
+## Records the bike and the player's inputs as they are now (once a control step, by
+## itself).
+func record_step() -> void:
 	var frame := {
 		poses = _bike.get_pose_frame(),
 		inputs =

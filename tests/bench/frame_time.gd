@@ -2,9 +2,9 @@ extends Node
 ## What the game-feel features cost per frame, riding the track by simulated input with a
 ## ghost beside the bike: each feature's own per-frame work timed in place (the engine
 ## sound's listening and mixing a frame of samples, the replay recorder's step, the ghost
-## race's posing), and the ghost's drawing as the paired difference in wall-clock frame
-## time between alternating blocks of frames with it shown and hidden, the game paused so
-## nothing else changes (95 % interval).
+## race's posing, the skinned rider's IK), and the drawing of the ghost and of the skinned
+## rider as the paired difference in wall-clock frame time between alternating blocks of
+## frames with it shown and hidden, the game paused so nothing else changes (95 % interval).
 ## Run under Xvfb by tools/frame-time.sh; the ghost raced is the bot's lap from the
 ## GDScript suites (build/ghosts/track.ghost), in scratch settings.
 ##
@@ -44,26 +44,31 @@ func _ready() -> void:
 	# that changes between blocks.
 	process_mode = Node.PROCESS_MODE_ALWAYS
 	get_tree().paused = true
-	var drawing := await _ghost_drawing(blocks)
+	var drawing := await _drawing_cost(_game.ghost_race.ghost_view(), blocks)
+	var rider_drawing := await _drawing_cost(_live_view().rider(), blocks)
 	get_tree().paused = false
 	Input.action_release(&"throttle")
-	var total: float = costs.sound + costs.ghost + costs.recorder / 2.0 + drawing[0]
+	var total: float = costs.sound + costs.ghost + costs.rider + costs.recorder / 2.0 + drawing[0]
 	print(
 		(
 			(
-				"frame time (%s, ghost %s): sound %.3f ms, ghost posing %.3f ms, recorder"
-				+ " %.3f ms a step (every other frame), ghost drawing %+.2f ± %.2f ms;"
-				+ " together %.2f ms a frame"
+				"frame time (%s, ghost %s): sound %.3f ms, ghost posing %.3f ms, rider posing"
+				+ " %.3f ms, recorder %.3f ms a step (every other frame), ghost drawing"
+				+ " %+.2f ± %.2f ms; together %.2f ms a frame; the skinned rider's drawing"
+				+ " %+.2f ± %.2f ms (it replaced a rider of primitives: see docs/benchmarks.md)"
 			)
 			% [
 				controller,
 				"shown" if _game.ghost_race.ghost() != null else "MISSING",
 				costs.sound,
 				costs.ghost,
+				costs.rider,
 				costs.recorder,
 				drawing[0],
 				drawing[1],
 				total,
+				rider_drawing[0],
+				rider_drawing[1],
 			]
 		)
 	)
@@ -79,29 +84,47 @@ func _feature_costs() -> Dictionary:
 		synth.listen(_game.bike, 1.0 / 60.0)
 		synth.mix(samples)
 	var sound := (Time.get_ticks_usec() - started) / 1000.0 / REPEATS
+	var ghost_skeleton := _game.ghost_race.ghost_view().rider().skeleton()
 	started = Time.get_ticks_usec()
 	for i in REPEATS:
-		_game.ghost_race._process(1.0 / 60.0)
+		_game.ghost_race.show_ghost()
+		# Its rider's IK solves when its skeleton updates, at the end of the frame: here.
+		ghost_skeleton.notification(Skeleton3D.NOTIFICATION_UPDATE_SKELETON)
 	var ghost := (Time.get_ticks_usec() - started) / 1000.0 / REPEATS
+	# The live rider's posing and IK, as the drawn bike poses it every frame.
+	var bodies: Array[Transform3D] = []
+	for body in _game.bike.get_body_count():
+		bodies.append(_game.bike.get_body_transform(body))
+	var no_feet_down: Array[Dictionary] = []
+	started = Time.get_ticks_usec()
+	var skeleton := _live_view().rider().skeleton()
+	for i in REPEATS:
+		_live_view().rider().pose(bodies, no_feet_down)
+		# The IK solves when the skeleton updates, at the end of the frame: now, here.
+		skeleton.notification(Skeleton3D.NOTIFICATION_UPDATE_SKELETON)
+	var rider := (Time.get_ticks_usec() - started) / 1000.0 / REPEATS
 	_game.recorder.capacity_seconds = 1.0
 	started = Time.get_ticks_usec()
 	for i in REPEATS:
-		_game.recorder._last_step = -1
-		_game.recorder._physics_process(1.0 / 60.0)
+		_game.recorder.record_step()
 	var recorder := (Time.get_ticks_usec() - started) / 1000.0 / REPEATS
 	_game.recorder.capacity_seconds = ReplayRecorder.MOST_SECONDS
-	return {sound = sound, ghost = ghost, recorder = recorder}
+	return {sound = sound, ghost = ghost, rider = rider, recorder = recorder}
 
 
-## The ghost's drawing: frame time (ms) with it shown minus hidden, over `pairs` pairs of
-## blocks in alternating order, and the 95 % half-width.
-func _ghost_drawing(pairs: int) -> Array[float]:
+func _live_view() -> VisualBikeView:
+	return _game.bike.get_node(^"VisualBikeView") as VisualBikeView
+
+
+## What drawing `node` costs: frame time (ms) with it shown minus hidden, over `pairs`
+## pairs of blocks in alternating order, and the 95 % half-width.
+func _drawing_cost(node: Node3D, pairs: int) -> Array[float]:
 	var differences := PackedFloat64Array()
 	for pair in pairs:
 		var times := [0.0, 0.0]
 		# Alternate which comes first, so a drift does not favour either.
 		for shown: bool in [true, false] if pair % 2 == 0 else [false, true]:
-			_game.ghost_race.ghost_view().visible = shown
+			node.visible = shown
 			# One frame to settle on the new picture, then the block.
 			await get_tree().process_frame
 			var started := Time.get_ticks_usec()

@@ -22,7 +22,7 @@ static func enter() -> void:
 
 ## Switches Settings back to the player's files.
 static func leave() -> void:
-	Settings.settings_path = "user://settings.cfg"
-	Settings.records_path = "user://records.cfg"
-	Settings.ghosts_dir = "user://ghosts"
+	Settings.settings_path = Settings.PLAYER_SETTINGS
+	Settings.records_path = Settings.PLAYER_RECORDS
+	Settings.ghosts_dir = Settings.PLAYER_GHOSTS
 	Settings.reload()

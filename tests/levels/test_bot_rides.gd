@@ -135,7 +135,7 @@ func test_a_stop_on_a_foot_for_30_s_and_a_pull_away() -> void:
 	_follow(path, 8.0)
 	await wait_physics_frames(120)
 	_bot.speed_kmh = 0.0
-	var feet := _game.bike.get_node(^"VisualBikeView/VisualFeet") as VisualFeet
+	var feet := _game.bike.get_node(^"VisualBikeView") as VisualBikeView
 	var on_a_foot := 0
 	var leg_drawn_down := 0
 	var widest_lean := 0.0

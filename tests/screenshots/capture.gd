@@ -6,7 +6,8 @@ extends Node
 ## Arguments after `--`: `--scene=res://…`, `--out=PATH.png`, `--frames=N` (default 30),
 ## and to stage the picture: `--set=property=value` (on the scene's root before it enters
 ## the tree, repeatable), `--hold=action` (held throughout, repeatable, `action:0.5` for
-## part strength), `--tap=action@frame` (pressed once at that frame, repeatable) and
+## part strength, `action@40-90` from frame 40 up to frame 90), `--tap=action@frame`
+## (pressed once at that frame, repeatable) and
 ## `--call=node:method:argument@frame` (calls a method of a node under the scene's root,
 ## found by name, with one string argument, at that frame; repeatable), and
 ## `--copy=SOURCE>user://DEST` (a file copied into the scratch user folder before the
@@ -46,10 +47,9 @@ func _ready() -> void:
 		var pair := assignment.split("=", true, 1)
 		root.set(pair[0], str_to_var(pair[1]) if str_to_var(pair[1]) != null else pair[1])
 	add_child(root)
-	for held: String in staging["hold"]:
-		var action := held.split(":")
-		Input.action_press(action[0], float(action[1]) if action.size() > 1 else 1.0)
 	for frame: int in int(options.frames):
+		for held: String in staging["hold"]:
+			_hold(held, frame)
 		for tap: String in staging["tap"]:
 			var at := tap.split("@")
 			if at.size() == 2 and int(at[1]) == frame:
@@ -92,6 +92,18 @@ func _call(root: Node, spec: String) -> void:
 		push_error("--call=%s: no such node and method under the scene" % spec)
 		return
 	target.call(parts[1], parts[2])
+
+
+## Presses `spec`'s action (`action[:strength][@from-to]`) at its first frame and lets go
+## of it at its last.
+func _hold(spec: String, frame: int) -> void:
+	var timed := spec.split("@")
+	var action := timed[0].split(":")
+	var frames := (timed[1] if timed.size() > 1 else "0-").split("-")
+	if frame == int(frames[0]):
+		Input.action_press(action[0], float(action[1]) if action.size() > 1 else 1.0)
+	elif frames.size() > 1 and not frames[1].is_empty() and frame == int(frames[1]):
+		Input.action_release(action[0])
 
 
 func _tap(action: String) -> void:

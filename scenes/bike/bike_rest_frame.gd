@@ -1,0 +1,73 @@
+class_name BikeRestFrame
+extends RefCounted
+## The simulated bike as it stood when its drawing was built, so the drawn pieces can be
+## authored in the bike's own frame (x forward, y up, z right, origin on the ground between
+## the wheels) and then carried by the bodies. The bike frame's axes are the designer's;
+## Godot's meshes have x right, y up and z backwards (`basis()`).
+
+## Directions in the bike frame.
+const FORWARD := Vector3(1, 0, 0)
+const DOWN := Vector3(0, -1, 0)
+
+var _simulation: BikeSimulation
+## The bike node's transform when the bodies were at rest: bike frame → world.
+var _rest: Transform3D
+## Every body's transform at rest.
+var _bodies: Array[Transform3D] = []
+
+
+func _init(simulation: BikeSimulation) -> void:
+	_simulation = simulation
+	_rest = simulation.global_transform
+	for body in simulation.get_body_count():
+		_bodies.append(simulation.get_body_transform(body))
+
+
+## A body's transform at rest (world).
+func rest_of(body: int) -> Transform3D:
+	return _bodies[body]
+
+
+## World rest position of a bike-frame point.
+func world_of(point: Vector3) -> Vector3:
+	return _rest * Vector3(point.z, point.y, -point.x)
+
+
+## Bike-frame point of a world rest position.
+func bike_of(world: Vector3) -> Vector3:
+	var local := _rest.affine_inverse() * world
+	return Vector3(-local.z, local.y, local.x)
+
+
+## World rest basis whose x is the bike's right, y up and z backwards (Godot's meshes).
+func basis() -> Basis:
+	return _rest.basis.orthonormalized()
+
+
+## The bike's right at rest (world).
+func right() -> Vector3:
+	return _rest.basis.x.normalized()
+
+
+## What a world rest transform is in `body`'s frame: the offset it keeps riding on it.
+func on_body(body: int, world_at_rest: Transform3D) -> Transform3D:
+	return _bodies[body].affine_inverse() * world_at_rest
+
+
+## The two ends (bike frame) of a body's capsule, the one furthest along `first_towards`
+## (a bike-frame direction) first.
+func capsule_ends(body: int, first_towards: Vector3) -> Array[Vector3]:
+	for shape: Dictionary in _simulation.get_shapes():
+		if shape.body != body or shape.kind != "capsule":
+			continue
+		var offset: Transform3D = shape.offset
+		var half := offset.basis.z.normalized() * float(shape.length) / 2.0
+		var a := bike_of(_bodies[body] * (offset.origin + half))
+		var b := bike_of(_bodies[body] * (offset.origin - half))
+		var ends: Array[Vector3] = [a, b]
+		if b.dot(first_towards) > a.dot(first_towards):
+			ends.reverse()
+		return ends
+	push_error("BikeRestFrame: body %d has no capsule" % body)
+	var fallback: Array[Vector3] = [Vector3.ZERO, Vector3.UP]
+	return fallback
