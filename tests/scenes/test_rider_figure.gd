@@ -89,6 +89,8 @@ func test_the_skin_is_bound_to_a_skeleton_of_two_armed_two_legged_rider() -> voi
 
 
 func test_hands_and_feet_are_where_the_simulation_has_them_in_a_turn() -> void:
+	# The arcade controller plans nothing, so the ride is the same however busy the machine.
+	_game.bike.controller = "arcade"
 	Input.action_press(&"throttle", 0.7)
 	await wait_physics_frames(120)
 	Input.action_press(&"steer_right", 0.8)
@@ -113,10 +115,11 @@ func test_hands_and_feet_are_where_the_simulation_has_them_in_a_turn() -> void:
 		)
 		var knee := rider.bone_transform("shin" + s).origin
 		var simulated_knee := _simulated_end(BikeSimulation.UPPER_LEG, knee, side, out.knee)
-		assert_lt(knee.distance_to(simulated_knee), 0.06, "knee%s bent as simulated" % s)
+		assert_lt(knee.distance_to(simulated_knee), REACH, "knee%s bent as simulated" % s)
 		var elbow := rider.bone_transform("forearm" + s).origin
 		var simulated_elbow := _simulated_end(BikeSimulation.UPPER_ARM, elbow, side, out.elbow)
-		assert_lt(elbow.distance_to(simulated_elbow), 0.06, "elbow%s bent as simulated" % s)
+		# 2 mm measured: the hands hold the drawn grips, a little off the simulated hand.
+		assert_lt(elbow.distance_to(simulated_elbow), REACH, "elbow%s bent as simulated" % s)
 	var eyes := _view().eye_point()
 	var head := rider.bone_transform("head")
 	var looking := -head.basis.z.normalized()
