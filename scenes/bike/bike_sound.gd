@@ -35,6 +35,12 @@ func _ready() -> void:
 	Settings.changed.connect(_on_setting_changed)
 	play()
 	_playback = get_stream_playback() as AudioStreamGeneratorPlayback
+	# The playback points at its generator by a bare pointer, and the audio server mixes
+	# a stopped playback once more (its fade-out) in its own thread, when this player and
+	# its stream may already be freed (godotengine/godot issue 92349). Read after free,
+	# the garbage sample rate once kept the audio thread looping, hanging the exit. So the
+	# playback holds its generator itself: freed only when the server lets go of both.
+	_playback.set_meta(&"generator", generator)
 
 
 func _physics_process(delta: float) -> void:
