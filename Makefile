@@ -2,10 +2,10 @@
 # `make play` and `make test` work on a bare machine. See README.md.
 SHELL := bash
 .DEFAULT_GOAL := help
-.PHONY: help setup build play test bench experiment export clean
+.PHONY: help setup build play test bench experiment export export-check clean
 
 help: ## List the targets
-	@grep -E '^[a-z]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-10s %s\n", $$1, $$2}'
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-13s %s\n", $$1, $$2}'
 
 setup: ## Provision host tools, Godot 4.6, ODE and the Python tools (idempotent)
 	@tools/provision-host.sh
@@ -29,8 +29,11 @@ bench: build ## Print the performance figures, planning and frame time (see docs
 experiment: build ## Reproduce the thesis's evaluation headless (docs/experiment.md; ARGS="--tries 50")
 	@tools/experiment all $(ARGS)
 
-export: build ## Export the Linux build into build/linux/
-	@tools/export.sh
+export: build ## Export the Linux build into build/linux/ (a portable engine: built once, ~1 h)
+	@PORTABLE_TEMPLATE=1 tools/export.sh
+
+export-check: build ## Export, then ride the build in a clean Debian 12 desktop root
+	@tools/export-check.sh
 
 clean: ## Remove build products (not the provisioning cache)
 	rm -rf build native/target addons/cpbp/bin/*.so .godot

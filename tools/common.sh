@@ -20,6 +20,12 @@ ODE_RECIPE_KEY="$(cat "$PROJECT_ROOT/tools/build-ode.sh" "$PROJECT_ROOT"/tools/o
   | sha256sum | cut -c1-12)"
 ODE_PREFIX="$CACHE_ROOT/ode-$ODE_VERSION_WANTED-$ODE_RECIPE_KEY"
 
+# The portable release template the export ships (tools/build-template.sh), keyed by its
+# recipe.
+TEMPLATE_RECIPE_KEY="$(cat "$PROJECT_ROOT/tools/build-template.sh" "$PROJECT_ROOT/tools/template-deps.sh" \
+  | sha256sum | cut -c1-12)"
+TEMPLATE_DIR="$CACHE_ROOT/godot-template-$TEMPLATE_RECIPE_KEY"
+
 # Serialises provisioning: two setups at once (say `make test` and `make play` in two
 # terminals) would otherwise build into the same cache directories and break each other.
 # The lock is held until the calling script exits.
@@ -34,6 +40,21 @@ die() { printf '\033[1;31m[setup] error:\033[0m %s\n' "$*" >&2; exit 1; }
 # Run a command as root: directly when we are root, through sudo otherwise.
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
+}
+
+# Installs the Debian packages named that are missing from the host (apt, as root).
+ensure_host_packages() {
+  local missing=() package
+  for package in "$@"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  log "installing host packages: ${missing[*]}"
+  if [ "$(id -u)" -ne 0 ] && ! command -v sudo >/dev/null; then
+    die "need root (or sudo) to install: ${missing[*]}"
+  fi
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
 
 # The Debian mirror the host already uses, so nothing outside the configured registry is contacted.

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Exports the Linux build into build/linux/ with the release template of the private
 # Godot root (or the user's own templates when GODOT is set), then checks that the
-# exported game starts and loads its native module.
+# exported game starts and loads its native module, and that the native module needs no
+# glibc newer than Debian 12's. With PORTABLE_TEMPLATE=1 the template is the portable one
+# built from source (tools/build-template.sh), which runs on Debian 12 as it is: what
+# `make export-check` ships.
 source "$(dirname "$0")/common.sh"
 cd "$PROJECT_ROOT"
 out_dir=build/linux
@@ -15,7 +18,9 @@ if [ -z "${GODOT:-}" ]; then
   export XDG_DATA_HOME="$CACHE_ROOT/godot-data"
   templates="$XDG_DATA_HOME/godot/export_templates/$version"
   mkdir -p "$templates"
-  ln -sf "$GODOT_ROOT/usr/bin/godot-template-release" "$templates/linux_release.x86_64"
+  release_template="$GODOT_ROOT/usr/bin/godot-template-release"
+  if [ -n "${PORTABLE_TEMPLATE:-}" ]; then release_template=$(tools/build-template.sh); fi
+  ln -sf "$release_template" "$templates/linux_release.x86_64"
   ln -sf "$GODOT_ROOT/usr/bin/godot-template-debug" "$templates/linux_debug.x86_64"
 fi
 
@@ -33,7 +38,7 @@ smoke="build/export-smoke"
 smoke_binary="$smoke/$(basename "$binary")"
 rm -rf "$smoke"; cp -r "$out_dir" "$smoke"
 run_env=()
-if [ -z "${GODOT:-}" ]; then
+if [ -z "${GODOT:-}" ] && [ -z "${PORTABLE_TEMPLATE:-}" ]; then
   patchelf --set-interpreter "$GODOT_ROOT/usr/lib64/ld-linux-x86-64.so.2" "$smoke_binary"
   libs="$GODOT_ROOT/usr/lib/x86_64-linux-gnu"
   run_env=(LD_LIBRARY_PATH="$libs:$libs/pulseaudio")
@@ -42,4 +47,5 @@ timeout 120 env "${run_env[@]}" "$smoke_binary" --headless --audio-driver Dummy 
   || { cat build/logs/export-run.log >&2; die "the exported game did not start with its native module"; }
 tools/check-godot-log build/logs/export-run.log --release-template
 grep "^native " build/logs/export-run.log
+tools/glibc-baseline.sh "$out_dir"/*.so
 log "exported to $binary ($(du -sh "$out_dir" | cut -f1))"

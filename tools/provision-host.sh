@@ -4,19 +4,7 @@
 # screenshots, patchelf for the export check) and the Rust components clippy and rustfmt.
 source "$(dirname "$0")/common.sh"
 
-HOST_PACKAGES=(debootstrap cmake dpkg-dev patch libclang-dev clang xvfb xauth patchelf ca-certificates)
-missing=()
-for package in "${HOST_PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  log "installing host packages: ${missing[*]}"
-  if [ "$(id -u)" -ne 0 ] && ! command -v sudo >/dev/null; then
-    die "need root (or sudo) to install: ${missing[*]}"
-  fi
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+ensure_host_packages debootstrap cmake dpkg-dev patch libclang-dev clang xvfb xauth patchelf ca-certificates
 
 command -v cargo >/dev/null || die "Rust is missing: install it with rustup (https://rustup.rs)"
 for component in clippy rustfmt; do
