@@ -64,6 +64,13 @@ static func platform() -> Dictionary:
 ## One line for title screens and bug reports.
 static func describe() -> String:
 	if not is_loaded():
+		if OS.has_feature("template"):
+			# A player's build: the library ships beside the game and Godot has printed why
+			# it would not open.
+			return (
+				"Native module not loaded: libcpbp.so beside the game is missing or could not"
+				+ " be opened (the first ERROR lines say why). Unpack the whole download again."
+			)
 		return "Native module not loaded: run 'make build'"
 	var precision := "double" if ode_configuration().contains("ODE_double_precision") else "single"
 	var threads := "thread-safe collision" if ode_is_suitable() else "NOT thread-safe collision"

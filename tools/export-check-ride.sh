@@ -10,6 +10,14 @@ rm -rf "$HOME/.local/share/godot"
 cd /opt/counter-steer
 ./counter-steer.x86_64 --headless --audio-driver Dummy -- --native-info 2>&1 | grep "^native" \
   || { echo "the native module did not load"; exit 1; }
+# Without its native library the game says what is wrong and exits with 1: no crash.
+mkdir -p /opt/no-library
+cp counter-steer.x86_64 counter-steer.pck /opt/no-library/
+status=0
+/opt/no-library/counter-steer.x86_64 --headless --audio-driver Dummy -- --native-info \
+  >/opt/no-library.log 2>&1 || status=$?
+grep "^Native module not loaded: libcpbp.so" /opt/no-library.log && [ "$status" -eq 1 ] \
+  || { cat /opt/no-library.log; echo "without its library the game exited $status"; exit 1; }
 
 Xvfb :7 -screen 0 1280x720x24 -nolisten tcp >/opt/xvfb.log 2>&1 &
 xvfb=$!

@@ -37,5 +37,5 @@ as_root unshare --mount --pid --fork bash -c \
   >build/logs/export-check.log 2>&1 \
   || { tail -40 build/logs/export-check.log >&2; die "the exported game did not ride in the Debian 12 root"; }
 cp "$desktop/opt/ride.png" build/screenshots/export-check.png
-grep -E "^(native|ride)" build/logs/export-check.log
+grep -E "^(native|Native|ride)" build/logs/export-check.log
 log "export check passed: build/screenshots/export-check.png"
