@@ -89,16 +89,17 @@ func follow() -> void:
 	var bodies: Array[Transform3D] = []
 	for body in _simulation.get_body_count():
 		bodies.append(_simulation.get_body_transform(body))
-	show_pose(bodies, _feet_down())
+	show_pose(bodies, feet_down_of(_simulation))
 
 
-## The feet the rider has put down that stand on the road (or on the side the bike leans
-## to, about to): each {side, sole (world), up}.
-func _feet_down() -> Array[Dictionary]:
+## The feet the rider of `simulation` has put down that stand on the road (or on the side
+## the bike leans to, about to): each {side, sole (world), up}, as `show_pose` takes them.
+## Recordings keep them with the bodies.
+static func feet_down_of(simulation: BikeSimulation) -> Array[Dictionary]:
 	var down: Array[Dictionary] = []
-	var feet := _simulation.get_feet()
-	var frame := _simulation.get_body_transform(FRAME)
-	var lean := _simulation.get_lean()
+	var feet := simulation.get_feet()
+	var frame := simulation.get_body_transform(FRAME)
+	var lean := simulation.get_lean()
 	for i in feet.size():
 		var side := -1.0 if i == 0 else 1.0
 		var foot: Dictionary = feet[i]

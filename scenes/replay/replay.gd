@@ -136,9 +136,9 @@ func _unhandled_input(event: InputEvent) -> void:
 
 func _show(delta: float) -> void:
 	var bodies := _recording.poses_at(_time)
-	_view.show_pose(bodies)
-	_camera.frame_bike(bodies[BikeSimulation.FRAME], delta)
 	var frame := _frames[clampi(int(_time * _recording.rate), 0, _frames.size() - 1)]
+	_view.show_pose(bodies, frame.feet)
+	_camera.frame_bike(bodies[BikeSimulation.FRAME], delta)
 	var inputs: PackedFloat32Array = frame.inputs
 	_inputs.throttle = inputs[ReplayRecorder.Channel.THROTTLE]
 	_inputs.brake = inputs[ReplayRecorder.Channel.BRAKE]

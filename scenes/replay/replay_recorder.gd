@@ -1,11 +1,11 @@
 class_name ReplayRecorder
 extends Node
-## Keeps the last run for the replay: at every control step, the bodies' poses, what the
-## player's hands gave (triggers, turn, rider stick), the speed and lean, and the
-## planner's trajectories, in a ring of at most `MOST_SECONDS`. Memory is bounded (about
-## 8 MB at 15 trajectories); a step costs one native call for the poses and one for the
-## paths. A respawn starts a new run but keeps the one before, so a crash can still be
-## watched after respawning.
+## Keeps the last run for the replay: at every control step, the bodies' poses, the feet
+## the rider put down, what the player's hands gave (triggers, turn, rider stick), the
+## speed and lean, and the planner's trajectories, in a ring of at most `MOST_SECONDS`.
+## Memory is bounded (about 8 MB at 15 trajectories); a step costs one native call for the
+## poses and one for the paths. A respawn starts a new run but keeps the one before, so a
+## crash can still be watched after respawning.
 
 ## Where each number sits in a frame's `inputs`.
 enum Channel { THROTTLE, BRAKE, TURN, RIDER_X, RIDER_Y, SPEED, LEAN, WANTED_LEAN }
@@ -22,7 +22,7 @@ var _bike: BikeSimulation
 var _driver: BikeDriver
 var _rate := 30.0
 ## The run being recorded and the one before, each a ring of frames (Dictionary: poses,
-## inputs, paths, best, warm) with the index of its oldest frame.
+## feet, inputs, paths, best, warm) with the index of its oldest frame.
 var _frames: Array[Dictionary] = []
 var _oldest := 0
 var _previous: Array[Dictionary] = []
@@ -84,6 +84,7 @@ func record_step() -> void:
 				_bike.get_desired_lean(),
 			]
 		),
+		feet = VisualBikeView.feet_down_of(_bike),
 		paths = _bike.get_trajectory_paths(),
 		best = _bike.get_best_trajectory(),
 		warm = _bike.get_warm_trajectory(),

@@ -5,6 +5,9 @@ extends TestCase
 
 const GAME := preload("res://scenes/game/game.tscn")
 
+## Longest a brake from riding pace to a foot put down may take (physics frames).
+const MOST_FRAMES_TO_STOP := 600
+
 var _game: Game
 
 
@@ -20,7 +23,7 @@ func before_each() -> void:
 
 
 func after_each() -> void:
-	for action: StringName in [&"throttle", &"steer_right"]:
+	for action: StringName in [&"throttle", &"brake", &"steer_left", &"steer_right"]:
 		Input.action_release(action)
 	get_tree().paused = false
 	_game.queue_free()
@@ -83,6 +86,38 @@ func test_the_ring_keeps_only_its_length_and_a_respawn_keeps_the_run_before() ->
 	var last: PackedFloat32Array = run[-1].poses
 	_game.restart()
 	assert_eq(_game.recorder.run()[-1].poses, last, "right after a respawn: the run before")
+
+
+func test_a_stop_on_a_foot_is_replayed_with_that_foot_down() -> void:
+	# The arcade controller's stop repeats exactly, however busy the machine.
+	Settings.set_value(&"controller", "arcade")
+	await _ride(2.0)
+	Input.action_press(&"brake")
+	var live := _game.bike.get_node(^"VisualBikeView") as VisualBikeView
+	var frames := 0
+	while not _a_leg_down(live) and frames < MOST_FRAMES_TO_STOP:
+		await wait_physics_frames(1)
+		frames += 1
+	assert_true(_a_leg_down(live), "braked to a stop on a foot (%d frames)" % frames)
+	await wait_physics_frames(30)
+	var legs_down := [live.is_leg_down(-1.0), live.is_leg_down(1.0)]
+	_game.watch_replay()
+	_tap(&"ui_accept")
+	Input.action_press(&"steer_right")
+	await wait_frames(60)
+	Input.action_release(&"steer_right")
+	var drawn := _game.replay.find_child("ReplayBike", true, false) as VisualBikeView
+	assert_true(_a_leg_down(drawn), "at the end: a leg drawn down")
+	assert_eq([drawn.is_leg_down(-1.0), drawn.is_leg_down(1.0)], legs_down, "as it was live")
+	Input.action_press(&"steer_left")
+	await wait_frames(60)
+	Input.action_release(&"steer_left")
+	assert_almost_eq(_game.replay.time(), 0.0, 1e-6, "scrubbed to the start")
+	assert_false(_a_leg_down(drawn), "riding off: both feet up")
+
+
+func _a_leg_down(view: VisualBikeView) -> bool:
+	return view.is_leg_down(-1.0) or view.is_leg_down(1.0)
 
 
 func test_nothing_to_replay_says_so() -> void:
