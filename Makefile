@@ -2,10 +2,10 @@
 # `make play` and `make test` work on a bare machine. See README.md.
 SHELL := bash
 .DEFAULT_GOAL := help
-.PHONY: help setup build play test bench experiment export export-check clean
+.PHONY: help setup build play test bench experiment export export-check export-windows export-check-windows clean
 
 help: ## List the targets
-	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-13s %s\n", $$1, $$2}'
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-21s %s\n", $$1, $$2}'
 
 setup: ## Provision host tools, Godot 4.6, ODE and the Python tools (idempotent)
 	@tools/provision-host.sh
@@ -35,5 +35,11 @@ export: build ## Export the Linux build into build/linux/ (a portable engine: bu
 export-check: build ## Export, then ride the build in a clean Debian 12 desktop root
 	@tools/export-check.sh
 
+export-windows: build ## Export the Windows build into build/windows/ (cross-built once, ~1 h)
+	@tools/export-windows.sh
+
+export-check-windows: build ## Export for Windows, then ride that build under Wine in a clean Debian 12 root
+	@tools/export-check.sh windows
+
 clean: ## Remove build products (not the provisioning cache)
-	rm -rf build native/target addons/cpbp/bin/*.so .godot
+	rm -rf build native/target addons/cpbp/bin/*.so addons/cpbp/bin/*.dll .godot

@@ -5,6 +5,17 @@ extends RefCounted
 ## so menus can show a clear message instead of a script error.
 
 const INFO_CLASS := &"NativeInfo"
+## The extension's description: which library each platform loads.
+const EXTENSION := "res://addons/cpbp/cpbp.gdextension"
+
+
+## The native library file this platform loads, as the extension lists it.
+static func library_file() -> String:
+	var extension := ConfigFile.new()
+	var key := "%s.release.x86_64" % OS.get_name().to_lower()
+	if extension.load(EXTENSION) != OK or not extension.has_section_key("libraries", key):
+		return "the native library"
+	return str(extension.get_value("libraries", key)).get_file()
 
 
 ## True when the extension is loaded and its classes are registered.
@@ -68,8 +79,11 @@ static func describe() -> String:
 			# A player's build: the library ships beside the game and Godot has printed why
 			# it would not open.
 			return (
-				"Native module not loaded: libcpbp.so beside the game is missing or could not"
-				+ " be opened (the first ERROR lines say why). Unpack the whole download again."
+				(
+					"Native module not loaded: %s beside the game is missing or could not be opened"
+					% library_file()
+				)
+				+ " (the first ERROR lines say why). Unpack the whole download again."
 			)
 		return "Native module not loaded: run 'make build'"
 	var precision := "double" if ode_configuration().contains("ODE_double_precision") else "single"

@@ -14,48 +14,23 @@
 # changed.
 source "$(dirname "$0")/common.sh"
 source "$PROJECT_ROOT/tools/template-deps.sh"
+source "$PROJECT_ROOT/tools/debian-sources.sh"
+source "$PROJECT_ROOT/tools/template-common.sh"
 lock_cache
 ensure_host_packages dpkg-dev cmake ninja-build pkg-config g++ binutils python3-venv
 
 template="$TEMPLATE_DIR/godot.linuxbsd.template_release.x86_64"
 if [ -x "$template" ]; then echo "$template"; exit 0; fi
-work="$CACHE_ROOT/godot-template.work"
+debian_sources_setup "$CACHE_ROOT/godot-template.work"
 deps="$work/deps"
-mkdir -p "$work/apt/lists/partial" "$work/src" "$work/stamps" "$deps"
+mkdir -p "$deps"
 started=$(date +%s)
-
-# Private apt configuration with source lines for Debian unstable (the private root's
-# suite), then 13 and 12 for what the mirror no longer keeps there.
-mirror=$(debian_mirror)
-for suite in sid trixie bookworm; do echo "deb-src $mirror $suite main"; done >"$work/apt/sources.list"
-apt_opts=(-o "Dir::Etc::SourceList=$work/apt/sources.list" -o "Dir::Etc::SourceParts=-"
-          -o "Dir::State::Lists=$work/apt/lists" -o "APT::Sandbox::User=root" -qq)
-[ -f "$work/stamps/apt" ] || { apt-get "${apt_opts[@]}" update >/dev/null && touch "$work/stamps/apt"; }
-
-# Unpacks the newest fetchable source of Debian package $1 whose version starts with $2
-# into $work/src/$1 (Debian's patches applied).
-fetch_source() {
-  local name=$1 wanted=${2:-} version dsc
-  [ -f "$work/stamps/source-$name" ] && return 0
-  for version in $(apt-cache "${apt_opts[@]}" showsrc "$name" | sed -n 's/^Version: //p' | sort -Vru); do
-    case "$version" in "$wanted"*) ;; *) continue ;; esac
-    rm -rf "$work/fetch" && mkdir -p "$work/fetch"
-    (cd "$work/fetch" && apt-get "${apt_opts[@]}" source --download-only "$name=$version" >/dev/null 2>&1) || continue
-    dsc=$(ls "$work"/fetch/*.dsc | head -n1)
-    rm -rf "${work:?}/src/$name"
-    dpkg-source --no-check -x "$dsc" "$work/src/$name" >/dev/null
-    echo "$name $version" >>"$work/versions"
-    touch "$work/stamps/source-$name"
-    return 0
-  done
-  die "no source package of $name${wanted:+ $wanted} could be fetched from $mirror"
-}
 
 engine_version=$(tools/godot --headless --version | sed -n 's/^\([0-9]*\.[0-9]*\.[0-9]*\).*/\1/p')
 [ -n "$engine_version" ] || die "cannot tell the private root's Godot version"
 log "building a portable Godot $engine_version release template (about 50 minutes on 2 cores, once)"
 fetch_source godot "$engine_version+ds"
-deps_recipe=$(sha256sum "$PROJECT_ROOT/tools/template-deps.sh" | cut -c1-12)
+deps_recipe=$(cat "$PROJECT_ROOT"/tools/template-{deps,common}.sh | sha256sum | cut -c1-12)
 for name in $TEMPLATE_DEPENDENCIES; do
   [ "$(cat "$work/stamps/built-$name" 2>/dev/null)" = "$deps_recipe" ] && continue
   fetch_source "$name"
@@ -79,23 +54,12 @@ src="$work/src/godot"
 # The repack strips the certificate bundle too; the template uses the system's.
 mkdir -p "$src/thirdparty/certs" && touch "$src/thirdparty/certs/ca-bundle.crt"
 scons_options=(
-  platform=linuxbsd target=template_release arch=x86_64 "-j$(nproc)"
-  production=no debug_symbols=no use_static_cpp=yes use_sowrap=yes
+  platform=linuxbsd "-j$(nproc)" use_sowrap=yes
   # Rendering by OpenGL 3 (the project's compatibility renderer) under X11, which Wayland
   # desktops run too; the Vulkan renderer and the Wayland display are left out.
-  vulkan=no wayland=no
+  wayland=no
   builtin_certs=no system_certs_path=/etc/ssl/certs/ca-certificates.crt
-  builtin_zlib=no builtin_libpng=no builtin_brotli=no builtin_freetype=no builtin_zstd=no
-  builtin_libwebp=no builtin_mbedtls=no builtin_sdl=no
-  # What the game does not use and whose libraries the repack strips: complex text
-  # shaping (the fallback text server draws the game's Latin text), JPEG, Ogg, Vorbis,
-  # Theora, ENet, WebSocket, UPnP, OpenXR, RegEx, Embree and navigation.
-  module_text_server_adv_enabled=no module_text_server_fb_enabled=yes
-  module_jpg_enabled=no module_ogg_enabled=no module_vorbis_enabled=no module_theora_enabled=no
-  module_enet_enabled=no module_websocket_enabled=no module_upnp_enabled=no
-  module_openxr_enabled=no module_regex_enabled=no module_raycast_enabled=no
-  module_navigation_2d_enabled=no module_navigation_3d_enabled=no
-  engine_update_check=no
+  "${TEMPLATE_COMMON_OPTIONS[@]}"
 )
 log "  compiling the engine (the long part; progress in $work/scons.log)"
 (cd "$src" && PATH="$work/bin:$PATH" PKG_CONFIG_PATH="$deps/lib/pkgconfig" \

@@ -23,8 +23,18 @@ ODE_PREFIX="$CACHE_ROOT/ode-$ODE_VERSION_WANTED-$ODE_RECIPE_KEY"
 # The portable release template the export ships (tools/build-template.sh), keyed by its
 # recipe.
 TEMPLATE_RECIPE_KEY="$(cat "$PROJECT_ROOT/tools/build-template.sh" "$PROJECT_ROOT/tools/template-deps.sh" \
-  | sha256sum | cut -c1-12)"
+  "$PROJECT_ROOT/tools/template-common.sh" | sha256sum | cut -c1-12)"
 TEMPLATE_DIR="$CACHE_ROOT/godot-template-$TEMPLATE_RECIPE_KEY"
+
+# The Windows build (tools/build-windows.sh): a private Debian-unstable root with MinGW-w64
+# and a Rust whose standard library source is there to be cross-built, and the Windows
+# release template it makes, keyed by the recipe.
+WINDOWS_ROOT_PACKAGES="rustc,cargo,rust-src,gcc-mingw-w64-x86-64-posix,g++-mingw-w64-x86-64-posix,cmake,make,ninja-build,scons,pkgconf,libclang-dev,clang,ca-certificates,patch"
+WINDOWS_ROOT="$CACHE_ROOT/windows-root-$(printf '%s' "sid:$WINDOWS_ROOT_PACKAGES" | sha256sum | cut -c1-12)"
+WINDOWS_RECIPE_KEY="$(cat "$PROJECT_ROOT"/tools/windows-*.sh "$PROJECT_ROOT/tools/build-windows.sh" \
+  "$PROJECT_ROOT/tools/template-common.sh" \
+  "$PROJECT_ROOT"/tools/windows-static-libraries/* | sha256sum | cut -c1-12)"
+WINDOWS_TEMPLATE_DIR="$CACHE_ROOT/godot-windows-template-$WINDOWS_RECIPE_KEY"
 
 # Serialises provisioning: two setups at once (say `make test` and `make play` in two
 # terminals) would otherwise build into the same cache directories and break each other.

@@ -1,29 +1,33 @@
 #!/bin/sh
-# Runs inside the clean Debian 12 root of tools/export-check.sh, as a player would: the
-# exported game started from its folder on an X display, the track picked in the start
-# menu with the keyboard (the second level: Down, Enter), five seconds on the throttle (W),
-# and a picture of the screen. Writes /opt/ride.png.
+# Runs inside the clean Debian root of tools/export-check.sh, as a player would: the
+# exported game BINARY (run through RUNNER, Wine for the Windows build) started from its
+# folder on an X display, the track picked in the start menu with the keyboard (the second
+# level: Down, Enter), six seconds on the throttle (W), and a picture of the screen.
+# Writes /opt/ride.png. Usage: ride.sh BINARY [RUNNER]
 set -eu
+binary=$1
+runner=${2:-}
 # A player's first start: no settings saved by an earlier check (the menu would open on
-# the level picked last).
-rm -rf "$HOME/.local/share/godot"
+# the level picked last), and for Wine a fresh Windows user folder.
+rm -rf "$HOME/.local/share/godot" "$HOME/.wine"
+export WINEDEBUG=-all
 cd /opt/counter-steer
-./counter-steer.x86_64 --headless --audio-driver Dummy -- --native-info 2>&1 | grep "^native" \
+$runner "./$binary" --headless --audio-driver Dummy -- --native-info 2>&1 | grep "^native" \
   || { echo "the native module did not load"; exit 1; }
 # Without its native library the game says what is wrong and exits with 1: no crash.
-mkdir -p /opt/no-library
-cp counter-steer.x86_64 counter-steer.pck /opt/no-library/
+rm -rf /opt/no-library && mkdir -p /opt/no-library
+cp "$binary" counter-steer.pck /opt/no-library/
 status=0
-/opt/no-library/counter-steer.x86_64 --headless --audio-driver Dummy -- --native-info \
+(cd /opt/no-library && $runner "./$binary" --headless --audio-driver Dummy -- --native-info) \
   >/opt/no-library.log 2>&1 || status=$?
-grep "^Native module not loaded: libcpbp.so" /opt/no-library.log && [ "$status" -eq 1 ] \
+grep "^Native module not loaded: " /opt/no-library.log && [ "$status" -eq 1 ] \
   || { cat /opt/no-library.log; echo "without its library the game exited $status"; exit 1; }
 
 Xvfb :7 -screen 0 1280x720x24 -nolisten tcp >/opt/xvfb.log 2>&1 &
 xvfb=$!
 export DISPLAY=:7
 sleep 2
-./counter-steer.x86_64 --resolution 1280x720 >/opt/game.log 2>&1 &
+$runner "./$binary" --resolution 1280x720 >/opt/game.log 2>&1 &
 game=$!
 trap 'kill $game $xvfb 2>/dev/null || true' EXIT
 window=$(xdotool search --sync --name "Counter-Steer" | head -n1)

@@ -31,8 +31,13 @@ fn main() {
     );
     println!("cargo:rustc-link-search=native={}", lib_dir.display());
     println!("cargo:rustc-link-lib=static=ode");
-    // ODE is C++ inside; its runtime comes from the system's libstdc++.
-    println!("cargo:rustc-link-lib=dylib=stdc++");
+    // ODE is C++ inside. On Linux its runtime comes from the system's libstdc++; a Windows
+    // build links MinGW's in, so the DLL needs nothing beside it that Windows lacks.
+    if env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("windows") {
+        println!("cargo:rustc-link-lib=static:-bundle=stdc++");
+    } else {
+        println!("cargo:rustc-link-lib=dylib=stdc++");
+    }
 
     let bindings = bindgen::Builder::default()
         .header("wrapper.h")

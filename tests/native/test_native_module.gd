@@ -52,3 +52,7 @@ func test_invalid_input_is_rejected_with_an_error_not_a_crash() -> void:
 	expect_error("gravity must be finite")
 	world.set_gravity(Vector3(0, NAN, 0))
 	assert_eq(world.body_count(), 0)
+
+
+func test_the_library_named_to_players_is_the_one_this_platform_loads() -> void:
+	assert_eq(NativeModule.library_file(), "libcpbp.so", "Linux loads the .so beside the game")
