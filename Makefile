@@ -38,7 +38,7 @@ export-check: build ## Export, then ride the build in a clean Debian 12 desktop 
 export-windows: build ## Export the Windows build into build/windows/ (cross-built once, ~1 h)
 	@tools/export-windows.sh
 
-export-check-windows: build ## Export for Windows, then ride that build under Wine in a clean Debian 12 root
+export-check-windows: build ## Export for Windows, then ride that build under Wine in a clean Debian 13 root
 	@tools/export-check.sh windows
 
 clean: ## Remove build products (not the provisioning cache)

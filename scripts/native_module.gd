@@ -78,12 +78,10 @@ static func describe() -> String:
 		if OS.has_feature("template"):
 			# A player's build: the library ships beside the game and Godot has printed why
 			# it would not open.
+			var problem := "%s beside the game is missing or could not be opened" % library_file()
 			return (
-				(
-					"Native module not loaded: %s beside the game is missing or could not be opened"
-					% library_file()
-				)
-				+ " (the first ERROR lines say why). Unpack the whole download again."
+				"Native module not loaded: %s (the first ERROR lines say why)." % problem
+				+ " Unpack the whole download again."
 			)
 		return "Native module not loaded: run 'make build'"
 	var precision := "double" if ode_configuration().contains("ODE_double_precision") else "single"

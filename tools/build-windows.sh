@@ -52,7 +52,7 @@ tar -C native --exclude=./target -cf - . | tar -C "$build/native" -xf -
 
 skip_template=
 if [ -f "$template" ]; then skip_template=1; else
-  log "building the Windows native module and a Godot $engine_version Windows release template (about 50 minutes on 2 cores, once)"
+  log "building the Windows native module and a Godot $engine_version Windows release template (about 30 minutes on 2 cores, once)"
 fi
 as_root unshare --mount --fork bash -c \
   'mount -t proc proc "$1/proc" &&

@@ -23,13 +23,17 @@ status=0
 grep "^Native module not loaded: " /opt/no-library.log && [ "$status" -eq 1 ] \
   || { cat /opt/no-library.log; echo "without its library the game exited $status"; exit 1; }
 
+# This script is the first process of its own PID namespace: when it ends, the kernel kills
+# what is left at once, so it waits for X to go. A lock left by a check that was killed
+# anyway belongs to no server (none but ours can run in this namespace).
+rm -f /tmp/.X7-lock /tmp/.X11-unix/X7
 Xvfb :7 -screen 0 1280x720x24 -nolisten tcp >/opt/xvfb.log 2>&1 &
 xvfb=$!
 export DISPLAY=:7
 sleep 2
 $runner "./$binary" --resolution 1280x720 >/opt/game.log 2>&1 &
 game=$!
-trap 'kill $game $xvfb 2>/dev/null || true' EXIT
+trap 'kill $game $xvfb 2>/dev/null; wait 2>/dev/null || true' EXIT
 window=$(xdotool search --sync --name "Counter-Steer" | head -n1)
 xdotool windowfocus --sync "$window"
 # The software renderer draws a few frames a second: give the menu time to appear.

@@ -4,8 +4,8 @@ extends Node
 ## the rider put down, what the player's hands gave (triggers, turn, rider stick), the
 ## speed and lean, and the planner's trajectories, in a ring of at most `MOST_SECONDS`.
 ## Memory is bounded (about 8 MB at 15 trajectories); a step costs one native call for the
-## poses and one for the paths. A respawn starts a new run but keeps the one before, so a
-## crash can still be watched after respawning.
+## poses, one for the paths and three for the feet. A respawn starts a new run but keeps
+## the one before, so a crash can still be watched after respawning.
 
 ## Where each number sits in a frame's `inputs`.
 enum Channel { THROTTLE, BRAKE, TURN, RIDER_X, RIDER_Y, SPEED, LEAN, WANTED_LEAN }

@@ -172,7 +172,5 @@ func _finish() -> void:
 		print("\nNo test ran.")
 	print("\nGDScript: %d passed, %d failed, %d skipped" % [_passed, _failed, _skipped])
 	# A game a test freed may still have its engine's sound in the audio server, which lets
-	# go of it only at its next mix: quitting before that leaks it (see CleanExit). The
-	# audio thread mixes while this one waits.
-	OS.delay_msec(CleanExit.MIXES * CleanExit.MIX_PERIOD_MS)
-	get_tree().quit(1 if _failed > 0 or _passed + _failed == 0 else 0)
+	# go of it only at its next mix: quitting before that leaks it (see CleanExit).
+	CleanExit.quit(get_tree(), 1 if _failed > 0 or _passed + _failed == 0 else 0)
