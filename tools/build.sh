@@ -12,6 +12,7 @@ installed=addons/cpbp/bin/libcpbp.so
 if ! cmp -s "$built" "$installed"; then
   cp "$built" "$installed.tmp" && mv "$installed.tmp" "$installed"
 fi
+use_scratch_user_data import
 first_import=true
 [ -f .godot/extension_list.cfg ] && first_import=false
 if ! tools/godot --headless --path . --import >build/logs/import.log 2>&1; then

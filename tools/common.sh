@@ -44,6 +44,28 @@ lock_cache() {
   flock 9
 }
 
+# Godot keeps user:// (settings, records, ghosts, its own logs) under
+# $XDG_DATA_HOME/godot/app_userdata/Counter-Steer, and the editor its settings under
+# $XDG_CONFIG_HOME/godot. Every tool that starts Godot for a check, an import or a
+# measurement gives it data and config homes of its own, emptied for that run under
+# build/scratch/NAME, so it never reads what an earlier run or the player left there and
+# never writes into the player's files. The folder stays after the run (Godot's logs in it
+# help when a check fails); `make clean` removes it. COUNTER_STEER_SCRATCH tells the game's
+# test runner which folder that is, so it can refuse to run anywhere else. Only `make play`
+# runs the game in the player's own folder.
+use_scratch_user_data() {
+  local dir="$PROJECT_ROOT/build/scratch/$1"
+  rm -rf "$dir" && mkdir -p "$dir/data" "$dir/config"
+  export XDG_DATA_HOME="$dir/data" XDG_CONFIG_HOME="$dir/config" COUNTER_STEER_SCRATCH="$dir"
+}
+
+# The folder where Godot keeps the player's user:// for this project (project.godot's name).
+player_user_data_dir() {
+  local name
+  name=$(sed -n 's|^config/name="\(.*\)"$|\1|p' "$PROJECT_ROOT/project.godot")
+  printf '%s\n' "${XDG_DATA_HOME:-$HOME/.local/share}/godot/app_userdata/$name"
+}
+
 log() { printf '\033[1;34m[setup]\033[0m %s\n' "$*" >&2; }
 die() { printf '\033[1;31m[setup] error:\033[0m %s\n' "$*" >&2; exit 1; }
 

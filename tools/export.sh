@@ -10,6 +10,7 @@ cd "$PROJECT_ROOT"
 out_dir=build/linux
 binary="$out_dir/counter-steer.x86_64"
 mkdir -p "$out_dir" build/logs
+use_scratch_user_data export
 
 if [ -z "${GODOT:-}" ]; then
   # Godot finds templates under $XDG_DATA_HOME/godot/export_templates/<version>; point that
@@ -43,6 +44,7 @@ if [ -z "${GODOT:-}" ] && [ -z "${PORTABLE_TEMPLATE:-}" ]; then
   libs="$GODOT_ROOT/usr/lib/x86_64-linux-gnu"
   run_env=(LD_LIBRARY_PATH="$libs:$libs/pulseaudio")
 fi
+use_scratch_user_data export-smoke-run
 timeout 120 env "${run_env[@]}" "$smoke_binary" --headless --audio-driver Dummy -- --native-info >build/logs/export-run.log 2>&1 \
   || { cat build/logs/export-run.log >&2; die "the exported game did not start with its native module"; }
 tools/check-godot-log build/logs/export-run.log --release-template

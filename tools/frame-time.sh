@@ -10,11 +10,12 @@ cd "$PROJECT_ROOT"
 mkdir -p build/logs
 if [[ ! -f build/ghosts/track.ghost ]]; then
   log "riding the bot's lap for a ghost to race"
-  tools/godot --headless --path . --audio-driver Dummy --fixed-fps 60 res://tests/test_runner.tscn \
-    -- --dir=res://tests/levels --filter=then_its_ghost >build/logs/frame-time-ghost.log 2>&1 \
+  tools/run-suites.sh frame-time-ghost --dir=res://tests/levels --filter=then_its_ghost \
+    >build/logs/frame-time-ghost.log 2>&1 \
     || die "the bot's lap failed (build/logs/frame-time-ghost.log)"
 fi
 for controller in arcade combined; do
+  use_scratch_user_data frame-time-$controller
   log=build/logs/frame-time-$controller.log
   timeout 900 xvfb-run -a -s "-screen 0 1280x720x24" tools/godot --path . --rendering-driver opengl3 \
     --resolution 1280x720 --fixed-fps 60 res://tests/bench/frame_time.tscn -- \

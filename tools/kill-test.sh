@@ -6,6 +6,8 @@ source "$(dirname "$0")/common.sh"
 cd "$PROJECT_ROOT"
 mkdir -p build/logs
 rounds=${1:-8}
+# One data home for all rounds: each round reads back what the killed writer left.
+use_scratch_user_data kill-test
 for round in $(seq "$rounds"); do
   fresh=$([[ $round -eq 1 ]] && echo --fresh || true)
   tools/godot --headless --path . --audio-driver Dummy res://tests/saves/save_stress.tscn -- --write $fresh \

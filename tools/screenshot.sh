@@ -8,6 +8,7 @@ scene=$1; out=$2; frames=${3:-30}
 command -v xvfb-run >/dev/null || die "xvfb-run is missing; run tools/provision-host.sh"
 mkdir -p "$(dirname "$out")" build/logs
 log="build/logs/screenshot-$(basename "$out" .png).log"
+use_scratch_user_data "screenshot-$(basename "$out" .png)"
 timeout 300 xvfb-run -a -s "-screen 0 1280x720x24" tools/godot --path . --rendering-driver opengl3 --audio-driver Dummy \
   --resolution 1280x720 --fixed-fps 60 res://tests/screenshots/capture.tscn -- \
   --scene="$scene" --out="$PROJECT_ROOT/$out" --frames="$frames" "${@:4}" >"$log" 2>&1 \

@@ -9,6 +9,7 @@ command -v xvfb-run >/dev/null || die "xvfb-run is missing; run tools/provision-
 out=build/sound
 rm -rf "$out" && mkdir -p "$out" build/logs
 log=build/logs/sound-capture.log
+use_scratch_user_data sound-check
 # The movie writer saves every frame as a picture beside the sound (the capture leaves out
 # the 3D scene, so they are cheap); --quit-after ends a capture that fails to load.
 timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" tools/godot --path . --rendering-driver opengl3 \

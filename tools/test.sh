@@ -18,10 +18,27 @@ step() {
   fi
 }
 
+# Every check runs Godot in a scratch data home (use_scratch_user_data); the player's own
+# folder must come out of the run byte for byte as it went in: every entry's type, mode,
+# size, time and path, and every file's hash.
+player_data=$(player_user_data_dir)
+player_data_listing() {
+  [ -d "$player_data" ] || { echo "no folder"; return; }
+  cd "$player_data" || return
+  find . -printf '%y %m %s %T@ %p\n' | LC_ALL=C sort
+  find . -type f -print0 | LC_ALL=C sort -z | xargs -0r sha256sum
+}
+player_data_before=$(player_data_listing)
+player_data_unchanged() {
+  diff <(printf '%s\n' "$player_data_before") <(player_data_listing) >&2 \
+    || { echo "make test changed the player's files in $player_data (above)" >&2; return 1; }
+  echo "unchanged: $player_data"
+}
+
 gdscript_files() { git ls-files -co --exclude-standard -- '*.gd'; }
 godot_suites() {
   # A test that hangs (say, one that frees the runner) must fail the run, not stall CI.
-  timeout 900 tools/godot --headless --path . --audio-driver Dummy --fixed-fps 60 res://tests/test_runner.tscn 2>&1 | tee build/logs/gdscript-tests.log
+  timeout 900 tools/run-suites.sh gdscript-suites 2>&1 | tee build/logs/gdscript-tests.log
   local status=${PIPESTATUS[0]}
   tools/check-godot-log build/logs/gdscript-tests.log --test-run && return "$status"
 }
@@ -82,5 +99,6 @@ step "screenshots (Xvfb)"   screenshots
 # speed; a paused game is exactly silent.
 step "bike sound (Xvfb)"    tools/sound-check.sh
 step "export + smoke run"   tools/export.sh
+step "the player's files untouched" player_data_unchanged
 
 printf '\n%s\n' "${summary[@]}"

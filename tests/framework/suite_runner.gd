@@ -23,6 +23,11 @@ var _capture := ErrorCapture.new()
 func _ready() -> void:
 	OS.add_logger(_capture)
 	print(START_MARKER)
+	var refusal := _scratch_refusal()
+	if not refusal.is_empty():
+		_record_failure("user://", refusal)
+		_finish()
+		return
 	var options := _parse_arguments(OS.get_cmdline_user_args())
 	var dirs: PackedStringArray = options.dirs
 	var suites: PackedStringArray = []
@@ -31,6 +36,23 @@ func _ready() -> void:
 	for path: String in suites:
 		await _run_suite(path, options.filter)
 	_finish()
+
+
+## Tests save settings, records and ghosts, so they run only in a data home made empty for
+## the run by tools/run-suites.sh, never in the player's own user:// folder.
+func _scratch_refusal() -> String:
+	var scratch := OS.get_environment("COUNTER_STEER_SCRATCH")
+	if scratch.is_empty():
+		return (
+			(
+				"refusing to run in the player's data (%s): start the suites with "
+				+ "tools/run-suites.sh NAME, which gives them a scratch folder"
+			)
+			% OS.get_user_data_dir()
+		)
+	if not OS.get_user_data_dir().begins_with(scratch.path_join("")):
+		return "user:// is %s, outside the scratch folder %s" % [OS.get_user_data_dir(), scratch]
+	return ""
 
 
 func _parse_arguments(arguments: PackedStringArray) -> Dictionary:

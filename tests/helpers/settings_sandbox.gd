@@ -1,22 +1,23 @@
 class_name SettingsSandbox
 extends RefCounted
-## Test helper: points the Settings autoload at scratch files, so tests never touch the
-## player's own settings, records and ghosts, and back again.
+## Test helper: points the Settings autoload at scratch files (defaults, no records, no
+## ghosts) and back again. The suites already run in a data home of their own
+## (tools/run-suites.sh); this gives each test a clean start within it.
 
 const SETTINGS := "user://test-settings.cfg"
 const RECORDS := "user://test-records.cfg"
 const GHOSTS := "user://test-ghosts"
 
 
-## Switches Settings to empty scratch files (defaults).
+## Switches Settings to empty scratch files (defaults). Whatever is missing is made: the
+## first test of a fresh data home finds no folders at all.
 static func enter() -> void:
-	for path: String in [SETTINGS, RECORDS, SETTINGS + ".broken"]:
+	for path: String in [SETTINGS, RECORDS, SETTINGS + ".broken", RECORDS + ".broken"]:
 		DirAccess.remove_absolute(path)
+	empty_folder(GHOSTS)
 	Settings.settings_path = SETTINGS
 	Settings.records_path = RECORDS
 	Settings.ghosts_dir = GHOSTS
-	for ghost: String in DirAccess.get_files_at(GHOSTS):
-		DirAccess.remove_absolute(GHOSTS.path_join(ghost))
 	Settings.reload()
 
 
@@ -26,3 +27,10 @@ static func leave() -> void:
 	Settings.records_path = Settings.PLAYER_RECORDS
 	Settings.ghosts_dir = Settings.PLAYER_GHOSTS
 	Settings.reload()
+
+
+## Makes `folder` exist and hold no files, whether or not it was there before.
+static func empty_folder(folder: String) -> void:
+	DirAccess.make_dir_recursive_absolute(folder)
+	for file: String in DirAccess.get_files_at(folder):
+		DirAccess.remove_absolute(folder.path_join(file))

@@ -5,7 +5,8 @@ extends Node
 ## file must be whole, either the last save or the one before, never half of one or set
 ## aside as broken.
 ##
-## Works in `user://kill-test/`, never on the player's own files.
+## Works in `user://kill-test/` of the scratch data home tools/kill-test.sh gives it, never
+## on the player's own files.
 
 const FOLDER := "user://kill-test"
 const LEVEL := "track"
@@ -17,8 +18,7 @@ const FRAMES := 9000
 func _ready() -> void:
 	if "--fresh" in OS.get_cmdline_user_args():
 		for folder: String in [FOLDER.path_join("ghosts"), FOLDER]:
-			for file: String in DirAccess.get_files_at(folder):
-				DirAccess.remove_absolute(folder.path_join(file))
+			SettingsSandbox.empty_folder(folder)
 	Settings.settings_path = FOLDER.path_join("settings.cfg")
 	Settings.records_path = FOLDER.path_join("records.cfg")
 	Settings.ghosts_dir = FOLDER.path_join("ghosts")

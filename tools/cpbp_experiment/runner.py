@@ -4,10 +4,12 @@ as it ends."""
 from __future__ import annotations
 
 import ctypes
+import functools
 import json
 import math
 import os
 import queue
+import shutil
 import signal
 import subprocess
 import sys
@@ -88,6 +90,20 @@ def godot_command(arguments: list[str]) -> list[str]:
     ]
 
 
+@functools.cache
+def worker_environment() -> dict[str, str]:
+    """The environment of every worker: a Godot data home of its own (build/scratch/
+    experiment, emptied once per driver, as tools/common.sh's use_scratch_user_data does for
+    the other checks), so workers never write into the player's user:// folder."""
+    scratch = PROJECT_ROOT / "build" / "scratch" / "experiment"
+    shutil.rmtree(scratch, ignore_errors=True)
+    homes = {"XDG_DATA_HOME": scratch / "data", "XDG_CONFIG_HOME": scratch / "config"}
+    for home in homes.values():
+        home.mkdir(parents=True)
+    return {**os.environ, **{name: str(home) for name, home in homes.items()},
+            "COUNTER_STEER_SCRATCH": str(scratch)}
+
+
 def _die_with_parent() -> None:
     # A worker whose driver was killed stops too, instead of riding on unheard.
     libc = ctypes.CDLL("libc.so.6", use_errno=True)
@@ -102,6 +118,7 @@ def start_worker(arguments: list[str], log: Path) -> subprocess.Popen:
             stdout=subprocess.PIPE,
             stderr=stderr,
             text=True,
+            env=worker_environment(),
             preexec_fn=_die_with_parent,
         )
 

@@ -12,7 +12,8 @@ import unittest
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from cpbp_experiment.runner import PROJECT_ROOT, godot_command, worker_platform
+from cpbp_experiment.runner import (PROJECT_ROOT, godot_command, worker_environment,
+                                   worker_platform)
 
 QUICK = ["--tries", "2", "--speeds", "25", "--controllers", "arcade,combined-5", "--jobs", "2",
          "--seed", "700"]
@@ -27,7 +28,7 @@ def experiment(*arguments: str) -> subprocess.CompletedProcess:
 def worker_rows(*arguments: str) -> dict[int, dict]:
     """The TRY rows a worker prints, by attempt."""
     done = subprocess.run(godot_command(list(arguments)), capture_output=True, text=True,
-                          timeout=300)
+                          timeout=300, env=worker_environment())
     if done.returncode != 0:
         raise AssertionError(f"worker failed: {done.stderr[-2000:]}")
     rows = [json.loads(line[4:]) for line in done.stdout.splitlines() if line.startswith("TRY ")]
