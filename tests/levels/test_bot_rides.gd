@@ -164,6 +164,75 @@ func test_a_stop_on_a_foot_for_30_s_and_a_pull_away() -> void:
 	print("bot stop on a foot: leaned at most %.1f degrees" % rad_to_deg(widest_lean))
 
 
+func test_full_throttle_then_the_full_brake_on_the_tracks_straight() -> void:
+	# From the start line, full throttle towards 40 km/h (the game's top speed) down the
+	# straight, then the full brake 16 m on: the bike stops before the kicker and stands
+	# on a foot (ABS and a loaded rear; before issue 33 every controller fell here).
+	await _start(TRACK, "combined")
+	_follow(_straight(Vector3(0, 0, 6), Vector3(0, 0, -40)), 40.0)
+	var fastest := 0.0
+	while _game.bike.get_center_of_mass().z > -10.0 and _game.level.elapsed < 10.0:
+		await wait_physics_frames(1)
+		fastest = maxf(fastest, _game.bike.get_speed())
+	_bot.speed_kmh = 0.0
+	var widest_lean := 0.0
+	for frame in 5 * 60:
+		await wait_physics_frames(1)
+		assert_false(_game.bike.is_crashed(), "fell %.1f s into the brake" % (frame / 60.0))
+		if _game.bike.is_crashed():
+			return
+		widest_lean = maxf(widest_lean, absf(_game.bike.get_lean()))
+	var stopped_at := _game.bike.get_center_of_mass().z
+	assert_gt(fastest * 3.6, 30.0, "braked from over 30 km/h")
+	assert_lt(absf(_game.bike.get_speed()), 0.1, "standing still")
+	assert_gt(stopped_at, -24.0, "stopped before the kicker")
+	var on_a_foot := false
+	for foot: Dictionary in _game.bike.get_feet():
+		on_a_foot = on_a_foot or foot.on_ground
+	assert_true(on_a_foot, "standing on a foot")
+	print(
+		(
+			"bot full brake from %.0f km/h: stopped %.1f m on, leaned at most %.1f degrees"
+			% [fastest * 3.6, -10.0 - stopped_at, rad_to_deg(widest_lean)]
+		)
+	)
+
+
+func test_a_stop_and_a_hill_start_on_the_tracks_long_hill() -> void:
+	# Up the back straight at 20 km/h, the brake on the long hill's 7° way up (it rises
+	# 1 m over 8 m from z = -15), 3 s standing on it, then off again uphill: the brake
+	# holds the bike, and pulling away it rolls back less than 0.3 m.
+	await _start(TRACK, "combined")
+	_game.cycle_spawn(2)
+	await wait_physics_frames(2)
+	_follow(_straight(Vector3(-40, 0, -95), Vector3(-40, 0, 30)), 20.0)
+	while _game.bike.get_center_of_mass().z < -13.0 and _game.level.elapsed < 25.0:
+		await wait_physics_frames(1)
+	_bot.speed_kmh = 0.0
+	await wait_physics_frames(4 * 60)
+	var stopped_at := _game.bike.get_center_of_mass()
+	await wait_physics_frames(3 * 60)
+	var crept := _game.bike.get_center_of_mass().z - stopped_at.z
+	_bot.speed_kmh = 20.0
+	var least_z := stopped_at.z
+	while _game.bike.get_center_of_mass().z < 0.0 and _game.level.elapsed < 45.0:
+		await wait_physics_frames(1)
+		assert_false(_game.bike.is_crashed(), "fell on the hill")
+		if _game.bike.is_crashed():
+			return
+		least_z = minf(least_z, _game.bike.get_center_of_mass().z)
+	assert_between(stopped_at.z, -15.0, -7.0, "stopped on the way up")
+	assert_lt(absf(crept), 0.05, "the brake held it")
+	assert_lt(stopped_at.z - least_z, 0.3, "rolled back less than 0.3 m")
+	assert_gt(_game.bike.get_center_of_mass().z, 0.0, "over the hill")
+	print(
+		(
+			"bot hill start: stopped %.1f m up the hill's way up, crept %.3f m, rolled back %.3f m"
+			% [stopped_at.z + 15.0, crept, stopped_at.z - least_z]
+		)
+	)
+
+
 func test_a_u_turn_of_3_m_radius_at_walking_pace() -> void:
 	# Up the middle, round a half circle of 3 m radius, and back, at 7 km/h: the tightest
 	# circle the turn stick asks for.

@@ -36,14 +36,17 @@ def main(argv: list[str] | None = None) -> int:
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="tools/planner-scenarios",
-        description="C-PBP, predictive sampling and MPPI on the same scripted rides (a "
-                    "turn, a slalom, a push, walking pace), paired by seed. Rows are "
+        description="C-PBP, predictive sampling, MPPI and arcade on the same scripted rides "
+                    "(a turn, a slalom, a push, walking pace; hard stops, slopes and hill "
+                    "starts: stop10, stop25, stop40, brake-turn, slope5, slope10, slope15, "
+                    "downhill15), paired by seed. Rows are "
                     "appended to OUT/scenarios.csv as each ride ends; rerunning resumes.")
     parser.add_argument("command", nargs="?", choices=("all", "run", "report"), default="all")
     parser.add_argument("--out", default="docs/scenarios", help="directory of scenarios.csv "
                         "and the report (default docs/scenarios)")
     parser.add_argument("--controllers", default="combined,optimizer,sampling,mppi",
-                        help="planning controllers of the registry, comma-separated")
+                        help="planning controllers of the registry, or arcade (ridden once "
+                             "per seed, as N = 0), comma-separated")
     parser.add_argument("--counts", default="5,10", help="trajectory counts N")
     parser.add_argument("--seeds", default="0-9", help="FIRST-LAST: ride i for each")
     parser.add_argument("--scenarios", default="turn,slalom,push,walk")

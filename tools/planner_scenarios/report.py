@@ -14,8 +14,16 @@ METRICS = {
     "slalom": "RMS lean error in a ±15° slalom at 20 km/h (°)",
     "push": "largest lean in the 5 s after a 100–250 N·s shove at 15 km/h (°)",
     "walk": "speed held at walking pace, asked 8 km/h (km/h)",
+    "stop10": "full brake from 10 km/h, then standing: stopping distance (m)",
+    "stop25": "full brake from 25 km/h, then standing: stopping distance (m)",
+    "stop40": "full brake from 40 km/h, then standing: stopping distance (m)",
+    "brake-turn": "full brake in a 20° turn at 25 km/h: stopping distance (m)",
+    "slope5": "stop on a 5° slope, stand, hill start: rolled back (m)",
+    "slope10": "stop on a 10° slope, stand, hill start: rolled back (m)",
+    "slope15": "stop on a 15° slope, stand, hill start: rolled back (m)",
+    "downhill15": "stop facing down a 15° slope, stand, ride off: crept on the brake (m)",
 }
-ORDER = ("combined", "optimizer", "sampling", "mppi")
+ORDER = ("combined", "optimizer", "sampling", "mppi", "arcade")
 REFERENCE = "combined"
 
 

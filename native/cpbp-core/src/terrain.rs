@@ -61,10 +61,15 @@ pub struct TerrainPiece {
 impl TerrainPiece {
     /// Endless flat ground: the plane y = 0.
     pub fn flat_ground() -> Self {
+        Self::ground_through_origin("flat ground", DVec3::Y)
+    }
+
+    /// An endless plane through the origin with unit `normal`: a slope, for a tilted one.
+    pub fn ground_through_origin(source: &str, normal: DVec3) -> Self {
         Self {
-            source: "flat ground".into(),
+            source: source.into(),
             shape: TerrainShape::Plane {
-                normal: DVec3::Y,
+                normal,
                 distance: 0.0,
             },
             placement: Placement::IDENTITY,

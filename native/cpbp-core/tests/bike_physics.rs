@@ -205,10 +205,18 @@ fn the_measured_lean_rate_is_the_derivative_of_the_lean() {
     // rate with the lean's change over one step.
     let yaw = DQuat::from_rotation_y(0.4);
     let leaning = DQuat::from_axis_angle(yaw * DVec3::X, 5f64.to_radians()) * yaw;
-    let (mut world, bike) = flat_world(Placement {
+    // Without feet: a foot props the bike at a few degrees (`Feet`).
+    let mut world = World::new([0.0, -9.81, 0.0]);
+    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let params = BikeParams {
+        feet: None,
+        ..BikeParams::default()
+    };
+    let placement = Placement {
         position: DVec3::new(0.0, 0.03, 0.0),
         rotation: leaning,
-    });
+    };
+    let bike = Bike::build(&mut world, &params, &placement);
     let mut controls = Controls::default();
     for _ in 0..steps(0.6) {
         step(&mut world, &bike, &mut controls);

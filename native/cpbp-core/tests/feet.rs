@@ -103,3 +103,44 @@ fn every_controller_rides_at_walking_pace_straight_and_round_the_tightest_turn()
         ride_for(&mut ride, 9.0);
     }
 }
+
+#[test]
+fn standing_on_a_foot_the_rider_holds_the_bar_straight() {
+    // A bar left at full lock leans the bike onto the foot (the fork's flop) and sets
+    // off steered into the lean: the rider straightens it whatever the controller asks.
+    let mut ride = Ride::new(
+        common::flat_ride_in(PhysicsModel::Exact),
+        ControllerKind::Manual,
+    );
+    let turning = |ride: &mut Ride, throttle: f64| {
+        let mut intent = *ride.intent();
+        intent.steer_rate = 1.0;
+        intent.drive.throttle = throttle;
+        intent.drive.max_speed = 5.0 / 3.6;
+        ride.set_intent(intent);
+    };
+    turning(&mut ride, 0.0);
+    let bar = |ride: &Ride| {
+        ride.sim()
+            .bike()
+            .steering(ride.sim().world())
+            .0
+            .to_degrees()
+    };
+    let mut widest = 0f64;
+    for _ in 0..3 * common::FRAMES_PER_SECOND {
+        ride.step();
+        widest = widest.max(bar(&ride).abs());
+    }
+    assert!(widest < 2.0, "the bar turned {widest:.1}° with a foot down");
+    // Pulling away, the feet come up and the bar is the controller's again.
+    turning(&mut ride, 1.0);
+    for _ in 0..common::FRAMES_PER_SECOND / 2 {
+        ride.step();
+    }
+    assert!(
+        bar(&ride) > 10.0,
+        "the bar at {:.1}° riding off",
+        bar(&ride)
+    );
+}

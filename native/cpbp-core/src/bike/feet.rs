@@ -24,26 +24,39 @@ pub struct Feet {
     pub surface: FootSurface,
     /// Below this forward speed (m/s) the feet are down.
     pub down_below: f64,
+    /// With a foot down the rider sits still, whatever the controller asks: the bar
+    /// turns back to centre at this rate per radian off it (1/s) and the body goes back
+    /// to the riding pose (`POSE_GAIN`), both at full strength. At a standstill neither
+    /// balances the bike, the foot does, but both can topple it. A planner left the bar
+    /// at full lock, the fork's flop leaned the bike onto the foot (10–14° on a 15° hill)
+    /// and the hill start set off steered into the lean and fell (17 of 30 seeds); with
+    /// the bar held, its rider's body still levered the bike from one foot over onto the
+    /// other, to 19°, where the flop outweighed the bar.
+    pub straighten_rate: f64,
 }
 
 impl Default for Feet {
     /// A foot 0.40 m out beside the footpeg, its sole a 5 cm sphere 4.5 cm above the
     /// road with the bike upright as built: with the suspension's sag it meets the road
     /// at about 1° of lean, and the bike stands within 3° of upright on whichever foot it
-    /// leans to (`tests/feet.rs`). The leg gives 1 cm under 200 N (20 kN/m, damped at
-    /// about critical for the bike's roll on it) and the shoe grips at μ = 0.8 (rubber
-    /// soles on asphalt). Down below 0.8 m/s (about 3 km/h), where steering no longer
-    /// balances.
+    /// leans to (`tests/feet.rs`). The leg is a propping strut, its knee locked: it
+    /// gives 1 cm under 800 N (80 kN/m, damped at about critical for the bike's roll on
+    /// it). At 20 kN/m the bike sank onto the leg to 10° standing on a 15° hill and a
+    /// planner's hill start from there fell. The shoe grips at μ = 0.8 (rubber soles on
+    /// asphalt). Down below 0.8 m/s (about 3 km/h), where steering no longer
+    /// balances. The bar goes straight in about half a second (6/s, the arcade
+    /// controller's rate for a wheel in the air).
     fn default() -> Self {
         Self {
             right_foot: DVec3::new(-0.05, 0.045, 0.40),
             radius: 0.05,
             surface: FootSurface {
                 mu: 0.8,
-                stiffness: 20_000.0,
-                damping: 1_500.0,
+                stiffness: 80_000.0,
+                damping: 3_000.0,
             },
             down_below: 0.8,
+            straighten_rate: 6.0,
         }
     }
 }

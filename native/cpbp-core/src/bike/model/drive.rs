@@ -74,10 +74,16 @@ impl Bike {
                         _ => 1.0,
                     },
                 };
+                let target = match &self.params.front_brake {
+                    Some(front) if brake_level(controls) > 0.0 && held.stoppie == 0.0 => {
+                        front.abs_floor(self.forward_speed(world, up), self.params.wheel_radius)
+                    }
+                    _ => c[index::REAR_WHEEL],
+                };
                 world.set_motor(
                     self.rear_axle,
                     0,
-                    c[index::REAR_WHEEL],
+                    target,
                     controls.max_torque(ForceClass::RearWheel) * drive_share,
                 );
             }
@@ -106,6 +112,13 @@ impl Bike {
         } else {
             level * brake.lift_off_share(self.suspension_compression(world).1)
         };
-        world.set_motor(self.front_axle, 0, 0.0, brake.max_torque * share);
+        // ABS keeps the wheels turning, except in a stoppie the rider asked for: the hold
+        // needs the wheel stopped to pitch the bike over it (the rear's ABS is off then too).
+        let floor = if held.stoppie > 0.0 {
+            0.0
+        } else {
+            brake.abs_floor(self.forward_speed(world, up), self.params.wheel_radius)
+        };
+        world.set_motor(self.front_axle, 0, floor, brake.max_torque * share);
     }
 }

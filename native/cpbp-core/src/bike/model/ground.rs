@@ -5,8 +5,9 @@
 use glam::DVec3;
 
 use super::{from_array, from_quat, Bike, Part};
-use crate::bike::controls::Controls;
+use crate::bike::controls::{index, Controls, ForceClass};
 use crate::bike::drive::throttle_open;
+use crate::bike::manual::POSE_GAIN;
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
 
@@ -107,16 +108,36 @@ impl Bike {
     }
 
     /// Puts the rider's feet down below walking pace and lifts them above it or when the
-    /// throttle opens (`Feet`); a rider who fell off has no feet on the bike.
-    pub(super) fn place_feet(&self, world: &mut World, controls: &Controls, up: DVec3) {
+    /// throttle opens (`Feet`); a rider who fell off has no feet on the bike. Returns
+    /// whether they are down.
+    pub(super) fn place_feet(&self, world: &mut World, controls: &Controls, up: DVec3) -> bool {
         let (Some(feet), Some(geoms)) = (&self.params.feet, &self.feet) else {
-            return;
+            return false;
         };
         let down = self.rider_is_on(world)
             && feet.down_at(self.forward_speed(world, up), throttle_open(controls));
         for foot in geoms {
             world.set_foot_down(*foot, down);
         }
+        down
+    }
+
+    /// `controls` with the bar and the rider's body held still, as a rider standing on a
+    /// foot holds them (`Feet::straighten_rate`); the triggers are left as they were.
+    pub(super) fn sitting_still(&self, world: &World, controls: &Controls) -> Controls {
+        let mut still = *controls;
+        let rate = self.params.feet.map_or(0.0, |feet| feet.straighten_rate);
+        still.set(index::STEER, -rate * self.steering(world).0);
+        self.pose_hold(world, POSE_GAIN, &mut still);
+        for class in [
+            ForceClass::Steering,
+            ForceClass::Waist,
+            ForceClass::Knee,
+            ForceClass::Arms,
+        ] {
+            still.set(index::FORCE + class as usize, 1.0);
+        }
+        still
     }
 
     /// Whether the rider's left and right feet stood on the ground in the last step.

@@ -196,6 +196,15 @@ impl Bike {
         held: PitchRequest,
         up: DVec3,
     ) {
+        // Standing on a foot the rider sits still, whatever the controller asks
+        // (`Feet::straighten_rate`); the planners' rollouts step the same rule.
+        let sitting_still;
+        let controls = if self.place_feet(world, controls, up) {
+            sitting_still = self.sitting_still(world, controls);
+            &sitting_still
+        } else {
+            controls
+        };
         let c = controls.values();
         world.set_motor(
             self.steer,
@@ -205,7 +214,6 @@ impl Bike {
         );
         self.set_rear_motor(world, controls, held, up);
         self.set_front_brake(world, controls, held, up);
-        self.place_feet(world, controls, up);
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
         for axis in 0..3 {

@@ -9,7 +9,10 @@
 //! Scenarios: `turn` (3 s straight at 20 km/h, then 15° right; the RMS lean error over
 //! the last 5 s), `slalom` (20 km/h, ±15° every 2 s for 12 s; RMS over the last 10 s),
 //! `push` (15 km/h, a sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s
-//! after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h).
+//! after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h); the
+//! stops and hill starts of `stops.rs`. `arcade` rides too, once per seed, as N = 0.
+
+mod stops;
 
 use std::collections::HashSet;
 use std::sync::Arc;
@@ -19,11 +22,15 @@ use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::Terrain;
+use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
 
-const SCENARIOS: [&str; 4] = ["turn", "slalom", "push", "walk"];
-const STEPS_PER_SECOND: f64 = 30.0;
+const MANOEUVRES: [&str; 4] = ["turn", "slalom", "push", "walk"];
+pub(crate) const STEPS_PER_SECOND: f64 = 30.0;
+
+fn scenario_names() -> Vec<&'static str> {
+    MANOEUVRES.into_iter().chain(stops::SCENARIOS).collect()
+}
 
 struct Args {
     controllers: Vec<ControllerKind>,
@@ -36,10 +43,10 @@ struct Args {
 }
 
 /// What one ride measured.
-struct Outcome {
-    fell: bool,
-    metric: f64,
-    planning_ms: f64,
+pub(crate) struct Outcome {
+    pub fell: bool,
+    pub metric: f64,
+    pub planning_ms: f64,
 }
 
 fn main() {
@@ -53,14 +60,24 @@ fn main() {
     println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms");
     for &scenario in &args.scenarios {
         for &kind in &args.controllers {
-            for &n in &args.counts {
+            // A controller that plans nothing rides once, as N = 0.
+            let counts = if kind.plans() {
+                args.counts.clone()
+            } else {
+                vec![0]
+            };
+            for &n in &counts {
                 for &seed in &args.seeds {
                     let physics = args.physics.name();
                     let key = format!("{scenario},{},{n},{seed},{physics}", kind.name());
                     if args.skip.contains(&key) {
                         continue;
                     }
-                    let o = ride_scenario(scenario, kind, n, seed, args.physics);
+                    let o = if stops::SCENARIOS.contains(&scenario) {
+                        stops::ride(scenario, kind, n, seed, args.physics)
+                    } else {
+                        ride_scenario(scenario, kind, n, seed, args.physics)
+                    };
                     println!("{key},{},{:.4},{:.3}", o.fell, o.metric, o.planning_ms);
                 }
             }
@@ -86,8 +103,8 @@ fn parse(arguments: Vec<String>) -> Result<Args, String> {
         .split(',')
         .map(|name| {
             ControllerKind::from_name(name)
-                .filter(|k| k.plans())
-                .ok_or(format!("not a planning controller: {name}"))
+                .filter(|k| k.plans() || *k == ControllerKind::Arcade)
+                .ok_or(format!("not a planning controller or arcade: {name}"))
         })
         .collect::<Result<_, _>>()?;
     let counts = value("--counts")?
@@ -104,14 +121,16 @@ fn parse(arguments: Vec<String>) -> Result<Args, String> {
         (Ok(a), Ok(b)) if a <= b => (a, b),
         _ => return Err(format!("--seeds is FIRST-LAST, not {seeds}")),
     };
+    let names = scenario_names();
     let scenarios = value("--scenarios")?
-        .unwrap_or(SCENARIOS.join(","))
+        .unwrap_or(MANOEUVRES.join(","))
         .split(',')
         .map(|name| {
-            SCENARIOS.into_iter().find(|s| *s == name).ok_or(format!(
-                "scenarios are {}, not {name}",
-                SCENARIOS.join(", ")
-            ))
+            names
+                .iter()
+                .copied()
+                .find(|s| *s == name)
+                .ok_or(format!("scenarios are {}, not {name}", names.join(", ")))
         })
         .collect::<Result<_, _>>()?;
     let physics = value("--physics")?.unwrap_or("exact".into());
@@ -155,7 +174,7 @@ fn ride_scenario(
         "push" => 15.0,
         _ => 20.0,
     };
-    let mut ride = new_ride(kind, n, seed, physics, kmh);
+    let mut ride = new_ride(kind, n, seed, physics, kmh, 0.0);
     let mut planning = Vec::new();
     let mut run = |ride: &mut Ride, seconds: f64, lean: f64, each: &mut dyn FnMut(&Ride)| {
         ride.set_intent(Intent {
@@ -229,21 +248,42 @@ fn ride_scenario(
     }
 }
 
-/// A ride on flat ground heading where seed `seed` says, waiting for every plan so the
-/// outcome does not depend on the machine, full throttle towards `kmh`.
-fn new_ride(kind: ControllerKind, n: usize, seed: u64, physics: PhysicsModel, kmh: f64) -> Ride {
-    let spawn = Placement {
-        position: DVec3::new(0.0, 0.02, 0.0),
-        rotation: DQuat::from_rotation_y(std::f64::consts::TAU * draw(seed, 0)),
+/// A ride heading where seed `seed` says, waiting for every plan so the outcome does not
+/// depend on the machine, full throttle towards `kmh`: on flat ground, or on an endless
+/// slope of `slope` (rad) rising ahead (falling for a negative slope).
+pub(crate) fn new_ride(
+    kind: ControllerKind,
+    n: usize,
+    seed: u64,
+    physics: PhysicsModel,
+    kmh: f64,
+    slope: f64,
+) -> Ride {
+    let heading = DQuat::from_rotation_y(std::f64::consts::TAU * draw(seed, 0));
+    let (spawn, terrain) = if slope == 0.0 {
+        let spawn = Placement {
+            position: DVec3::new(0.0, 0.02, 0.0),
+            rotation: heading,
+        };
+        (spawn, Terrain::flat())
+    } else {
+        let rotation = heading * DQuat::from_rotation_z(slope);
+        let normal = rotation * DVec3::Y;
+        let ground = TerrainPiece::ground_through_origin("slope", normal);
+        let spawn = Placement {
+            position: normal * 0.02,
+            rotation,
+        };
+        (
+            spawn,
+            Terrain::new(vec![ground]).expect("a plane is valid terrain"),
+        )
     };
     let config = SimulationConfig {
         physics,
         ..SimulationConfig::default()
     };
-    let mut ride = Ride::new(
-        Simulation::new(config, Arc::new(Terrain::flat()), spawn),
-        kind,
-    );
+    let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);
     ride.planner.optimizer.particles = n;
     ride.planner.optimizer.seed = seed;
     ride.planner.wait = PlanWait::EveryPlan;
