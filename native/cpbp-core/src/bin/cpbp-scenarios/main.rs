@@ -42,6 +42,16 @@ struct Args {
     skip: HashSet<String>,
 }
 
+/// Who rides a scenario: the controller, its trajectory count N (0 for arcade), the seed
+/// (heading, planner and the scenario's draw) and the physics.
+#[derive(Clone, Copy)]
+pub(crate) struct Rider {
+    pub kind: ControllerKind,
+    pub n: usize,
+    pub seed: u64,
+    pub physics: PhysicsModel,
+}
+
 /// What one ride measured.
 pub(crate) struct Outcome {
     pub fell: bool,
@@ -73,10 +83,16 @@ fn main() {
                     if args.skip.contains(&key) {
                         continue;
                     }
+                    let rider = Rider {
+                        kind,
+                        n,
+                        seed,
+                        physics: args.physics,
+                    };
                     let o = if stops::SCENARIOS.contains(&scenario) {
-                        stops::ride(scenario, kind, n, seed, args.physics)
+                        stops::ride(scenario, rider)
                     } else {
-                        ride_scenario(scenario, kind, n, seed, args.physics)
+                        ride_scenario(scenario, rider)
                     };
                     println!("{key},{},{:.4},{:.3}", o.fell, o.metric, o.planning_ms);
                 }
@@ -162,19 +178,13 @@ fn draw(seed: u64, what: u64) -> f64 {
     ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
 }
 
-fn ride_scenario(
-    scenario: &str,
-    kind: ControllerKind,
-    n: usize,
-    seed: u64,
-    physics: PhysicsModel,
-) -> Outcome {
+fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
     let kmh = match scenario {
         "walk" => 8.0,
         "push" => 15.0,
         _ => 20.0,
     };
-    let mut ride = new_ride(kind, n, seed, physics, kmh, 0.0);
+    let mut ride = new_ride(rider, kmh, 0.0);
     let mut planning = Vec::new();
     let mut run = |ride: &mut Ride, seconds: f64, lean: f64, each: &mut dyn FnMut(&Ride)| {
         ride.set_intent(Intent {
@@ -203,7 +213,7 @@ fn ride_scenario(
         }
         "slalom" => {
             run(&mut ride, 3.0, 0.0, &mut |_| {});
-            let first = if draw(seed, 1) < 0.5 { 1.0 } else { -1.0 };
+            let first = if draw(rider.seed, 1) < 0.5 { 1.0 } else { -1.0 };
             for gate in 0..6 {
                 let target = want * if gate % 2 == 0 { first } else { -first };
                 let measured = gate > 0;
@@ -219,8 +229,8 @@ fn ride_scenario(
             let sim = ride.sim();
             let forward = sim.bike().frame_rotation(sim.world()) * DVec3::X;
             let side = forward.cross(sim.up()).normalize_or_zero();
-            let sign = if draw(seed, 2) < 0.5 { 1.0 } else { -1.0 };
-            ride.push(side * sign * (100.0 + 150.0 * draw(seed, 3)));
+            let sign = if draw(rider.seed, 2) < 0.5 { 1.0 } else { -1.0 };
+            ride.push(side * sign * (100.0 + 150.0 * draw(rider.seed, 3)));
             run(&mut ride, 5.0, 0.0, &mut |r| samples.push(lean_of(r)));
         }
         _ => {
@@ -251,14 +261,13 @@ fn ride_scenario(
 /// A ride heading where seed `seed` says, waiting for every plan so the outcome does not
 /// depend on the machine, full throttle towards `kmh`: on flat ground, or on an endless
 /// slope of `slope` (rad) rising ahead (falling for a negative slope).
-pub(crate) fn new_ride(
-    kind: ControllerKind,
-    n: usize,
-    seed: u64,
-    physics: PhysicsModel,
-    kmh: f64,
-    slope: f64,
-) -> Ride {
+pub(crate) fn new_ride(rider: Rider, kmh: f64, slope: f64) -> Ride {
+    let Rider {
+        kind,
+        n,
+        seed,
+        physics,
+    } = rider;
     let heading = DQuat::from_rotation_y(std::f64::consts::TAU * draw(seed, 0));
     let (spawn, terrain) = if slope == 0.0 {
         let spawn = Placement {

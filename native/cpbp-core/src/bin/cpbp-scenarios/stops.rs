@@ -14,10 +14,9 @@
 //!   standing on the brake (m).
 
 use cpbp_core::control::TurnIntent;
-use cpbp_core::physics::PhysicsModel;
-use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::ride::{Intent, Ride};
 
-use super::{new_ride, Outcome, STEPS_PER_SECOND};
+use super::{new_ride, Outcome, Rider, STEPS_PER_SECOND};
 
 pub const SCENARIOS: [&str; 8] = [
     "stop10",
@@ -30,13 +29,7 @@ pub const SCENARIOS: [&str; 8] = [
     "downhill15",
 ];
 
-pub fn ride(
-    scenario: &str,
-    kind: ControllerKind,
-    n: usize,
-    seed: u64,
-    physics: PhysicsModel,
-) -> Outcome {
+pub fn ride(scenario: &str, rider: Rider) -> Outcome {
     let (kmh, lean, slope) = match scenario {
         "stop10" => (10.0, 0.0, 0.0),
         "stop25" => (25.0, 0.0, 0.0),
@@ -47,7 +40,7 @@ pub fn ride(
         "slope15" => (20.0, 0.0, 15.0),
         _ => (20.0, 0.0, -15.0),
     };
-    let mut ride = new_ride(kind, n, seed, physics, kmh, f64::to_radians(slope));
+    let mut ride = new_ride(rider, kmh, f64::to_radians(slope));
     let mut planning = Vec::new();
     let cruise = if lean == 0.0 {
         Intent::cruise(kmh)
