@@ -44,8 +44,8 @@ impl Default for Feet {
     /// it). At 20 kN/m the bike sank onto the leg to 10° standing on a 15° hill and a
     /// planner's hill start from there fell. The shoe grips at μ = 0.8 (rubber soles on
     /// asphalt). Down below 0.8 m/s (about 3 km/h), where steering no longer
-    /// balances. The bar goes straight in about half a second (6/s, the arcade
-    /// controller's rate for a wheel in the air).
+    /// balances. The bar goes straight in about half a second (6/s: a 95 % return in
+    /// 0.5 s).
     fn default() -> Self {
         Self {
             right_foot: DVec3::new(-0.05, 0.045, 0.40),
