@@ -3,6 +3,7 @@
 
 mod common;
 
+use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Ride};
 
 fn arcade_at(kmh: f64) -> Ride {
@@ -26,6 +27,17 @@ fn it_rides_straight_for_20_seconds_at_every_test_speed() {
 fn it_follows_a_commanded_lean_at_20_kmh() {
     let rms = common::rms_lean_error_in_a_15_degree_turn(&mut arcade_at(20.0));
     assert!(rms <= 3.0, "RMS lean error {rms:.2}° in a steady 15° turn");
+}
+
+#[test]
+fn it_settles_into_fast_lean_reversals_at_25_kmh() {
+    // A horizon of 0.8 s at every speed crept the last degrees: 5.5° here.
+    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::Arcade, 25.0, 0);
+    let rms = common::settled_lean_error_in_reversals(&mut ride);
+    assert!(
+        rms <= 2.0,
+        "settled RMS lean error {rms:.2}° in ±15° reversals"
+    );
 }
 
 #[test]

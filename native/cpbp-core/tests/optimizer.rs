@@ -3,6 +3,7 @@
 
 mod common;
 
+use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Ride};
 
 /// A flat ride with the `kind` planner (N = 15) at `kmh`.
@@ -71,4 +72,20 @@ fn counter_steering_emerges_in_combined_and_optimizer_modes() {
     for kind in [ControllerKind::Combined, ControllerKind::Optimizer] {
         common::assert_counter_steers_into_a_right_turn(&mut planner_at(20.0, kind));
     }
+}
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "slow in debug builds; make test runs it in release"
+)]
+fn combined_at_5_settles_into_lean_reversals_as_tightly_as_the_optimizer_at_10() {
+    let exact = |kind, n| common::ride_in(PhysicsModel::Exact, kind, 25.0, n);
+    let combined = common::settled_lean_error_in_reversals(&mut exact(ControllerKind::Combined, 5));
+    let optimizer =
+        common::settled_lean_error_in_reversals(&mut exact(ControllerKind::Optimizer, 10));
+    assert!(
+        combined <= optimizer,
+        "settled RMS lean error at 25 km/h: combined-5 {combined:.2}°, optimizer-10 {optimizer:.2}°"
+    );
 }

@@ -69,10 +69,12 @@ fn ask_wheelie(ride: &mut Ride, back: f64) {
     });
 }
 
-/// What a wheelie asked for at 12 km/h did over `seconds`: the time (s) the front wheel
-/// stayed above 40° of pitch, and the highest pitch (degrees). The ride must not crash.
-fn wheelie(kind: ControllerKind, seconds: f64) -> (f64, f64) {
+/// What a wheelie asked for at 12 km/h did over `seconds` with planner seed `seed`: the
+/// time (s) the front wheel stayed above 40° of pitch, and the highest pitch (degrees).
+/// The ride must not crash.
+fn wheelie(kind: ControllerKind, seconds: f64, seed: u64) -> (f64, f64) {
     let mut ride = common::ride_in(PhysicsModel::Exact, kind, 12.0, 10);
+    ride.planner.optimizer.seed = seed;
     common::ride(&mut ride, 2.0, 0.0);
     ask_wheelie(&mut ride, 1.0);
     let (mut up, mut highest) = (0.0, f64::MIN);
@@ -93,19 +95,30 @@ fn wheelie(kind: ControllerKind, seconds: f64) -> (f64, f64) {
 
 #[test]
 fn the_planner_holds_a_wheelie_near_the_balance_point() {
-    // The balance point of this bike with the rider back is about 58° of pitch.
-    let (up, highest) = wheelie(ControllerKind::Combined, 6.0);
-    assert!(up > 2.0, "above 40° for only {up:.2} s");
+    // The balance point of this bike with the rider back is about 58° of pitch. How long
+    // one wheelie lasts depends on the planner's draws (0.6–4.4 s above 40° over seeds
+    // 1–6, 2.4 s on average; 0.7–3.9 s and 2.1 s before the arcade controller's horizon
+    // shortened with speed), so the hold is judged over six seeds.
+    let rides: Vec<(f64, f64)> = (1..=6)
+        .map(|seed| wheelie(ControllerKind::Combined, 6.0, seed))
+        .collect();
+    let mean_up = rides.iter().map(|(up, _)| up).sum::<f64>() / rides.len() as f64;
     assert!(
-        highest < 65.0,
-        "pitched to {highest:.1}°: past the balance point"
+        mean_up > 1.5,
+        "above 40° for {mean_up:.2} s on average: {rides:?}"
     );
+    for (_, highest) in rides {
+        assert!(
+            highest < 65.0,
+            "pitched to {highest:.1}°: past the balance point"
+        );
+    }
 }
 
 #[test]
 fn every_controller_lifts_the_front_and_comes_down_safely() {
     for kind in [ControllerKind::Arcade, ControllerKind::Optimizer] {
-        let (_, highest) = wheelie(kind, 6.0);
+        let (_, highest) = wheelie(kind, 6.0, 2015);
         assert!(
             highest > 40.0,
             "{kind:?} lifted the front only to {highest:.1}°"

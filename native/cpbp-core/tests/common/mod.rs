@@ -145,6 +145,30 @@ pub fn rms_lean_error_in_a_15_degree_turn(r: &mut Ride) -> f64 {
         .to_degrees()
 }
 
+/// Rides 3 s straight, then asks for ±15°, reversing every 2 s for 12 s (right first);
+/// returns the RMS lean error (degrees) over the second second of each gate after the
+/// first, once the lean has swung over: how tightly the lean settles (the scenario tool's
+/// `reversals`).
+pub fn settled_lean_error_in_reversals(r: &mut Ride) -> f64 {
+    let want = 15f64.to_radians();
+    ride(r, 3.0, 0.0);
+    let mut squares = Vec::new();
+    for gate in 0..6 {
+        let target = if gate % 2 == 0 { want } else { -want };
+        ride(r, 1.0, target);
+        for _ in 0..FRAMES_PER_SECOND {
+            r.step();
+            if gate > 0 {
+                squares.push((lean(r) - target).powi(2));
+            }
+        }
+    }
+    assert_eq!(r.sim().crashed(), None);
+    (squares.iter().sum::<f64>() / squares.len() as f64)
+        .sqrt()
+        .to_degrees()
+}
+
 /// Rides 3 s straight, asks for a 15° right lean, and checks the bar first goes left
 /// (the counter-steer), then right, within 1.5 s.
 pub fn assert_counter_steers_into_a_right_turn(r: &mut Ride) {

@@ -8,8 +8,9 @@
 //!
 //! Scenarios: `turn` (3 s straight at 20 km/h, then 15° right; the RMS lean error over
 //! the last 5 s), `slalom` (20 km/h, ±15° every 2 s for 12 s; RMS over the last 10 s),
-//! `push` (15 km/h, a sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s
-//! after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h); the
+//! `reversals` (25 km/h, ±15° every 2 s for 12 s; the settled error: RMS over the second
+//! second of each gate after the first, once the lean has swung over), `push` (15 km/h, a
+//! sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h); the
 //! stops and hill starts of `stops.rs`. `arcade` rides too, once per seed, as N = 0.
 
 mod stops;
@@ -25,7 +26,7 @@ use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
 
-const MANOEUVRES: [&str; 4] = ["turn", "slalom", "push", "walk"];
+const MANOEUVRES: [&str; 5] = ["turn", "slalom", "reversals", "push", "walk"];
 pub(crate) const STEPS_PER_SECOND: f64 = 30.0;
 
 fn scenario_names() -> Vec<&'static str> {
@@ -182,6 +183,7 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
     let kmh = match scenario {
         "walk" => 8.0,
         "push" => 15.0,
+        "reversals" => 25.0,
         _ => 20.0,
     };
     let mut ride = new_ride(rider, kmh, 0.0);
@@ -211,16 +213,21 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
                 samples.push(lean_of(r) - want)
             });
         }
-        "slalom" => {
+        "slalom" | "reversals" => {
             run(&mut ride, 3.0, 0.0, &mut |_| {});
             let first = if draw(rider.seed, 1) < 0.5 { 1.0 } else { -1.0 };
+            // The slalom counts every step of a gate, the swing over included; the
+            // reversals only the steps after the gate's first second.
+            let settle = if scenario == "reversals" { 1.0 } else { 0.0 };
+            let settled_from = (settle * STEPS_PER_SECOND).round() as usize;
             for gate in 0..6 {
                 let target = want * if gate % 2 == 0 { first } else { -first };
-                let measured = gate > 0;
+                let mut step = 0;
                 run(&mut ride, 2.0, target, &mut |r| {
-                    if measured {
+                    if gate > 0 && step >= settled_from {
                         samples.push(lean_of(r) - target);
                     }
+                    step += 1;
                 });
             }
         }
@@ -242,7 +249,8 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
         }
     }
     let metric = match scenario {
-        "turn" | "slalom" => (samples.iter().map(|e| e * e).sum::<f64>() / samples.len() as f64)
+        "turn" | "slalom" | "reversals" => (samples.iter().map(|e| e * e).sum::<f64>()
+            / samples.len() as f64)
             .sqrt()
             .to_degrees(),
         "push" => samples
