@@ -65,7 +65,8 @@ def write_report(rows: list[dict], out: Path) -> None:
         "# Planners side by side on scripted rides",
         "",
         "Made by `tools/planner-scenarios` from `scenarios.csv` "
-        f"({len(rows)} rides, {', '.join(physics) or 'no'} physics, on flat ground unless the scenario names a slope). Seed *i* "
+        f"({len(rows)} rides, {', '.join(physics) or 'no'} physics, on flat ground unless "
+        "the scenario names a slope). Seed *i* "
         "sets the heading, the planner's seed and the scenario's draw, so every planner "
         "meets the same ride *i*; paired differences are over the seeds on which both "
         "stayed up. A negative difference in a lean error or a lean is better than "
