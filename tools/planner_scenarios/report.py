@@ -88,30 +88,34 @@ def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
     import matplotlib.pyplot as plt
 
     styles = {"combined": ("tab:orange", "s"), "optimizer": ("tab:blue", "o"),
-              "sampling": ("tab:green", "^"), "mppi": ("tab:purple", "D")}
+              "sampling": ("tab:green", "^"), "mppi": ("tab:purple", "D"),
+              "arcade": ("black", "P")}
     fig, axes = plt.subplots(1, len(scenarios), figsize=(4.2 * len(scenarios), 4), dpi=110,
                              squeeze=False)
+    legend = {}
     for ax, scenario in zip(axes[0], scenarios):
         mine = [r for r in rows if r["scenario"] == scenario]
         controllers = sorted({r["controller"] for r in mine}, key=_order)
+        # N as categories, not a log axis: arcade rides as N = 0, and a scenario ridden at
+        # one N alone still shows its controllers side by side.
+        counts = sorted({r["trajectories"] for r in mine})
         for k, controller in enumerate(controllers):
             ns = sorted({r["trajectories"] for r in mine if r["controller"] == controller})
             intervals = [t_interval([r["metric"] for r in mine if r["controller"] == controller
                                      and r["trajectories"] == n and not r["fell"]]) for n in ns]
             colour, marker = styles.get(controller, ("tab:gray", "x"))
-            offset = [n * (1 + 0.04 * (k - len(controllers) / 2)) for n in ns]
-            ax.errorbar(offset, [i.mean for i in intervals],
-                        yerr=[[i.mean - i.low for i in intervals],
-                              [i.high - i.mean for i in intervals]],
-                        color=colour, marker=marker, capsize=3, label=controller)
-        ax.set_xscale("log")
-        ax.set_xticks(sorted({r["trajectories"] for r in mine}))
-        ax.get_xaxis().set_major_formatter(matplotlib.ticker.ScalarFormatter())
-        ax.get_xaxis().set_minor_formatter(matplotlib.ticker.NullFormatter())
+            spread = 0.08 * (k - (len(controllers) - 1) / 2)
+            legend[controller] = ax.errorbar(
+                [counts.index(n) + spread for n in ns], [i.mean for i in intervals],
+                yerr=[[i.mean - i.low for i in intervals], [i.high - i.mean for i in intervals]],
+                color=colour, marker=marker, capsize=3, label=controller)
+        ax.set_xticks(range(len(counts)), ["arcade" if n == 0 else str(n) for n in counts])
+        ax.set_xlim(-0.6, len(counts) - 0.4)
         ax.set_xlabel("trajectories N")
         ax.set_title(METRICS[scenario], fontsize=8.5, wrap=True)
         ax.grid(alpha=0.3)
-    axes[0][0].legend(fontsize=8)
+    ordered = sorted(legend, key=_order)
+    axes[0][0].legend([legend[c] for c in ordered], ordered, fontsize=8)
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)
