@@ -56,7 +56,6 @@ func _ready() -> void:
 	bike = BIKE.instantiate() as BikeSimulation
 	bike.terrain_root = ^"../Level"
 	bike.wait_for_throttle = true
-	bike.plan_wait_ms = 12.0
 	if not spawns.is_empty():
 		bike.transform = spawns[0].spawn_transform()
 	add_child(bike)

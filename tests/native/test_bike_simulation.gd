@@ -173,12 +173,16 @@ func test_a_dying_planner_is_reported_once_and_the_arcade_controller_steps_in() 
 
 func test_the_controller_is_a_name_from_the_one_list() -> void:
 	var bike := BikeSimulation.new()
-	assert_eq(
-		BikeSimulation.controller_names(),
-		PackedStringArray(["optimizer", "combined", "arcade", "sampling", "mppi"])
-	)
+	var listed := PackedStringArray()
+	for property: Dictionary in bike.get_property_list():
+		if property.name == "controller":
+			assert_eq(property.hint, PROPERTY_HINT_ENUM, "the inspector offers a drop-down")
+			listed = property.hint_string.split(",")
+	for name: String in BikeSimulation.controller_names():
+		assert_has(listed, name, "the inspector lists every controller players pick")
+	assert_gt(listed.size(), BikeSimulation.controller_names().size(), "and the tools' own")
 	assert_eq(bike.controller, "arcade", "the default")
-	for name: String in Array(BikeSimulation.controller_names()) + ["manual"]:
+	for name: String in listed:
 		bike.controller = name
 		assert_eq(bike.controller, name, "the property keeps the registry's name")
 		assert_eq(bike.get_controller_name(), name)
@@ -187,6 +191,9 @@ func test_the_controller_is_a_name_from_the_one_list() -> void:
 	assert_true(BikeSimulation.controller_plans("mppi"))
 	assert_false(BikeSimulation.controller_plans("arcade"))
 	assert_eq(BikeSimulation.controller_label("autopilot"), "")
+	expect_error('no controller is called "autopilot"')
+	bike.controller = "autopilot"
+	assert_eq(bike.controller, listed[-1], "an unknown name is refused, the choice kept")
 	bike.free()
 
 

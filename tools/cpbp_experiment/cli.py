@@ -10,8 +10,8 @@ from pathlib import Path
 
 from . import report
 from .compare import compare
-from .configs import (THESIS_CONTROLLERS, THESIS_SPEEDS, TIMING_COUNTS, Config, parse_attempts,
-                      parse_controllers, parse_counts, parse_speeds)
+from .configs import (THESIS_CONTROLLERS, THESIS_PLANNERS, THESIS_SPEEDS, TIMING_COUNTS, Config,
+                      parse_attempts, parse_controllers, parse_counts, parse_speeds)
 from .fingerprint import FingerprintError, PlatformStore, fingerprint, identity, refusal
 from .results import ResultsError, ResultsFile, check_seed
 from .runner import (PROJECT_ROOT, Platform, Progress, WorkerError, cpu_description,
@@ -208,7 +208,7 @@ def timing(args: argparse.Namespace, out: Path) -> None:
     print(f"experiment: timing the planners on {cpu_description()} (nothing else should run)",
           file=sys.stderr, flush=True)
     rows = []
-    for kind in ("optimizer", "combined"):
+    for kind in THESIS_PLANNERS:
         for row in measure_planning(kind, args.counts, args.steps, 15, args.seed,
                                     out / WORKER_LOG):
             rows.append(row)

@@ -3,7 +3,9 @@ model) at a speed."""
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
+from pathlib import Path
 
 THESIS_SPEEDS = (10, 15, 20, 25)
 THESIS_CONTROLLERS = (
@@ -15,11 +17,16 @@ THESIS_CONTROLLERS = (
     "combined-10",
     "combined-15",
 )
-# The registry's planning controllers (cpbp_core::ride::ControllerKind): C-PBP alone and
-# warm-started, then the baselines predictive sampling and MPPI. The worker refuses a name
-# the registry does not know, so this list cannot drift unnoticed.
-PLANNERS = ("optimizer", "combined", "sampling", "mppi")
-BASELINES = PLANNERS[2:]
+# The controller registry (cpbp_core::ride::ControllerKind::ALL) as the native tests
+# write it into controllers.json and hold it equal: every controller's name, menu label,
+# whether players pick it and whether it plans. The worker also refuses a name the
+# registry does not know.
+REGISTRY = tuple(json.loads(Path(__file__).with_name("controllers.json").read_text("utf-8")))
+PLANNERS = tuple(entry["name"] for entry in REGISTRY if entry["plans"])
+# The thesis's planners, C-PBP alone and warm-started; the registry's other planners are
+# the baselines they are compared with.
+THESIS_PLANNERS = ("optimizer", "combined")
+BASELINES = tuple(kind for kind in PLANNERS if kind not in THESIS_PLANNERS)
 # The game's physics models (cpbp_core::physics::PhysicsModel); rows without one are
 # classic, the model every row was ridden in before the exact model existed.
 PHYSICS = ("classic", "exact")
@@ -37,8 +44,13 @@ class Controller:
     physics: str = "classic"
 
     @property
+    def plans(self) -> bool:
+        """Whether it plans with trajectories (and so has an N and a planning time)."""
+        return self.kind in PLANNERS
+
+    @property
     def label(self) -> str:
-        name = self.kind if self.kind == "arcade" else f"{self.kind}-{self.trajectories}"
+        name = f"{self.kind}-{self.trajectories}" if self.plans else self.kind
         return name if self.physics == "classic" else f"{name}:{self.physics}"
 
     def in_physics(self, physics: str) -> "Controller":

@@ -9,7 +9,7 @@ from collections import defaultdict
 from dataclasses import dataclass
 from pathlib import Path
 
-from .configs import BASELINES, PLANNERS, Config, Controller, display_order
+from .configs import BASELINES, PLANNERS, THESIS_PLANNERS, Config, Controller, display_order
 from .results import Attempt
 from .stats import mcnemar_exact, mean, wilson_interval
 
@@ -120,11 +120,11 @@ def cost_table(summaries: dict[Config, Summary], attempts: list[Attempt]) -> str
         group = by_controller[controller]
         wall = sum(a.wall_ms for a in group) / 1000.0
         simulated = sum(a.time_s for a in group)
-        planning = mean([a.planning_ms for a in group]) if controller.kind != "arcade" else 0.0
+        planning = mean([a.planning_ms for a in group]) if controller.plans else 0.0
         lines.append(
             f"| {controller.label} | {len(group)} | {wall / len(group):.2f} s | "
             f"{wall / max(simulated, 1e-9):.2f} s | "
-            + (f"{planning:.1f} ms |" if controller.kind != "arcade" else "– |")
+            + (f"{planning:.1f} ms |" if controller.plans else "– |")
         )
     return "\n".join(lines)
 
@@ -137,11 +137,11 @@ def paired_table(attempts: list[Attempt]) -> str:
     outcome = {(a.config, a.attempt): a.outcome == "goal" for a in attempts}
     configs = {a.config for a in attempts}
     controllers = sorted({c.controller for c in configs}, key=display_order)
-    pairs = [(c, Controller("arcade", 0, c.physics)) for c in controllers if c.kind != "arcade"]
+    pairs = [(c, Controller("arcade", 0, c.physics)) for c in controllers if c.plans]
     pairs += [(c, Controller("optimizer", c.trajectories, c.physics)) for c in controllers
               if c.kind == "combined"]
     pairs += [(c, Controller(cpbp, c.trajectories, c.physics)) for c in controllers
-              if c.kind in BASELINES for cpbp in ("optimizer", "combined")]
+              if c.kind in BASELINES for cpbp in THESIS_PLANNERS]
     pairs += [(c, c.in_physics("classic")) for c in controllers if c.physics != "classic"]
     lines = [
         "| speed | A | B | pairs | both goal | only A | only B | neither | McNemar p |",
@@ -247,6 +247,10 @@ def _controller_colours(controllers: list[Controller]) -> dict[Controller, str]:
 
     families = {"arcade": "Greys", "optimizer": "Blues", "combined": "Oranges",
                 "sampling": "Greens", "mppi": "Purples"}
+    # A controller registered later than these charts gets a family of its own.
+    spare = iter(["Reds", "YlOrBr", "BuGn", "RdPu", "PuBu"])
+    for kind in dict.fromkeys(c.kind for c in controllers):
+        families.setdefault(kind, next(spare, "Greys"))
     colours = {}
     for kind, cmap_name in families.items():
         members = [c for c in controllers if c.kind == kind]
@@ -313,7 +317,7 @@ def planning_chart(rows: list[dict], machine: str, path: Path) -> None:
     for kind in _kinds(rows):
         mine = sorted((r for r in rows if r["controller"] == kind), key=lambda r: r["trajectories"])
         ns = [r["trajectories"] for r in mine]
-        colour, marker = styles[kind]
+        colour, marker = styles.get(kind, ("tab:red", "x"))
         rate_ax.plot(ns, [1000 / r["mean_ms"] for r in mine], marker=marker, color=colour,
                      label=f"{kind} (this machine)")
         ms_ax.plot(ns, [r["mean_ms"] for r in mine], marker=marker, color=colour,

@@ -10,7 +10,7 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-from .configs import Config, Controller
+from .configs import PLANNERS, Config, Controller
 from .fingerprint import UNRECORDED
 
 # The columns of a results file made before the platform was recorded with every row.
@@ -88,7 +88,7 @@ class Attempt:
     @staticmethod
     def from_row(row: dict[str, str]) -> "Attempt":
         kind = row["controller"]
-        label = kind if kind == "arcade" else f"{kind}-{row['trajectories']}"
+        label = f"{kind}-{row['trajectories']}" if kind in PLANNERS else kind
         label += f":{row['physics']}" if row.get("physics") else ""
         outcome = row["outcome"]
         if outcome not in OUTCOMES:

@@ -55,11 +55,11 @@ def plan_blocks(configs: list[Config], tries: int, done: set[tuple[Config, int]]
     same count. Arcade blocks come first: they take seconds in all."""
     blocks = []
     for config in configs:
-        if config.controller.kind == "arcade":
+        if not config.controller.plans:
             blocks += _blocks_of(config, range(tries), done, ARCADE_BLOCK)
     for start in range(0, tries, PLANNER_BLOCK):
         for config in configs:
-            if config.controller.kind != "arcade":
+            if config.controller.plans:
                 window = range(start, min(start + PLANNER_BLOCK, tries))
                 blocks += _blocks_of(config, window, done, PLANNER_BLOCK)
     return blocks
@@ -163,7 +163,7 @@ class Progress:
         per_trajectory = [
             c / config.controller.trajectories
             for config, costs in self.cost_ms.items()
-            if config.controller.kind != "arcade"
+            if config.controller.plans
             for c in costs
         ]
         work_ms = 0.0
@@ -171,7 +171,7 @@ class Progress:
             costs = self.cost_ms.get(config)
             if costs:
                 work_ms += max(left, 0) * sum(costs) / len(costs)
-            elif left > 0 and config.controller.kind != "arcade" and per_trajectory:
+            elif left > 0 and config.controller.plans and per_trajectory:
                 guess = sum(per_trajectory) / len(per_trajectory)
                 work_ms += left * guess * config.controller.trajectories
             elif left > 0:

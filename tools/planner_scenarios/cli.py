@@ -7,6 +7,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+from cpbp_experiment.configs import PLANNERS
+
 from .report import write_report
 from .rows import FIELDS, ScenarioRows
 
@@ -44,9 +46,9 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("command", nargs="?", choices=("all", "run", "report"), default="all")
     parser.add_argument("--out", default="docs/scenarios", help="directory of scenarios.csv "
                         "and the report (default docs/scenarios)")
-    parser.add_argument("--controllers", default="combined,optimizer,sampling,mppi",
-                        help="planning controllers of the registry, or arcade (ridden once "
-                             "per seed, as N = 0), comma-separated")
+    parser.add_argument("--controllers", default=",".join(PLANNERS),
+                        help="planning controllers of the registry (default: all of them), or "
+                             "arcade (ridden once per seed, as N = 0), comma-separated")
     parser.add_argument("--counts", default="5,10", help="trajectory counts N")
     parser.add_argument("--seeds", default="0-9", help="FIRST-LAST: ride i for each")
     parser.add_argument("--scenarios", default="turn,slalom,push,walk")

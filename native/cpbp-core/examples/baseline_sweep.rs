@@ -48,10 +48,11 @@ fn main() {
         "{:<10} {:>9} {:>6} {:>6} {:>6} {:>12} {:>14} {:>6}",
         "planner", "dims", "knots", "noise", "temp", "8 km/h up", "15° turn RMS", "falls"
     );
-    for kind in [ControllerKind::Sampling, ControllerKind::Mppi] {
-        let temperatures = match kind {
-            ControllerKind::Mppi => temperatures.clone(),
-            _ => vec![BaselineSettings::default().temperature],
+    for kind in [ControllerKind::SAMPLING, ControllerKind::MPPI] {
+        let temperatures = if kind == ControllerKind::MPPI {
+            temperatures.clone()
+        } else {
+            vec![BaselineSettings::default().temperature]
         };
         for dim in &dims {
             for (&noise, &knots) in noises

@@ -6,7 +6,7 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Placement, POSE_GAIN};
-use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, OptimizerMode};
+use cpbp_core::control::{planner, BikeOptimizer, Goal, OptimizerConfig};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
@@ -53,13 +53,12 @@ fn main() {
         sim.step();
     }
     let config = OptimizerConfig {
-        mode: OptimizerMode::Combined,
         particles: n,
         threads,
         ..OptimizerConfig::default()
     }
     .rolling_out_in(physics);
-    let mut optimizer = BikeOptimizer::new(&sim, config);
+    let mut optimizer = BikeOptimizer::new(&sim, &planner::COMBINED, config);
     let started = std::time::Instant::now();
     for _ in 0..plans {
         optimizer.controls(&sim, &Goal::riding(0.0, drive));

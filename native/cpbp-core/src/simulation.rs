@@ -7,7 +7,8 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use crate::bike::{
-    Bike, BikeParams, Controls, CrashCause, CrashMonitor, Part, PitchRequest, Placement, GRAVITY,
+    Bike, BikeParams, Controls, CrashCause, CrashMonitor, Exploded, Part, PeriodWatch,
+    PitchRequest, Placement, GRAVITY,
 };
 use crate::ode::World;
 use crate::physics::PhysicsModel;
@@ -146,8 +147,6 @@ impl Simulation {
 
     /// Advances one control step.
     pub fn step(&mut self) -> StepEvents {
-        let mut events = StepEvents::default();
-        let dt = self.config.control_dt / self.config.substeps as f64;
         let up = self.up();
         // A rider who fell off neither rides nor asks anything of the bike.
         let (controls, asked) = if self.bike.rider_is_on(&self.world) {
@@ -155,34 +154,31 @@ impl Simulation {
         } else {
             (Controls::slack(), PitchRequest::default())
         };
-        let held = self.bike.held_pitch(&self.world, up, asked);
-        self.bike
-            .apply_pitching(&mut self.world, &controls, held, up);
-        let mut airborne_at_start = self.airborne_for > AIRBORNE_AFTER;
-        let momentum_before = self.bike.momentum(&self.world);
+        let substeps = self.config.substeps;
+        let period = (substeps, self.config.control_dt / substeps as f64);
         self.ground_blow = 0.0;
-        for _ in 0..self.config.substeps {
-            self.world.step(dt);
-            if let Some(reason) = self.bike.explosion(&self.world) {
-                events.recovered_from = Some(self.recover(reason));
-                return events;
-            }
-            let (rear, front) = self.bike.wheel_contacts(&self.world);
-            if rear || front {
-                events.landed |= airborne_at_start;
-                airborne_at_start = false;
-                self.airborne_for = 0.0;
-            } else {
-                self.airborne_for += dt;
-            }
-            let lean = self.bike.lean(&self.world, self.up());
-            let touching = self.bike.part_touching_ground(&self.world);
-            if let Some(cause) = self.crash.update(dt, lean, touching) {
-                if self.crashed.is_none() {
-                    self.crashed = Some(cause);
-                    events.crashed = Some(cause);
-                }
-            }
+        let mut watch = MasterWatch {
+            bike: &self.bike,
+            up,
+            airborne_at_start: self.airborne_for > AIRBORNE_AFTER,
+            airborne_for: &mut self.airborne_for,
+            crash: &mut self.crash,
+            crashed: &mut self.crashed,
+            events: StepEvents::default(),
+            momentum_before: DVec3::ZERO,
+        };
+        let stepped = self.bike.step_control_period(
+            &mut self.world,
+            &controls,
+            asked,
+            up,
+            period,
+            &mut watch,
+        );
+        let (mut events, momentum_before) = (watch.events, watch.momentum_before);
+        if let Err(Exploded(reason)) = stepped {
+            events.recovered_from = Some(self.recover(reason));
+            return events;
         }
         // The rider lets go at the end of the step that crashed, so the step itself (and
         // every result measured at a crash) is what it was before riders fell off.
@@ -291,6 +287,44 @@ impl Simulation {
         let spawn = self.spawn;
         self.reset_to(spawn);
         format!("{reason}; the bike was put back at its spawn point")
+    }
+}
+
+/// What the master watches during a control period: landings and crashes, and the
+/// momentum the ground's blow is measured from.
+struct MasterWatch<'a> {
+    bike: &'a Bike,
+    up: DVec3,
+    airborne_at_start: bool,
+    airborne_for: &'a mut f64,
+    crash: &'a mut CrashMonitor,
+    crashed: &'a mut Option<CrashCause>,
+    events: StepEvents,
+    momentum_before: DVec3,
+}
+
+impl PeriodWatch for MasterWatch<'_> {
+    fn started(&mut self, world: &World) {
+        self.momentum_before = self.bike.momentum(world);
+    }
+
+    fn stepped(&mut self, world: &World, dt: f64) {
+        let (rear, front) = self.bike.wheel_contacts(world);
+        if rear || front {
+            self.events.landed |= self.airborne_at_start;
+            self.airborne_at_start = false;
+            *self.airborne_for = 0.0;
+        } else {
+            *self.airborne_for += dt;
+        }
+        let lean = self.bike.lean(world, self.up);
+        let touching = self.bike.part_touching_ground(world);
+        if let Some(cause) = self.crash.update(dt, lean, touching) {
+            if self.crashed.is_none() {
+                *self.crashed = Some(cause);
+                self.events.crashed = Some(cause);
+            }
+        }
     }
 }
 

@@ -49,7 +49,7 @@ fn pitch_after_a_jump(kind: ControllerKind, forward: f64) -> f64 {
     ignore = "rides with planners: run in release (tools/test.sh does)"
 )]
 fn the_riders_weight_turns_the_nose_in_the_air() {
-    for kind in [ControllerKind::Arcade, ControllerKind::Combined] {
+    for kind in [ControllerKind::ARCADE, ControllerKind::COMBINED] {
         let level = pitch_after_a_jump(kind, 0.0);
         let back = pitch_after_a_jump(kind, -1.0);
         let forward = pitch_after_a_jump(kind, 1.0);

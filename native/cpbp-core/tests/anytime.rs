@@ -5,7 +5,7 @@ mod common;
 
 use std::time::Duration;
 
-use cpbp_core::control::{AnytimeOptimizer, Goal, OptimizerConfig, OptimizerMode, PlanWait};
+use cpbp_core::control::{planner, AnytimeOptimizer, Goal, OptimizerConfig, PlanWait};
 use cpbp_core::ride::ControllerKind;
 
 #[test]
@@ -14,7 +14,7 @@ use cpbp_core::ride::ControllerKind;
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn waiting_for_each_plan_rides_like_planning_in_line() {
-    let mut ride = common::ride_at(ControllerKind::Combined, 15.0, 15);
+    let mut ride = common::ride_at(ControllerKind::COMBINED, 15.0, 15);
     common::ride(&mut ride, 20.0, 0.0);
     assert_eq!(ride.sim().crashed(), None);
     // Only the very first step has no plan (the arcade controller drives it).
@@ -44,7 +44,7 @@ fn waiting_for_each_plan_rides_like_planning_in_line() {
 fn a_planner_that_cannot_keep_up_never_stalls_the_game_or_drops_the_bike() {
     // Never waiting while the master runs far faster than real time: most boundaries
     // find no plan for their step and replay the last plan open loop or fall back.
-    let mut ride = common::ride_at(ControllerKind::Combined, 20.0, 8);
+    let mut ride = common::ride_at(ControllerKind::COMBINED, 20.0, 8);
     ride.planner.wait = PlanWait::AtMost(Duration::ZERO);
     common::ride(&mut ride, 10.0, 0.0);
     assert_eq!(ride.sim().crashed(), None);
@@ -60,11 +60,10 @@ fn plans_made_before_a_reset_are_never_applied_after_it() {
     // The hand-over itself, below the ride: a reset drops plans already in flight.
     let mut sim = common::flat_ride();
     let config = OptimizerConfig {
-        mode: OptimizerMode::Combined,
         particles: 5,
         ..OptimizerConfig::default()
     };
-    let mut anytime = AnytimeOptimizer::new(&sim, PlanWait::EveryPlan);
+    let mut anytime = AnytimeOptimizer::new(&sim, &planner::COMBINED, PlanWait::EveryPlan);
     let drive = common::auto_throttle(15.0);
     let ride =
         |sim: &mut cpbp_core::simulation::Simulation, anytime: &mut AnytimeOptimizer, steps| {

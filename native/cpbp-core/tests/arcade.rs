@@ -7,7 +7,7 @@ use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Ride};
 
 fn arcade_at(kmh: f64) -> Ride {
-    common::ride_at(ControllerKind::Arcade, kmh, 0)
+    common::ride_at(ControllerKind::ARCADE, kmh, 0)
 }
 
 #[test]
@@ -32,7 +32,7 @@ fn it_follows_a_commanded_lean_at_20_kmh() {
 #[test]
 fn it_settles_into_fast_lean_reversals_at_25_kmh() {
     // A horizon of 0.8 s at every speed crept the last degrees: 5.5° here.
-    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::Arcade, 25.0, 0);
+    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::ARCADE, 25.0, 0);
     let rms = common::settled_lean_error_in_reversals(&mut ride);
     assert!(
         rms <= 2.0,

@@ -47,7 +47,7 @@ fn a_landing_blows_as_hard_as_the_fall_and_falling_blows_nothing() {
     ignore = "rides with a controller: run in release (tools/test.sh does)"
 )]
 fn rolling_tyres_do_not_slide_and_hard_braking_makes_them() {
-    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::Arcade, 15.0, 1);
+    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::ARCADE, 15.0, 1);
     common::ride(&mut ride, 4.0, 0.0);
     let sim = ride.sim();
     let (rear, front) = sim.bike().tyre_slip(sim.world(), sim.up());

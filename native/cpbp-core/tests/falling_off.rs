@@ -50,9 +50,9 @@ fn knocked_over(kind: ControllerKind) -> Ride {
     ignore = "rides with planners: run in release (tools/test.sh does)"
 )]
 fn the_rider_falls_off_nobody_plans_and_a_lift_puts_the_rider_back() {
-    let mut ride = knocked_over(ControllerKind::Combined);
+    let mut ride = knocked_over(ControllerKind::COMBINED);
     let seated = {
-        let mut fresh = common::ride_in(PhysicsModel::Exact, ControllerKind::Arcade, 15.0, 1);
+        let mut fresh = common::ride_in(PhysicsModel::Exact, ControllerKind::ARCADE, 15.0, 1);
         fresh.step();
         torso_on_frame(fresh.sim())
     };
@@ -92,7 +92,7 @@ fn the_rider_falls_off_nobody_plans_and_a_lift_puts_the_rider_back() {
     ignore = "rides with a controller: run in release (tools/test.sh does)"
 )]
 fn a_replica_of_a_riderless_bike_steps_exactly_as_the_master() {
-    let mut ride = knocked_over(ControllerKind::Arcade);
+    let mut ride = knocked_over(ControllerKind::ARCADE);
     let mut replica = ride.sim().replica();
     replica
         .world_mut()

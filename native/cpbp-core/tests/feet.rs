@@ -42,9 +42,9 @@ fn ride_for(ride: &mut Ride, seconds: f64) -> (f64, usize) {
 )]
 fn every_controller_stops_on_a_foot_for_30_seconds_and_pulls_away() {
     for kind in [
-        ControllerKind::Arcade,
-        ControllerKind::Combined,
-        ControllerKind::Optimizer,
+        ControllerKind::ARCADE,
+        ControllerKind::COMBINED,
+        ControllerKind::OPTIMIZER,
     ] {
         let mut ride = common::ride_in(PhysicsModel::Exact, kind, 8.0, 10);
         ride_for(&mut ride, 3.0);
@@ -73,7 +73,7 @@ fn a_released_bike_stands_on_a_foot_from_rest() {
     // and stays there.
     let mut ride = Ride::new(
         common::flat_ride_in(PhysicsModel::Exact),
-        ControllerKind::Manual,
+        ControllerKind::MANUAL,
     );
     let (lean, on_a_foot) = ride_for(&mut ride, 10.0);
     assert!(lean < 5.0, "leaned {lean:.1}°");
@@ -90,9 +90,9 @@ fn every_controller_rides_at_walking_pace_straight_and_round_the_tightest_turn()
     // tightest circle, 3 m (3.7° of lean). Planners wobble about 10° in the turn.
     let tightest = (5.0f64 / 3.6).powi(2) / (3.0 * 9.81);
     for kind in [
-        ControllerKind::Arcade,
-        ControllerKind::Combined,
-        ControllerKind::Optimizer,
+        ControllerKind::ARCADE,
+        ControllerKind::COMBINED,
+        ControllerKind::OPTIMIZER,
     ] {
         let mut ride = common::ride_in(PhysicsModel::Exact, kind, 3.2, 10);
         common::ride(&mut ride, 3.0, 0.0);
@@ -110,7 +110,7 @@ fn standing_on_a_foot_the_rider_holds_the_bar_straight() {
     // off steered into the lean: the rider straightens it whatever the controller asks.
     let mut ride = Ride::new(
         common::flat_ride_in(PhysicsModel::Exact),
-        ControllerKind::Manual,
+        ControllerKind::MANUAL,
     );
     let turning = |ride: &mut Ride, throttle: f64| {
         let mut intent = *ride.intent();

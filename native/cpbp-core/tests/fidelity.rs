@@ -15,7 +15,7 @@ const AT: [usize; 2] = [15, 36];
 
 /// An arcade ride at 15 km/h: 3 s to get going, then 4 s straight and 4 s in a 15° turn.
 fn recorded_ride() -> (Ride, Recording) {
-    let mut ride = ride_at(ControllerKind::Arcade, 15.0, 0);
+    let mut ride = ride_at(ControllerKind::ARCADE, 15.0, 0);
     Recording::ride(&mut ride, 3 * FRAMES_PER_SECOND);
     let mut recording = Recording::ride(&mut ride, 4 * FRAMES_PER_SECOND);
     ask_lean(&mut ride, 15f64.to_radians());

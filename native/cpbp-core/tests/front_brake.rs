@@ -44,7 +44,7 @@ fn brake_from_20(kind: ControllerKind, brake: f64, forward: f64) -> (f64, f64) {
     ignore = "rides with planners: run in release (tools/test.sh does)"
 )]
 fn the_brake_stops_the_bike_with_the_rear_down_and_a_stoppie_lifts_it() {
-    for kind in [ControllerKind::Arcade, ControllerKind::Combined] {
+    for kind in [ControllerKind::ARCADE, ControllerKind::COMBINED] {
         let (lowest, stopped) = brake_from_20(kind, 0.5, 0.0);
         assert!(
             lowest > -6.0,

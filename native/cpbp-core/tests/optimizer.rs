@@ -20,7 +20,7 @@ fn combined_rides_straight_at_10_15_20_and_25_kmh() {
     for kmh in [10.0, 15.0, 20.0, 25.0] {
         common::assert_rides_straight_for_20_seconds(&mut planner_at(
             kmh,
-            ControllerKind::Combined,
+            ControllerKind::COMBINED,
         ));
     }
 }
@@ -34,7 +34,7 @@ fn optimizer_rides_straight_at_10_15_20_and_25_kmh() {
     for kmh in [10.0, 15.0, 20.0, 25.0] {
         common::assert_rides_straight_for_20_seconds(&mut planner_at(
             kmh,
-            ControllerKind::Optimizer,
+            ControllerKind::OPTIMIZER,
         ));
     }
 }
@@ -46,7 +46,7 @@ fn optimizer_rides_straight_at_10_15_20_and_25_kmh() {
 )]
 fn combined_follows_a_15_degree_lean_within_3_degrees_rms() {
     let rms =
-        common::rms_lean_error_in_a_15_degree_turn(&mut planner_at(20.0, ControllerKind::Combined));
+        common::rms_lean_error_in_a_15_degree_turn(&mut planner_at(20.0, ControllerKind::COMBINED));
     assert!(rms <= 3.0, "RMS lean error {rms:.2}°");
 }
 
@@ -58,7 +58,7 @@ fn combined_follows_a_15_degree_lean_within_3_degrees_rms() {
 fn optimizer_alone_follows_a_15_degree_lean_within_4_degrees_rms() {
     let rms = common::rms_lean_error_in_a_15_degree_turn(&mut planner_at(
         20.0,
-        ControllerKind::Optimizer,
+        ControllerKind::OPTIMIZER,
     ));
     assert!(rms <= 4.0, "RMS lean error {rms:.2}°");
 }
@@ -69,7 +69,7 @@ fn optimizer_alone_follows_a_15_degree_lean_within_4_degrees_rms() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn counter_steering_emerges_in_combined_and_optimizer_modes() {
-    for kind in [ControllerKind::Combined, ControllerKind::Optimizer] {
+    for kind in [ControllerKind::COMBINED, ControllerKind::OPTIMIZER] {
         common::assert_counter_steers_into_a_right_turn(&mut planner_at(20.0, kind));
     }
 }
@@ -81,9 +81,9 @@ fn counter_steering_emerges_in_combined_and_optimizer_modes() {
 )]
 fn combined_at_5_settles_into_lean_reversals_as_tightly_as_the_optimizer_at_10() {
     let exact = |kind, n| common::ride_in(PhysicsModel::Exact, kind, 25.0, n);
-    let combined = common::settled_lean_error_in_reversals(&mut exact(ControllerKind::Combined, 5));
+    let combined = common::settled_lean_error_in_reversals(&mut exact(ControllerKind::COMBINED, 5));
     let optimizer =
-        common::settled_lean_error_in_reversals(&mut exact(ControllerKind::Optimizer, 10));
+        common::settled_lean_error_in_reversals(&mut exact(ControllerKind::OPTIMIZER, 10));
     assert!(
         combined <= optimizer,
         "settled RMS lean error at 25 km/h: combined-5 {combined:.2}°, optimizer-10 {optimizer:.2}°"

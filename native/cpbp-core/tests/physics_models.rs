@@ -20,7 +20,7 @@ const EXACT: PhysicsModel = PhysicsModel::Exact;
 /// Lean drift (rad) after `steps` control steps of `physics` replaying an arcade ride of
 /// `model`'s master at 15 km/h (4 s straight, then 4 s in a 15° turn).
 fn drift_after(model: PhysicsModel, physics: RolloutPhysics, steps: usize) -> f64 {
-    let mut r = ride_in(model, ControllerKind::Arcade, 15.0, 0);
+    let mut r = ride_in(model, ControllerKind::ARCADE, 15.0, 0);
     Recording::ride(&mut r, 3 * FRAMES_PER_SECOND);
     let mut recording = Recording::ride(&mut r, 4 * FRAMES_PER_SECOND);
     ask_lean(&mut r, 15f64.to_radians());
@@ -101,9 +101,9 @@ fn the_exact_rollouts_predict_their_master_better_than_two_classic_substeps_did(
 )]
 fn every_controller_rides_straight_and_holds_a_turn_in_the_exact_model() {
     for (kind, particles, worst_rms) in [
-        (ControllerKind::Arcade, 0, 2.0),
-        (ControllerKind::Combined, 10, 2.0),
-        (ControllerKind::Optimizer, 10, 4.0),
+        (ControllerKind::ARCADE, 0, 2.0),
+        (ControllerKind::COMBINED, 10, 2.0),
+        (ControllerKind::OPTIMIZER, 10, 4.0),
     ] {
         let mut r = ride_in(EXACT, kind, 15.0, particles);
         assert_rides_straight_for_20_seconds(&mut r);
@@ -120,7 +120,7 @@ fn every_controller_rides_straight_and_holds_a_turn_in_the_exact_model() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn the_arcade_controller_rides_at_walking_pace_in_the_exact_model() {
-    let mut r = ride_in(EXACT, ControllerKind::Arcade, 8.0, 0);
+    let mut r = ride_in(EXACT, ControllerKind::ARCADE, 8.0, 0);
     ride(&mut r, 20.0, 0.0);
     assert_eq!(r.sim().crashed(), None);
     let speed = r.sim().bike().forward_speed(r.sim().world(), r.sim().up());

@@ -27,7 +27,7 @@ fn ride(kind: ControllerKind, kmh: f64, between: &mut impl FnMut()) -> WorldStat
 
 /// Another ride on the calling thread, stepped one control step per call.
 fn other_ride() -> impl FnMut() {
-    let mut other: Ride = common::ride_at(ControllerKind::Arcade, 20.0, 0);
+    let mut other: Ride = common::ride_at(ControllerKind::ARCADE, 20.0, 0);
     common::ask_lean(&mut other, -0.1);
     move || {
         other.step();
@@ -41,7 +41,7 @@ fn assert_repeats(kind: ControllerKind) {
         .join()
         .unwrap();
     let after_others = std::thread::spawn(move || {
-        ride(ControllerKind::Arcade, 20.0, &mut || {});
+        ride(ControllerKind::ARCADE, 20.0, &mut || {});
         let mut other = other_ride();
         ride(kind, 10.0, &mut other)
     })
@@ -52,12 +52,12 @@ fn assert_repeats(kind: ControllerKind) {
         "{kind:?}: the ride depended on what its thread simulated"
     );
     // And not trivially: another speed ends elsewhere.
-    assert!(ride(ControllerKind::Arcade, 12.0, &mut || {}) != alone);
+    assert!(ride(ControllerKind::ARCADE, 12.0, &mut || {}) != alone);
 }
 
 #[test]
 fn an_arcade_ride_does_not_depend_on_its_thread() {
-    assert_repeats(ControllerKind::Arcade);
+    assert_repeats(ControllerKind::ARCADE);
 }
 
 #[test]
@@ -66,7 +66,7 @@ fn an_arcade_ride_does_not_depend_on_its_thread() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn a_combined_ride_does_not_depend_on_its_thread() {
-    assert_repeats(ControllerKind::Combined);
+    assert_repeats(ControllerKind::COMBINED);
 }
 
 #[test]
@@ -75,7 +75,7 @@ fn a_combined_ride_does_not_depend_on_its_thread() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn an_optimizer_ride_does_not_depend_on_its_thread() {
-    assert_repeats(ControllerKind::Optimizer);
+    assert_repeats(ControllerKind::OPTIMIZER);
 }
 
 #[test]
@@ -84,6 +84,6 @@ fn an_optimizer_ride_does_not_depend_on_its_thread() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn the_baseline_planners_rides_do_not_depend_on_their_thread() {
-    assert_repeats(ControllerKind::Sampling);
-    assert_repeats(ControllerKind::Mppi);
+    assert_repeats(ControllerKind::SAMPLING);
+    assert_repeats(ControllerKind::MPPI);
 }

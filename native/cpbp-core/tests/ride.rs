@@ -24,30 +24,28 @@ fn speed(ride: &Ride) -> f64 {
 
 #[test]
 fn every_controller_has_a_stable_name_and_a_label() {
-    for kind in ControllerKind::ALL {
+    for &kind in ControllerKind::ALL {
         assert_eq!(ControllerKind::from_name(kind.name()), Some(kind));
         assert!(!kind.label().is_empty());
+        // Names go into settings files, CSV columns and GDScript strings as they are.
+        let name = kind.name();
+        assert!(
+            name.chars().all(|c| c.is_ascii_lowercase() || c == '_'),
+            "{name}"
+        );
     }
-    let names: Vec<_> = ControllerKind::ALL.iter().map(|k| k.name()).collect();
-    assert_eq!(
-        names,
-        [
-            "optimizer",
-            "combined",
-            "arcade",
-            "sampling",
-            "mppi",
-            "manual"
-        ]
-    );
-    assert!(ControllerKind::Sampling.plans() && ControllerKind::Mppi.offered());
+    let mut names: Vec<_> = ControllerKind::ALL.iter().map(|k| k.name()).collect();
+    names.sort_unstable();
+    names.dedup();
+    assert_eq!(names.len(), ControllerKind::ALL.len(), "names are distinct");
+    assert!(ControllerKind::SAMPLING.plans() && ControllerKind::MPPI.offered());
     assert_eq!(ControllerKind::from_name("autopilot"), None);
-    assert!(!ControllerKind::Manual.offered() && ControllerKind::Combined.offered());
+    assert!(!ControllerKind::MANUAL.offered() && ControllerKind::COMBINED.offered());
 }
 
 #[test]
 fn the_gate_holds_the_bike_until_the_first_throttle() {
-    let mut ride = Ride::new(common::flat_ride(), ControllerKind::Arcade);
+    let mut ride = Ride::new(common::flat_ride(), ControllerKind::ARCADE);
     ride.wait_for_throttle = true;
     assert!(!ride.try_start());
     assert!(ride.is_waiting_for_throttle());
@@ -61,7 +59,7 @@ fn the_gate_holds_the_bike_until_the_first_throttle() {
 
 #[test]
 fn the_arcade_ride_counts_its_steps_and_a_reset_starts_a_new_ride() {
-    let mut ride = ride_with(ControllerKind::Arcade);
+    let mut ride = ride_with(ControllerKind::ARCADE);
     for _ in 0..60 {
         ride.step();
     }
@@ -96,7 +94,7 @@ fn the_arcade_ride_counts_its_steps_and_a_reset_starts_a_new_ride() {
 
 #[test]
 fn raw_controls_drive_until_the_next_intent() {
-    let mut ride = ride_with(ControllerKind::Arcade);
+    let mut ride = ride_with(ControllerKind::ARCADE);
     let mut brake = Controls::default();
     brake.set(cpbp_core::bike::index::REAR_WHEEL, 0.0);
     ride.set_raw_controls(brake);
@@ -117,7 +115,7 @@ fn raw_controls_drive_until_the_next_intent() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn a_planner_drives_with_plans_and_switching_forgets_them() {
-    let mut ride = ride_with(ControllerKind::Combined);
+    let mut ride = ride_with(ControllerKind::COMBINED);
     ride.planner.optimizer.particles = 5;
     ride.planner.wait = PlanWait::EveryPlan;
     for _ in 0..30 {
@@ -126,10 +124,10 @@ fn a_planner_drives_with_plans_and_switching_forgets_them() {
     assert_eq!(ride.plan().map(|p| p.paths.len()), Some(5));
     assert_eq!(ride.late_plans(), 0, "every step waited for its plan");
     assert!(ride.handover().is_some_and(|h| h.boundaries == 30));
-    ride.set_controller(ControllerKind::Arcade);
+    ride.set_controller(ControllerKind::ARCADE);
     ride.step();
     assert!(ride.plan().is_none(), "no plan while arcade drives");
-    ride.set_controller(ControllerKind::Combined);
+    ride.set_controller(ControllerKind::COMBINED);
     ride.step();
     assert_eq!(
         ride.late_plans(),
@@ -143,7 +141,7 @@ fn a_planner_drives_with_plans_and_switching_forgets_them() {
 
 #[test]
 fn a_lean_asked_for_directly_replaces_the_turn_and_is_held_to_the_limit() {
-    let mut ride = ride_with(ControllerKind::Arcade);
+    let mut ride = ride_with(ControllerKind::ARCADE);
     let ask = |ride: &mut Ride, lean: f64| {
         ride.set_intent(Intent {
             turn: -1.0,
@@ -163,7 +161,7 @@ fn a_lean_asked_for_directly_replaces_the_turn_and_is_held_to_the_limit() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn a_dying_planning_thread_is_reported_the_bike_rides_on_and_a_new_ride_rebuilds_it() {
-    let mut ride = common::ride_at(ControllerKind::Combined, 15.0, 5);
+    let mut ride = common::ride_at(ControllerKind::COMBINED, 15.0, 5);
     common::ride(&mut ride, 1.0, 0.0);
     assert_eq!(ride.failure(), None);
     ride.inject_fault("injected planner fault");

@@ -86,7 +86,7 @@ fn ride_every_direction(kind: ControllerKind) -> Vec<DVec3> {
     ignore = "rides with planners: run in release (tools/test.sh does)"
 )]
 fn the_arcade_controllers_pose_hold_moves_the_weight_where_the_stick_asks() {
-    let [forward, back, right, left, released] = ride_every_direction(ControllerKind::Arcade)[..]
+    let [forward, back, right, left, released] = ride_every_direction(ControllerKind::ARCADE)[..]
     else {
         unreachable!()
     };
@@ -103,7 +103,7 @@ fn the_arcade_controllers_pose_hold_moves_the_weight_where_the_stick_asks() {
     ignore = "rides with planners: run in release (tools/test.sh does)"
 )]
 fn the_planners_put_the_weight_where_the_stick_asks() {
-    for kind in [ControllerKind::Combined, ControllerKind::Optimizer] {
+    for kind in [ControllerKind::COMBINED, ControllerKind::OPTIMIZER] {
         let [forward, back, right, left, released] = ride_every_direction(kind)[..] else {
             unreachable!()
         };

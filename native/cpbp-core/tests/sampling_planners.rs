@@ -147,7 +147,7 @@ fn blown_up_rollouts_are_costed_and_never_chosen() {
     ignore = "slow in debug builds; make test runs it in release"
 )]
 fn both_planners_ride_straight_at_15_kmh_in_the_game_physics() {
-    for kind in [ControllerKind::Sampling, ControllerKind::Mppi] {
+    for kind in [ControllerKind::SAMPLING, ControllerKind::MPPI] {
         let mut ride = ride_in(PhysicsModel::Exact, kind, 15.0, 10);
         assert_rides_straight_for_20_seconds(&mut ride);
     }

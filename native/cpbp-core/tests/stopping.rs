@@ -52,9 +52,9 @@ fn speed(ride: &Ride) -> f64 {
 )]
 fn a_full_brake_from_40_kmh_ends_standing_on_a_foot() {
     let kinds = [
-        ControllerKind::Arcade,
-        ControllerKind::Combined,
-        ControllerKind::Optimizer,
+        ControllerKind::ARCADE,
+        ControllerKind::COMBINED,
+        ControllerKind::OPTIMIZER,
     ];
     for kind in kinds {
         let mut ride = common::ride_in(PhysicsModel::Exact, kind, 40.0, 5);
@@ -88,9 +88,9 @@ fn on_a_15_degree_slope_the_brake_holds_and_a_hill_start_does_not_roll_back() {
     // The optimizer left the bar at full lock standing, leaned onto the foot and fell
     // setting off, until the rider sat still on a foot (`Feet::straighten_rate`).
     let kinds = [
-        ControllerKind::Arcade,
-        ControllerKind::Combined,
-        ControllerKind::Optimizer,
+        ControllerKind::ARCADE,
+        ControllerKind::COMBINED,
+        ControllerKind::OPTIMIZER,
     ];
     for kind in kinds {
         let spawn = Placement {

@@ -28,7 +28,7 @@ fn the_bike_rides_at_its_design_sag() {
         .suspension
         .expect("the default bike is sprung");
     let (front_sag, rear_sag) = (s.sag * s.front_travel, s.sag * s.rear_travel);
-    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::Arcade, 15.0, 5);
+    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::ARCADE, 15.0, 5);
     for _ in 0..90 {
         ride.step();
     }
@@ -80,7 +80,7 @@ struct Landing {
 }
 
 fn ride_off_the_deck(bike: BikeParams) -> Landing {
-    let mut ride = Ride::new(drop_off(bike), ControllerKind::Arcade);
+    let mut ride = Ride::new(drop_off(bike), ControllerKind::ARCADE);
     ride.set_intent(Intent::cruise(20.0));
     let dt = ride.sim().config().control_dt;
     let mut landing = Landing {

@@ -24,7 +24,7 @@ fn launch(bike: BikeParams) -> (f64, Option<f64>) {
         bike,
         ..SimulationConfig::default()
     });
-    let mut ride = Ride::new(sim, ControllerKind::Arcade);
+    let mut ride = Ride::new(sim, ControllerKind::ARCADE);
     ride.set_intent(Intent::cruise(25.0));
     let (mut pitch, mut reached) = (f64::MIN, None);
     for step in 0..2 * common::FRAMES_PER_SECOND {
@@ -100,7 +100,7 @@ fn the_planner_holds_a_wheelie_near_the_balance_point() {
     // 1–6, 2.4 s on average; 0.7–3.9 s and 2.1 s before the arcade controller's horizon
     // shortened with speed), so the hold is judged over six seeds.
     let rides: Vec<(f64, f64)> = (1..=6)
-        .map(|seed| wheelie(ControllerKind::Combined, 6.0, seed))
+        .map(|seed| wheelie(ControllerKind::COMBINED, 6.0, seed))
         .collect();
     let mean_up = rides.iter().map(|(up, _)| up).sum::<f64>() / rides.len() as f64;
     assert!(
@@ -117,7 +117,7 @@ fn the_planner_holds_a_wheelie_near_the_balance_point() {
 
 #[test]
 fn every_controller_lifts_the_front_and_comes_down_safely() {
-    for kind in [ControllerKind::Arcade, ControllerKind::Optimizer] {
+    for kind in [ControllerKind::ARCADE, ControllerKind::OPTIMIZER] {
         let (_, highest) = wheelie(kind, 6.0, 2015);
         assert!(
             highest > 40.0,
@@ -128,7 +128,7 @@ fn every_controller_lifts_the_front_and_comes_down_safely() {
 
 #[test]
 fn releasing_the_stick_puts_the_front_down() {
-    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::Combined, 12.0, 10);
+    let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::COMBINED, 12.0, 10);
     common::ride(&mut ride, 2.0, 0.0);
     ask_wheelie(&mut ride, 1.0);
     common::ride(&mut ride, 1.0, 0.0);
@@ -181,14 +181,14 @@ fn ride_at_a_platform(kind: ControllerKind, wheelie: bool) -> DVec3 {
 #[test]
 fn a_wheelie_lifts_the_bike_onto_a_platform_a_wheel_rolled_into_stops_at() {
     let on_top = PLATFORM_HEIGHT + BikeParams::default().wheel_radius;
-    for kind in [ControllerKind::Combined, ControllerKind::Arcade] {
+    for kind in [ControllerKind::COMBINED, ControllerKind::ARCADE] {
         let rear = ride_at_a_platform(kind, true);
         assert!(
             rear.x > PLATFORM_EDGE + 0.5 && (rear.y - on_top).abs() < 0.03,
             "{kind:?}: the rear wheel is at {rear}, not on the platform"
         );
     }
-    let rear = ride_at_a_platform(ControllerKind::Combined, false);
+    let rear = ride_at_a_platform(ControllerKind::COMBINED, false);
     assert!(
         rear.x < PLATFORM_EDGE,
         "rolled onto it without a wheelie: {rear}"

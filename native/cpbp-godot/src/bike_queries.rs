@@ -63,7 +63,7 @@ impl BikeSimulation {
         )
     }
 
-    /// Control steps since the bike was last placed at which the optimizer drove without a
+    /// Control steps since the bike was last placed at which a planner drove without a
     /// plan for that step (a late plan, or none): 0 for a ride that repeats exactly.
     #[func]
     fn get_late_plan_count(&self) -> i64 {
@@ -82,13 +82,14 @@ impl BikeSimulation {
         controller_choice::kind_named(&name).map_or(GString::new(), |k| GString::from(k.label()))
     }
 
-    /// Whether controller `name` plans with trajectories (optimizer, combined).
+    /// Whether controller `name` plans with trajectories (and so has plans to draw and
+    /// time); false for an unknown name.
     #[func]
     fn controller_plans(name: GString) -> bool {
         controller_choice::kind_named(&name).is_some_and(ControllerKind::plans)
     }
 
-    /// Name of the active controller: "arcade", "manual", "optimizer" or "combined".
+    /// The registry's name of the active controller ("arcade", "combined", …).
     #[func]
     fn get_controller_name(&self) -> GString {
         GString::from(self.controller_kind().name())
@@ -273,7 +274,7 @@ impl BikeSimulation {
         })
     }
 
-    /// Number of rigid bodies (9).
+    /// Number of rigid bodies of the bike and rider (`Part::ALL`).
     #[func]
     fn get_body_count(&self) -> i64 {
         Part::ALL.len() as i64

@@ -5,8 +5,9 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Part, CONTROL_DIM};
-use cpbp_core::control::{BaselineSettings, CostTolerances};
-use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::control::cpbp::DEFAULT_SEED;
+use cpbp_core::control::{BaselineSettings, CostTolerances, OptimizerConfig};
+use cpbp_core::ride::{ControllerKind, Intent, Ride, GAME_PLAN_WAIT};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
@@ -14,7 +15,7 @@ use godot::classes::{INode3D, Node3D};
 use godot::prelude::*;
 
 use crate::bike_queries::pose_of;
-use crate::controller_choice::BikeController;
+use crate::controller_choice::ControllerChoice;
 use crate::convert::placement;
 use crate::physics_choice::BikePhysics;
 use crate::terrain_import;
@@ -25,45 +26,53 @@ use crate::terrain_import;
 /// control period (1/30 s) at a time from `_physics_process`, so pausing the tree pauses
 /// it, and interpolates body transforms between steps for smooth visuals.
 #[derive(GodotClass)]
-#[class(base=Node3D)]
+#[class(init, base=Node3D)]
 pub struct BikeSimulation {
     /// Node whose descendants' static collision shapes form the terrain.
     #[export]
+    #[init(val = NodePath::from(".."))]
     terrain_root: NodePath,
     /// Speed (km/h) full throttle drives towards.
     #[export(range = (1.0, 90.0))]
+    #[init(val = 25.0)]
     max_speed_kmh: f64,
     /// Share of the rear motor's torque (700 N·m) that full throttle or brake uses.
     #[export(range = (0.1, 1.0, 0.05))]
+    #[init(val = 1.0)]
     motor_force: f64,
     /// ODE steps per control step (more: stiffer joints, slower).
     #[export(range = (1.0, 16.0))]
+    #[init(val = SimulationConfig::default().substeps as i32)]
     substeps: i32,
     /// The physics model, by name: `classic` (QuickStep, the physics the thesis
     /// reproduction was evaluated on) or `exact` (direct solver, explicit wheel
     /// gyroscopics: the benchmark bicycle within 10 %, cheaper rollouts). Read when the
     /// ride is built (`_ready`); `physics_names()` lists them.
     #[export]
+    #[init(val = BikePhysics::exact)]
     pub(crate) physics: BikePhysics,
-    /// Who balances and steers, by name: `arcade` (the PD controller of the thesis,
-    /// §4.3.2), `manual` (nobody: the bar follows `set_steer_rate`, for inspecting the
-    /// physics), `optimizer` (C-PBP), `combined` (C-PBP warm-started with the arcade
-    /// controller), `sampling` or `mppi` (the baseline planners, MuJoCo MPC's predictive
-    /// sampling and MPPI). `controller_names()` lists those players pick.
+    /// Who balances and steers, by the controller registry's name (the inspector lists
+    /// them all; `controller_names()` those players pick, `controller_label(name)` what
+    /// menus call them). An unknown name is refused with an error.
     #[export]
-    pub(crate) controller: BikeController,
+    #[init(val = ControllerChoice(ControllerKind::ARCADE))]
+    pub(crate) controller: ControllerChoice,
     /// Trajectories the optimizer simulates each control step (N).
     #[export(range = (1.0, 256.0))]
+    #[init(val = OptimizerConfig::default().particles as i32)]
     pub(crate) trajectories: i32,
     /// How far ahead the optimizer plans (s); the thesis used 1.2 s.
     #[export(range = (0.2, 3.0, 0.1, suffix = "s"))]
+    #[init(val = OptimizerConfig::default().horizon)]
     pub(crate) horizon: f64,
     /// Lean error (degrees) that costs as much as one unit (eq. 4.7's s): smaller tracks
     /// the requested lean more strictly.
     #[export(range = (1.0, 30.0, 0.5, suffix = "°"))]
+    #[init(val = CostTolerances::default().lean.to_degrees())]
     pub(crate) lean_tolerance_deg: f64,
     /// Rider position error (cm) that costs as much as one unit at full stick.
     #[export(range = (1.0, 20.0, 0.5, suffix = "cm"))]
+    #[init(val = CostTolerances::default().rider * 100.0)]
     pub(crate) rider_tolerance_cm: f64,
     /// ODE steps per planning step in the rollouts; 0 takes the physics model's own (4 in
     /// classic; in exact 2 for the first planning steps, then 1). Fewer plan faster but
@@ -73,6 +82,7 @@ pub struct BikeSimulation {
     /// Longest the game waits at a control step for the planning thread (ms); a later
     /// plan is taken over at a later step while the last best trajectory plays on.
     #[export(range = (0.0, 1000.0, 1.0, suffix = "ms"))]
+    #[init(val = GAME_PLAN_WAIT.as_secs_f64() * 1000.0)]
     pub(crate) plan_wait_ms: f64,
     /// Wait at every control step until its plan comes, however long that takes (headless
     /// tests and experiments): no step uses a late plan, so a ride repeats exactly for its
@@ -86,18 +96,23 @@ pub struct BikeSimulation {
     /// Seed of the optimizer's random draws: the same seed, start and inputs give the same
     /// ride.
     #[export]
+    #[init(val = DEFAULT_SEED as i64)]
     pub(crate) planner_seed: i64,
     /// The baseline planners (`sampling`, `mppi`): knots of a plan over the horizon.
     #[export(range = (2.0, 36.0))]
+    #[init(val = BaselineSettings::default().knots as i32)]
     pub(crate) baseline_knots: i32,
     /// The baselines' knot perturbation, as a share of the steering prior's σ (4 rad/s).
     #[export(range = (0.05, 2.0, 0.05))]
+    #[init(val = BaselineSettings::default().noise)]
     pub(crate) baseline_noise: f64,
     /// MPPI's temperature, relative to the spread of its candidates' costs.
     #[export(range = (0.001, 1.0, 0.001))]
+    #[init(val = BaselineSettings::default().temperature)]
     pub(crate) mppi_temperature: f64,
     /// The baselines plan the steering alone, the rider on the pose PD (else every joint).
     #[export]
+    #[init(val = BaselineSettings::default().steering_only)]
     pub(crate) baseline_steering_only: bool,
     /// The ride starts with the first throttle (and again after each reset): until then
     /// `is_waiting_for_throttle` is true. A bike with feet stands on them meanwhile; one
@@ -117,37 +132,6 @@ pub struct BikeSimulation {
 
 #[godot_api]
 impl INode3D for BikeSimulation {
-    fn init(base: Base<Node3D>) -> Self {
-        Self {
-            terrain_root: NodePath::from(".."),
-            max_speed_kmh: 25.0,
-            motor_force: 1.0,
-            substeps: 4,
-            physics: BikePhysics::exact,
-            controller: BikeController::arcade,
-            trajectories: 15,
-            horizon: 1.2,
-            lean_tolerance_deg: 5.0,
-            rider_tolerance_cm: CostTolerances::default().rider * 100.0,
-            rollout_substeps: 0,
-            plan_wait_ms: 12.0,
-            wait_for_every_plan: false,
-            planning_threads: 0,
-            planner_seed: 2015,
-            baseline_knots: BaselineSettings::default().knots as i32,
-            baseline_noise: BaselineSettings::default().noise,
-            mppi_temperature: BaselineSettings::default().temperature,
-            baseline_steering_only: BaselineSettings::default().steering_only,
-            wait_for_throttle: false,
-            ride: None,
-            intent: Intent::default(),
-            accumulator: 0.0,
-            previous_poses: Vec::new(),
-            failure_reported: false,
-            base,
-        }
-    }
-
     fn ready(&mut self) {
         let Some(spawn) = placement(&self.base().get_global_transform()) else {
             godot_error!(
@@ -353,7 +337,7 @@ impl BikeSimulation {
     }
 
     pub(crate) fn controller_kind(&self) -> ControllerKind {
-        self.controller.into()
+        self.controller.0
     }
 
     pub(crate) fn apply_intent(&mut self) {

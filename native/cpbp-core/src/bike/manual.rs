@@ -1,6 +1,7 @@
-//! Driving without a balance controller, for the sandbox and tests until the controllers
-//! drive: the rider holds the riding pose, the triggers drive the rear wheel, and the
-//! steering follows a rate input and springs back to centre when it is released.
+//! Driving without a balance controller (the registry's `manual`, for inspecting the
+//! physics in tests and tools): the rider holds the riding pose, the triggers drive the
+//! rear wheel, and the steering follows a rate input and springs back to centre when it
+//! is released.
 
 use super::controls::{index, Controls};
 use super::drive::DriveInput;

@@ -15,7 +15,9 @@ use std::time::{Duration, Instant};
 use glam::DVec3;
 
 use super::arcade::ArcadeController;
+use super::cpbp::PlanPhases;
 use super::optimizer::{BikeOptimizer, OptimizerConfig};
+use super::planner::PlannerSpec;
 use super::Goal;
 use crate::bike::Controls;
 use crate::ode::WorldState;
@@ -54,6 +56,9 @@ pub struct Plan {
     pub resamples: usize,
     pub blowups: usize,
     pub planning_ms: f64,
+    /// Where the planner's own time went (within `planning_ms`, which also counts the
+    /// replica's prediction step and the hand-over's copies).
+    pub phases: PlanPhases,
     /// Every trajectory's centre-of-mass path; `best` and `warm` index into it.
     pub paths: Vec<Vec<DVec3>>,
     pub best: usize,
@@ -114,14 +119,15 @@ pub struct AnytimeOptimizer {
 }
 
 impl AnytimeOptimizer {
-    /// Starts a planning thread with its own replica of `sim`.
-    pub fn new(sim: &Simulation, wait: PlanWait) -> Self {
+    /// Starts a planning thread with its own replica of `sim`, planning with the planner
+    /// `spec` builds.
+    pub fn new(sim: &Simulation, spec: &'static PlannerSpec, wait: PlanWait) -> Self {
         let (request_tx, request_rx) = channel::<Message>();
         let (reply_tx, reply_rx) = channel::<Plan>();
         let replica = sim.replica();
         let worker = std::thread::Builder::new()
             .name("cpbp-planner".into())
-            .spawn(move || plan_requests(replica, request_rx, reply_tx))
+            .spawn(move || plan_requests(replica, spec, request_rx, reply_tx))
             .expect("the planning thread could not start");
         Self {
             requests: Some(request_tx),
@@ -274,7 +280,12 @@ impl Drop for AnytimeOptimizer {
 }
 
 /// The planning thread's loop: one plan per request until the game side hangs up.
-fn plan_requests(mut replica: Simulation, requests: Receiver<Message>, replies: Sender<Plan>) {
+fn plan_requests(
+    mut replica: Simulation,
+    spec: &'static PlannerSpec,
+    requests: Receiver<Message>,
+    replies: Sender<Plan>,
+) {
     let mut optimizer: Option<BikeOptimizer> = None;
     for message in requests {
         let request = match message {
@@ -290,7 +301,7 @@ fn plan_requests(mut replica: Simulation, requests: Receiver<Message>, replies: 
         replica.step();
         let optimizer = match &mut optimizer {
             Some(o) if o.config == request.config => o,
-            slot => slot.insert(BikeOptimizer::new(&replica, request.config.clone())),
+            slot => slot.insert(BikeOptimizer::new(&replica, spec, request.config.clone())),
         };
         if request.reset {
             optimizer.reset();
@@ -308,6 +319,7 @@ fn plan_requests(mut replica: Simulation, requests: Receiver<Message>, replies: 
             resamples: result.resamples,
             blowups: result.blowups,
             planning_ms: started.elapsed().as_secs_f64() * 1000.0,
+            phases: optimizer.phases(),
             paths: result
                 .paths
                 .iter()

@@ -87,20 +87,24 @@ impl RolloutSystem for BikeRollout {
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         let controls = self.controls_for(u);
         let asked = self.goal.pitch_request();
-        let held = self.bike.held_pitch(&self.world, self.up, asked);
-        self.bike
-            .apply_pitching(&mut self.world, &controls, held, self.up);
-        let (substeps, dt) = self.stepping.ode_steps_at(step, self.step_dt);
+        let period = self.stepping.ode_steps_at(step, self.step_dt);
+        let bike = &self.bike;
         let mut crash = 0.0;
-        for _ in 0..substeps {
-            self.world.step(dt);
-            if self.bike.explosion(&self.world).is_some() {
-                return None;
-            }
-            if self.bike.part_touching_ground(&self.world).is_some() {
+        let mut watch = |world: &World, _dt: f64| {
+            if bike.part_touching_ground(world).is_some() {
                 crash = CRASH_COST;
             }
-        }
+        };
+        let held = bike
+            .step_control_period(
+                &mut self.world,
+                &controls,
+                asked,
+                self.up,
+                period,
+                &mut watch,
+            )
+            .ok()?;
         let heading = self.bike.heading(&self.world, self.up);
         let desired = desired_lean_vector(heading, self.up, self.goal.lean);
         let current = current_lean_vector(

@@ -8,6 +8,7 @@ pub mod fidelity;
 mod goal;
 mod lean;
 mod optimizer;
+pub mod planner;
 pub mod sampling;
 
 pub use anytime::{AnytimeOptimizer, HandoverStats, Plan, PlanWait};
@@ -17,4 +18,5 @@ pub use goal::Goal;
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };
-pub use optimizer::{BaselineSettings, BikeOptimizer, OptimizerConfig, OptimizerMode};
+pub use optimizer::{BaselineSettings, BikeOptimizer, OptimizerConfig};
+pub use planner::{BikePlanner, PlannerSpec};

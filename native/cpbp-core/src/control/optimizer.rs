@@ -1,30 +1,17 @@
-//! The planning controllers: the optimizer and combined (thesis §4.3: C-PBP plans in
-//! rollout worlds cloned from the master; combined mode warm-starts it with the arcade
-//! controller's own rollout, particle 1, optimizer mode without one), and the baselines
-//! predictive sampling and MPPI in the same worlds with the same cost.
+//! A planner at work on the bike (thesis §4.3): whichever planner its spec builds (C-PBP
+//! alone or combined, predictive sampling, MPPI) plans in rollout worlds cloned from the
+//! master, one per trajectory, with the same cost; the arcade controller's memory is kept
+//! in step with the master for the planners whose trajectory 1 follows it.
 
 use super::arcade::ArcadeController;
-use super::bike_rollout::{bike_priors, BikeRollout, CostTolerances};
-use super::cpbp::{PlanResult, Planner, PlannerConfig, WarmStart};
-use super::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
+use super::bike_rollout::{BikeRollout, CostTolerances};
+use super::cpbp::{PlanPhases, PlanResult, DEFAULT_SEED};
+use super::planner::{BikePlanner, PlannerSpec};
 use super::Goal;
-use crate::bike::{index, Controls, CONTROL_DIM};
+use crate::bike::Controls;
 use crate::ode::Solver;
 use crate::physics::{PhysicsModel, RolloutStepping};
 use crate::simulation::Simulation;
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum OptimizerMode {
-    /// C-PBP alone; particle 1 replays the last frame's local refinement.
-    Optimizer,
-    /// C-PBP warm-started with the arcade controller's trajectory.
-    Combined,
-    /// MuJoCo MPC's predictive sampling: the cheapest of a nominal plan and its
-    /// perturbations becomes the plan.
-    Sampling,
-    /// MPPI: the cost-weighted average of the perturbations becomes the plan.
-    Mppi,
-}
 
 /// What the baseline planners (predictive sampling, MPPI) sample and how widely.
 #[derive(Clone, Debug, PartialEq)]
@@ -56,7 +43,6 @@ impl Default for BaselineSettings {
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct OptimizerConfig {
-    pub mode: OptimizerMode,
     /// Trajectories (N).
     pub particles: usize,
     /// Planning horizon (s); the thesis used 1.2 s.
@@ -88,7 +74,6 @@ pub struct OptimizerConfig {
 impl Default for OptimizerConfig {
     fn default() -> Self {
         Self {
-            mode: OptimizerMode::Combined,
             particles: 15,
             horizon: 1.2,
             rollout_stepping: RolloutStepping::uniform(4),
@@ -96,7 +81,7 @@ impl Default for OptimizerConfig {
             tolerances: CostTolerances::default(),
             mutation_scale: 0.2,
             control_cost_weight: 0.01,
-            seed: 2015,
+            seed: DEFAULT_SEED,
             threads: 0,
             baseline: BaselineSettings::default(),
         }
@@ -114,24 +99,19 @@ impl OptimizerConfig {
     }
 }
 
-/// How a mode searches: C-PBP, or one of the baselines.
-enum Search {
-    Cpbp(Planner),
-    Sampling(SamplingPlanner),
-}
-
 /// The planner, its rollout worlds, and the arcade controller it can lean on.
 pub struct BikeOptimizer {
     pub config: OptimizerConfig,
-    search: Search,
+    spec: &'static PlannerSpec,
+    planner: Box<dyn BikePlanner>,
     rollouts: Vec<BikeRollout>,
     arcade: ArcadeController,
     last: Option<PlanResult>,
 }
 
 impl BikeOptimizer {
-    /// Builds N + 1 rollout worlds like the master of `sim`.
-    pub fn new(sim: &Simulation, config: OptimizerConfig) -> Self {
+    /// The planner `spec` builds, with N rollout worlds like the master of `sim`.
+    pub fn new(sim: &Simulation, spec: &'static PlannerSpec, config: OptimizerConfig) -> Self {
         let dt = sim.config().control_dt;
         let steps = (config.horizon / dt).round().max(1.0) as usize;
         let rollout = || BikeRollout {
@@ -150,7 +130,8 @@ impl BikeOptimizer {
             policy: None,
         };
         Self {
-            search: search_for(&config, steps),
+            planner: (spec.build)(&config, steps),
+            spec,
             rollouts: (0..config.particles.max(1)).map(|_| rollout()).collect(),
             arcade: ArcadeController::default(),
             last: None,
@@ -160,12 +141,14 @@ impl BikeOptimizer {
 
     /// Forgets previous plans (after a reset or a lift).
     pub fn reset(&mut self) {
-        match &mut self.search {
-            Search::Cpbp(planner) => planner.reset(),
-            Search::Sampling(planner) => planner.reset(),
-        }
+        self.planner.reset();
         self.arcade.reset();
         self.last = None;
+    }
+
+    /// Where the last plan's time went.
+    pub fn phases(&self) -> PlanPhases {
+        self.planner.phases()
     }
 
     /// The last frame's plan (trajectories, costs), for statistics and visualisation.
@@ -200,10 +183,7 @@ impl BikeOptimizer {
     /// Tells the planner which controls the master really applied last (when that was
     /// not its own first control: a fallback, or a plan that arrived late).
     pub fn note_applied(&mut self, controls: &Controls) {
-        match &mut self.search {
-            Search::Cpbp(planner) => planner.note_applied(controls.values()),
-            Search::Sampling(planner) => planner.note_applied(controls.values()),
-        }
+        self.planner.note_applied(controls.values());
     }
 
     /// Plans one control step of `sim` towards the player's `goal`.
@@ -215,67 +195,14 @@ impl BikeOptimizer {
         }
         // Combined mode: particle 1 rides with the arcade controller, starting from the
         // master's controller memory (taken before this step updates it).
-        if let (OptimizerMode::Combined, Some(rollout)) =
-            (self.config.mode, self.rollouts.get_mut(1))
-        {
+        if let (true, Some(rollout)) = (self.spec.follows_arcade, self.rollouts.get_mut(1)) {
             rollout.policy = Some(self.arcade);
         }
         // Keep the arcade controller's memory in step with the master.
         self.arcade.controls_of(sim, goal);
-        // Particle 1: combined mode follows the arcade controller live; the optimizer
-        // alone replays last frame's refinement.
-        let result = match &mut self.search {
-            Search::Cpbp(planner) => {
-                let warm = match self.config.mode {
-                    OptimizerMode::Combined => WarmStart::Policy,
-                    _ => WarmStart::Refinement,
-                };
-                planner.plan(&mut self.rollouts, &start, warm)
-            }
-            Search::Sampling(planner) => planner.plan(&mut self.rollouts, &start),
-        };
+        let result = self.planner.plan(&mut self.rollouts, &start);
         let controls = self.rollouts[0].controls_for(&result.control);
         self.last = Some(result);
         controls
     }
-}
-
-/// The search `config.mode` names, planning `steps` steps ahead.
-fn search_for(config: &OptimizerConfig, steps: usize) -> Search {
-    let priors = bike_priors(config.mutation_scale);
-    let update = match config.mode {
-        OptimizerMode::Optimizer | OptimizerMode::Combined => {
-            let planner_config = PlannerConfig {
-                particles: config.particles.max(1),
-                steps,
-                seed: config.seed,
-                threads: config.threads,
-                refine: config.mode == OptimizerMode::Optimizer,
-                control_cost_weight: config.control_cost_weight,
-                ..PlannerConfig::default()
-            };
-            return Search::Cpbp(Planner::new(planner_config, priors));
-        }
-        OptimizerMode::Sampling => SamplingUpdate::Best,
-        OptimizerMode::Mppi => SamplingUpdate::Weighted {
-            temperature: config.baseline.temperature,
-        },
-    };
-    let baseline = &config.baseline;
-    let sampled = baseline
-        .steering_only
-        .then(|| (0..CONTROL_DIM).map(|d| d == index::STEER).collect());
-    let sampling_config = SamplingConfig {
-        samples: config.particles.max(1),
-        steps,
-        knots: baseline.knots.max(2),
-        noise: baseline.noise,
-        update,
-        sampled,
-        control_cost_weight: config.control_cost_weight,
-        seed: config.seed,
-        threads: config.threads,
-        ..SamplingConfig::default()
-    };
-    Search::Sampling(SamplingPlanner::new(sampling_config, priors))
 }

@@ -1,11 +1,12 @@
 //! One shape for every controller (in the spirit of MuJoCo MPC's `Planner` interface): each
 //! turns the ride's state and the player's intent into the controls of the next step, and
-//! forgets what it remembered when the ride jumps. The registry names them.
+//! forgets what it remembered when the ride jumps. The registry (`registry.rs`) names
+//! them.
 
 use std::time::Duration;
 
 use crate::bike::{Controls, DriveInput, RiderPosition};
-use crate::control::{Goal, HandoverStats, OptimizerConfig, OptimizerMode, Plan, PlanWait};
+use crate::control::{Goal, HandoverStats, OptimizerConfig, Plan, PlanWait};
 use crate::simulation::Simulation;
 
 /// What the player asks for.
@@ -77,95 +78,6 @@ pub trait Controller: Send {
     fn inject_fault(&mut self, _message: &str) {}
 }
 
-/// Every controller there is, by its stable name; the menus, the HUD, settings files and
-/// the experiment all read this one list.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum ControllerKind {
-    /// The PD controller on the steering of the thesis (§4.3.2).
-    Arcade,
-    /// Nobody balances: the bar follows the steering rate input (for inspecting physics).
-    Manual,
-    /// C-PBP alone (§4.3).
-    Optimizer,
-    /// C-PBP warm-started with the arcade controller's trajectory.
-    Combined,
-    /// MuJoCo MPC's predictive sampling (a baseline planner).
-    Sampling,
-    /// MPPI (a baseline planner).
-    Mppi,
-}
-
-impl ControllerKind {
-    /// In the order the menus list them and the game cycles through them.
-    pub const ALL: [ControllerKind; 6] = [
-        Self::Optimizer,
-        Self::Combined,
-        Self::Arcade,
-        Self::Sampling,
-        Self::Mppi,
-        Self::Manual,
-    ];
-
-    /// The name settings files, the experiment's CSV and the command line use.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Arcade => "arcade",
-            Self::Manual => "manual",
-            Self::Optimizer => "optimizer",
-            Self::Combined => "combined",
-            Self::Sampling => "sampling",
-            Self::Mppi => "mppi",
-        }
-    }
-
-    /// What menus show.
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::Arcade => "Arcade (PD)",
-            Self::Manual => "Manual (nobody balances)",
-            Self::Optimizer => "Optimizer (C-PBP)",
-            Self::Combined => "Combined (C-PBP + arcade)",
-            Self::Sampling => "Predictive sampling (baseline)",
-            Self::Mppi => "MPPI (baseline)",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|k| k.name() == name)
-    }
-
-    /// Whether players pick it (menus, the game's cycle); manual is for tests and tools.
-    pub fn offered(self) -> bool {
-        self != Self::Manual
-    }
-
-    /// Whether it plans with trajectories (and so has plans to draw and time).
-    pub fn plans(self) -> bool {
-        self.planner_mode().is_some()
-    }
-
-    /// The planning mode behind a planning controller.
-    pub fn planner_mode(self) -> Option<OptimizerMode> {
-        match self {
-            Self::Optimizer => Some(OptimizerMode::Optimizer),
-            Self::Combined => Some(OptimizerMode::Combined),
-            Self::Sampling => Some(OptimizerMode::Sampling),
-            Self::Mppi => Some(OptimizerMode::Mppi),
-            Self::Arcade | Self::Manual => None,
-        }
-    }
-
-    /// A new controller of this kind for `sim`.
-    pub fn build(self, sim: &Simulation, planner: &PlannerSettings) -> Box<dyn Controller> {
-        use super::drivers::{ArcadeDriver, ManualDriver, PlannerDriver};
-        match (self, self.planner_mode()) {
-            (_, Some(mode)) => Box::new(PlannerDriver::new(sim, mode, planner)),
-            (Self::Manual, None) => Box::new(ManualDriver),
-            _ => Box::<ArcadeDriver>::default(),
-        }
-    }
-}
-
 /// How the planners plan: the optimizer's settings and how long the ride waits for a plan.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlannerSettings {
@@ -173,12 +85,16 @@ pub struct PlannerSettings {
     pub wait: PlanWait,
 }
 
+/// Longest the game waits at a control step for a plan: a frame of 60 Hz less what
+/// the step itself and the drawing need, so a slow plan never stalls the game.
+pub const GAME_PLAN_WAIT: Duration = Duration::from_millis(12);
+
 impl Default for PlannerSettings {
-    /// The game's: the optimizer's defaults, waiting at most 12 ms at a control step.
+    /// The game's: the optimizer's defaults, waiting at most `GAME_PLAN_WAIT` at a step.
     fn default() -> Self {
         Self {
             optimizer: OptimizerConfig::default(),
-            wait: PlanWait::AtMost(Duration::from_millis(12)),
+            wait: PlanWait::AtMost(GAME_PLAN_WAIT),
         }
     }
 }

@@ -3,12 +3,18 @@
 
 use super::controller::{Controller, Intent, PlannerSettings, RideState};
 use crate::bike::{manual_controls, Controls};
-use crate::control::{AnytimeOptimizer, ArcadeController, HandoverStats, OptimizerMode, Plan};
+use crate::control::{AnytimeOptimizer, ArcadeController, HandoverStats, Plan, PlannerSpec};
 use crate::simulation::Simulation;
 
 /// The arcade controller (thesis §4.3.2) on the master.
 #[derive(Default)]
 pub struct ArcadeDriver(ArcadeController);
+
+impl ArcadeDriver {
+    pub fn boxed() -> Box<dyn Controller> {
+        Box::<Self>::default()
+    }
+}
 
 impl Controller for ArcadeDriver {
     fn controls(&mut self, state: &RideState<'_>, _intent: &Intent) -> Controls {
@@ -23,6 +29,12 @@ impl Controller for ArcadeDriver {
 /// Nobody balances: the bar follows the steering rate input.
 pub struct ManualDriver;
 
+impl ManualDriver {
+    pub fn boxed() -> Box<dyn Controller> {
+        Box::new(Self)
+    }
+}
+
 impl Controller for ManualDriver {
     fn controls(&mut self, state: &RideState<'_>, intent: &Intent) -> Controls {
         manual_controls(
@@ -36,17 +48,15 @@ impl Controller for ManualDriver {
     fn reset(&mut self) {}
 }
 
-/// C-PBP on its own thread (optimizer or combined mode), handed over at control steps.
+/// A planner on its own thread, handed over at control steps.
 pub struct PlannerDriver {
-    mode: OptimizerMode,
     anytime: AnytimeOptimizer,
 }
 
 impl PlannerDriver {
-    pub fn new(sim: &Simulation, mode: OptimizerMode, planner: &PlannerSettings) -> Self {
+    pub fn new(sim: &Simulation, spec: &'static PlannerSpec, planner: &PlannerSettings) -> Self {
         Self {
-            mode,
-            anytime: AnytimeOptimizer::new(sim, planner.wait),
+            anytime: AnytimeOptimizer::new(sim, spec, planner.wait),
         }
     }
 }
@@ -54,11 +64,8 @@ impl PlannerDriver {
 impl Controller for PlannerDriver {
     fn controls(&mut self, state: &RideState<'_>, _intent: &Intent) -> Controls {
         self.anytime.wait = state.planner.wait;
-        let config = crate::control::OptimizerConfig {
-            mode: self.mode,
-            ..state.planner.optimizer.clone()
-        };
-        self.anytime.controls(state.sim, &state.goal, &config)
+        self.anytime
+            .controls(state.sim, &state.goal, &state.planner.optimizer)
     }
 
     fn reset(&mut self) {

@@ -5,8 +5,10 @@
 
 mod controller;
 mod drivers;
+mod registry;
 
-pub use controller::{Controller, ControllerKind, Intent, PlannerSettings, RideState};
+pub use controller::{Controller, Intent, PlannerSettings, RideState, GAME_PLAN_WAIT};
+pub use registry::{ControllerEntry, ControllerKind, Drives};
 
 use std::sync::Arc;
 

@@ -3,11 +3,13 @@
 
 mod build;
 mod contact_patch;
+mod control_period;
 mod drive;
 mod falling_off;
 mod ground;
 mod rider;
 
+pub use control_period::{Exploded, PeriodWatch};
 pub use ground::FootState;
 
 use glam::{DQuat, DVec3};

@@ -35,7 +35,7 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
         "physics", "cost", "flat: @0.5 s, @1.2 s", "bumps: @0.5 s, @1.2 s"
     );
     let record = |sim: Simulation, turn: bool| {
-        let mut ride = Ride::new(sim, ControllerKind::Arcade);
+        let mut ride = Ride::new(sim, ControllerKind::ARCADE);
         let mut intent = Intent {
             drive: DriveInput {
                 throttle: 1.0,

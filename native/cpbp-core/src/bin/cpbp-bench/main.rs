@@ -7,7 +7,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use cpbp_core::bike::{Controls, DriveInput, Placement};
-use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, OptimizerMode, PlanWait};
+use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, PlanWait};
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -105,11 +105,11 @@ fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
     );
     let (mut largest_real_time, mut one_thread_64) = (0, 0.0);
     for n in [5, 10, 15, 32, 64, 128] {
-        let (one, _) = planning_ms(&flat, OptimizerMode::Combined, n, 1);
+        let (one, _) = planning_ms(&flat, ControllerKind::COMBINED, n, 1);
         if n == 64 {
             one_thread_64 = one;
         }
-        let (two, sequences) = planning_ms(&flat, OptimizerMode::Combined, n, 2);
+        let (two, sequences) = planning_ms(&flat, ControllerKind::COMBINED, n, 2);
         let alone = median(|| rollouts_alone_ms(&flat, &sequences, 2));
         let efficiency = alone / two;
         println!("{n:<14} {one:>16.1} {two:>16.1} {alone:>15.1} ms {efficiency:>12.2}");
@@ -132,47 +132,47 @@ fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
 /// Every planning mode's cost per control step in the game's physics on 2 threads.
 fn planners_side_by_side() {
     let flat = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
-    let modes = [
-        OptimizerMode::Combined,
-        OptimizerMode::Optimizer,
-        OptimizerMode::Sampling,
-        OptimizerMode::Mppi,
-    ];
+    let planners: Vec<ControllerKind> = ControllerKind::ALL
+        .iter()
+        .copied()
+        .filter(|k| k.plans())
+        .collect();
     println!();
     println!(
         "Planners side by side ({} physics, 2 threads), ms per control step:",
         PhysicsModel::default().name()
     );
-    println!(
-        "{:<14} {:>10} {:>10} {:>10} {:>10}",
-        "trajectories", "combined", "optimizer", "sampling", "mppi"
-    );
+    let names: Vec<String> = planners
+        .iter()
+        .map(|k| format!("{:>10}", k.name()))
+        .collect();
+    println!("{:<14} {}", "trajectories", names.join(" "));
     for n in [5, 10, 20, 64] {
-        let cells: Vec<String> = modes
+        let cells: Vec<String> = planners
             .iter()
-            .map(|&mode| format!("{:>10.1}", planning_ms(&flat, mode, n, 2).0))
+            .map(|&kind| format!("{:>10.1}", planning_ms(&flat, kind, n, 2).0))
             .collect();
         println!("{n:<14} {}", cells.join(" "));
     }
 }
 
-/// Median milliseconds per control step of planner `mode` with `n` trajectories,
+/// Median milliseconds per control step of planning controller `kind` with `n` trajectories,
 /// rolling out in the simulation's physics model, and the last plan's final trajectories.
 fn planning_ms(
     sim: &Simulation,
-    mode: OptimizerMode,
+    kind: ControllerKind,
     n: usize,
     threads: usize,
 ) -> (f64, Vec<Vec<Controls>>) {
     let model = sim.config().physics;
+    let spec = kind.planner().expect("a planning controller");
     let config = OptimizerConfig {
-        mode,
         particles: n,
         threads,
         ..OptimizerConfig::default()
     }
     .rolling_out_in(model);
-    let mut optimizer = BikeOptimizer::new(sim, config);
+    let mut optimizer = BikeOptimizer::new(sim, spec, config);
     let drive = DriveInput {
         throttle: 0.6,
         brake: 0.0,
@@ -198,7 +198,7 @@ fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
     // The game's ride: the combined controller behind the one controller interface.
     let mut ride = Ride::new(
         rolling_bike(terrain.clone(), PhysicsModel::default()),
-        ControllerKind::Combined,
+        ControllerKind::COMBINED,
     );
     ride.planner.optimizer.particles = n;
     ride.planner.wait = PlanWait::AtMost(Duration::from_millis(10));

@@ -120,7 +120,7 @@ fn parse(arguments: Vec<String>) -> Result<Args, String> {
         .split(',')
         .map(|name| {
             ControllerKind::from_name(name)
-                .filter(|k| k.plans() || *k == ControllerKind::Arcade)
+                .filter(|k| k.plans() || *k == ControllerKind::ARCADE)
                 .ok_or(format!("not a planning controller or arcade: {name}"))
         })
         .collect::<Result<_, _>>()?;

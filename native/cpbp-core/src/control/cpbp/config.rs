@@ -29,6 +29,10 @@ pub struct PlannerConfig {
     pub control_cost_weight: f64,
 }
 
+/// The planners' seed unless told otherwise (the year of the thesis): the same seed, start
+/// and inputs give the same ride.
+pub const DEFAULT_SEED: u64 = 2015;
+
 impl Default for PlannerConfig {
     fn default() -> Self {
         Self {
@@ -37,7 +41,7 @@ impl Default for PlannerConfig {
             uniform_bias: 0.2,
             resample_threshold: 0.5,
             blowup_cost: 1e6,
-            seed: 2015,
+            seed: DEFAULT_SEED,
             threads: 0,
             refine: true,
             ridge: 1e-3,
@@ -60,6 +64,37 @@ pub enum WarmStart<'a> {
     /// trajectory as replaying that controller's rollout, without simulating it first on
     /// one thread while the others wait.
     Policy,
+}
+
+/// Where a frame's time went (ms): rolling the trajectories out (the part that spreads over
+/// the threads), reading the plan back from them, and the rest (choosing what each
+/// trajectory follows, resampling, bookkeeping) on the planning thread alone.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PlanPhases {
+    pub total_ms: f64,
+    pub rollouts_ms: f64,
+    pub conclude_ms: f64,
+}
+
+impl PlanPhases {
+    /// The phases of a frame that started at `started`, rolled out for `rollouts` and
+    /// began concluding at `concluding`.
+    pub fn measured(
+        started: std::time::Instant,
+        rollouts: std::time::Duration,
+        concluding: std::time::Instant,
+    ) -> Self {
+        Self {
+            total_ms: started.elapsed().as_secs_f64() * 1000.0,
+            rollouts_ms: rollouts.as_secs_f64() * 1000.0,
+            conclude_ms: concluding.elapsed().as_secs_f64() * 1000.0,
+        }
+    }
+
+    /// The planning thread's own share: neither rollouts nor concluding.
+    pub fn other_ms(&self) -> f64 {
+        (self.total_ms - self.rollouts_ms - self.conclude_ms).max(0.0)
+    }
 }
 
 /// What a frame found.

@@ -7,7 +7,9 @@ use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
 use rayon::prelude::*;
 
-use super::config::{PlanResult, PlannerConfig, WarmStart};
+use std::time::{Duration, Instant};
+
+use super::config::{PlanPhases, PlanResult, PlannerConfig, WarmStart};
 use super::frame::{draw, lineages, mix, normalise, smoothed_beliefs};
 use super::frame::{Outcome, Particles, StepRecord};
 use super::priors::{AppliedControls, Priors};
@@ -51,6 +53,8 @@ pub struct Planner {
     memory: Option<Memory>,
     applied: AppliedControls,
     frame: u64,
+    /// Where the last frame's time went.
+    pub phases: PlanPhases,
 }
 
 impl Planner {
@@ -62,6 +66,7 @@ impl Planner {
             priors,
             memory: None,
             frame: 0,
+            phases: PlanPhases::default(),
         }
     }
 
@@ -85,6 +90,8 @@ impl Planner {
         start: &S::State,
         warm: WarmStart<'_>,
     ) -> PlanResult {
+        let started = Instant::now();
+        let mut rolling_out = Duration::ZERO;
         let n = self.config.particles.max(1).min(systems.len());
         let mut resampler = Pcg64::seed_from_u64(mix(self.config.seed, self.frame, u64::MAX));
         let mut rngs: Vec<Pcg64> = (0..n)
@@ -107,17 +114,18 @@ impl Planner {
                 let threshold = self.config.resample_threshold;
                 let (parents, resampled) =
                     particles.choose_parents(k, threshold, &replays, &mut resampler);
+                let stepping = Instant::now();
                 let outcomes = self.step_all(systems, &particles, &parents, &guides, &mut rngs, k);
+                rolling_out += stepping.elapsed();
                 particles.advance(parents, resampled, outcomes)
             })
             .collect();
         normalise(&mut particles.weights);
-        self.conclude(
-            records,
-            particles,
-            &start_features,
-            replays.get(1) == Some(&true),
-        )
+        let concluding = Instant::now();
+        let warm_started = replays.get(1) == Some(&true);
+        let result = self.conclude(records, particles, &start_features, warm_started);
+        self.phases = PlanPhases::measured(started, rolling_out, concluding);
+        result
     }
 
     /// Every particle restores its parent's state into its own world, chooses a control,

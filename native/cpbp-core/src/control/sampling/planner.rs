@@ -4,13 +4,17 @@
 //! cheapest candidate becomes the nominal (predictive sampling, Howell et al. 2022) or the
 //! cost-weighted average does (MPPI, Williams et al. 2017).
 
+use std::time::Instant;
+
 use rand::SeedableRng;
 use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
 use rayon::prelude::*;
 
 use super::spline::Knots;
-use crate::control::cpbp::{mix, rollout_pool, AppliedControls, PlanResult, Priors, RolloutSystem};
+use crate::control::cpbp::{
+    mix, rollout_pool, AppliedControls, PlanPhases, PlanResult, Priors, RolloutSystem, DEFAULT_SEED,
+};
 
 /// How a frame's candidates make the next nominal plan.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -58,7 +62,7 @@ impl Default for SamplingConfig {
             sampled: None,
             blowup_cost: 1e6,
             control_cost_weight: 1.0,
-            seed: 2015,
+            seed: DEFAULT_SEED,
             threads: 0,
         }
     }
@@ -82,6 +86,8 @@ pub struct SamplingPlanner {
     nominal: Option<Knots>,
     applied: AppliedControls,
     frame: u64,
+    /// Where the last frame's time went.
+    pub phases: PlanPhases,
 }
 
 impl SamplingPlanner {
@@ -93,6 +99,7 @@ impl SamplingPlanner {
             priors,
             nominal: None,
             frame: 0,
+            phases: PlanPhases::default(),
         }
     }
 
@@ -113,6 +120,7 @@ impl SamplingPlanner {
 
     /// Plans one frame from `start` with one system per candidate (`systems.len()` ≥ N).
     pub fn plan<S: RolloutSystem>(&mut self, systems: &mut [S], start: &S::State) -> PlanResult {
+        let started = Instant::now();
         let n = self.config.samples.max(1).min(systems.len());
         let steps = self.config.steps.max(1);
         let nominal = self
@@ -121,6 +129,7 @@ impl SamplingPlanner {
             .unwrap_or_else(|| Knots::constant(&self.priors.mean, self.config.knots, steps));
         let candidates: Vec<Knots> = (0..n).map(|i| self.candidate(&nominal, i)).collect();
         self.frame += 1;
+        let rolling_out = Instant::now();
         let rollouts: Vec<Rollout> = self.pool.install(|| {
             systems[..n]
                 .par_iter_mut()
@@ -128,6 +137,8 @@ impl SamplingPlanner {
                 .map(|(system, knots)| self.roll_out(system, start, knots))
                 .collect()
         });
+        let rolled_out = rolling_out.elapsed();
+        let concluding = Instant::now();
         let totals: Vec<f64> = rollouts.iter().map(|r| r.total).collect();
         let best = (0..n)
             .min_by(|a, b| totals[*a].total_cmp(&totals[*b]))
@@ -149,6 +160,7 @@ impl SamplingPlanner {
         self.nominal = Some(next.shifted_one_step());
         let control = chosen[..self.priors.dim()].to_vec();
         self.note_applied(&control);
+        self.phases = PlanPhases::measured(started, rolled_out, concluding);
         PlanResult {
             control,
             best_cost: totals[best],

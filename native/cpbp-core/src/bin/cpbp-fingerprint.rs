@@ -1,0 +1,108 @@
+//! Fingerprints of what the planners decide, for refactors and speed-ups that must not
+//! change a single plan: `cpbp-fingerprint` rides 3 s with every planning controller in
+//! both physics models, waiting for every plan, and prints one hash per ride over every
+//! plan it made (chosen sequence, costs, resampling counts, drawn paths) and its final
+//! state. Run it before and after a change; the lines must be identical. Hashes are of
+//! the exact bits, so they hold on one platform (compare like with like: the experiment's
+//! platform fingerprint says which).
+
+use cpbp_core::bike::Placement;
+use cpbp_core::control::{Plan, PlanWait};
+use cpbp_core::physics::PhysicsModel;
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::simulation::{Simulation, SimulationConfig};
+use cpbp_core::terrain::Terrain;
+use glam::DVec3;
+use std::sync::Arc;
+
+/// Control steps per ride (3 s at 30 Hz) and the step the lean request comes at.
+const STEPS: u64 = 90;
+const LEAN_FROM: u64 = 30;
+
+fn main() {
+    let particles = std::env::args()
+        .nth(1)
+        .map_or(10, |n| n.parse().expect("a trajectory count N"));
+    println!("plans of a 3 s ride, N = {particles}, 2 threads (FNV-1a 64 of their exact bits)");
+    for physics in PhysicsModel::ALL {
+        for kind in ControllerKind::ALL.iter().copied().filter(|k| k.plans()) {
+            let (plans, hash) = fingerprint(physics, kind, particles);
+            println!(
+                "{:<8} {:<10} {plans:>3} plans {hash:016x}",
+                physics.name(),
+                kind.name()
+            );
+        }
+    }
+}
+
+/// Rides `kind` at 10 km/h, asking for 10° of right lean after 1 s; returns the number of
+/// plans and the hash over them and the final state.
+fn fingerprint(physics: PhysicsModel, kind: ControllerKind, particles: usize) -> (usize, u64) {
+    let config = SimulationConfig {
+        physics,
+        ..SimulationConfig::default()
+    };
+    let spawn = Placement {
+        position: DVec3::new(0.0, 0.02, 0.0),
+        ..Placement::IDENTITY
+    };
+    let sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
+    let mut ride = Ride::new(sim, kind);
+    ride.planner.optimizer.particles = particles;
+    ride.planner.optimizer.threads = 2;
+    ride.planner.wait = PlanWait::EveryPlan;
+    ride.set_intent(Intent::cruise(10.0));
+    let mut hash = Fnv::default();
+    let mut plans = 0;
+    let mut last_step = None;
+    for step in 0..STEPS {
+        if step == LEAN_FROM {
+            ride.set_intent(Intent {
+                lean: Some(10f64.to_radians()),
+                ..*ride.intent()
+            });
+        }
+        ride.step();
+        if let Some(plan) = ride.plan().filter(|p| Some(p.step) != last_step) {
+            last_step = Some(plan.step);
+            plans += 1;
+            hash.write(&decisions(plan));
+        }
+    }
+    hash.write(&format!("{:?}", ride.sim().world().snapshot()));
+    (plans, hash.0)
+}
+
+/// Everything a plan decided, in Rust's exact (shortest round-trip) float notation; not
+/// how long it took.
+fn decisions(plan: &Plan) -> String {
+    format!(
+        "{} {:?} {:?} {} {} {:?} {} {:?}",
+        plan.step,
+        plan.sequence,
+        plan.best_cost,
+        plan.resamples,
+        plan.blowups,
+        plan.paths,
+        plan.best,
+        plan.warm
+    )
+}
+
+/// FNV-1a, 64 bits: a fingerprint, not a defence against anyone.
+struct Fnv(u64);
+
+impl Default for Fnv {
+    fn default() -> Self {
+        Self(0xcbf2_9ce4_8422_2325)
+    }
+}
+
+impl Fnv {
+    fn write(&mut self, text: &str) {
+        for byte in text.bytes() {
+            self.0 = (self.0 ^ u64::from(byte)).wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+}

@@ -1,0 +1,167 @@
+//! One interface for every trajectory planner of the bike, in the shape of MuJoCo MPC's
+//! `Planner` (reset, optimise a policy, the action from it, timing by phase): C-PBP alone
+//! and warm-started by the arcade controller, predictive sampling and MPPI all plan
+//! through it, and a planner is built from a [`PlannerSpec`], which is all the controller
+//! registry (`ride::ControllerKind`) needs to know of it. A new planner is a new file with
+//! its spec and one line in the registry.
+
+use super::bike_rollout::{bike_priors, BikeRollout};
+use super::cpbp::{PlanPhases, PlanResult, Planner, PlannerConfig, Priors, WarmStart};
+use super::optimizer::OptimizerConfig;
+use super::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
+use crate::bike::{index, CONTROL_DIM};
+use crate::ode::WorldState;
+
+/// A planner over the bike's rollout worlds.
+pub trait BikePlanner: Send {
+    /// Forgets previous plans (after a reset, a lift or a teleport).
+    fn reset(&mut self);
+    /// The control the master really applied last, when it was not this planner's own
+    /// first control (a fallback, a plan that arrived late): the smoothness priors of
+    /// the next plan start from it.
+    fn note_applied(&mut self, control: &[f64]);
+    /// Plans from `start` with one rollout world per trajectory (`rollouts.len()` ≥ N);
+    /// the result's `control` is what to apply now, `chosen` the sequence it heads.
+    fn plan(&mut self, rollouts: &mut [BikeRollout], start: &WorldState) -> PlanResult;
+    /// Where the last plan's time went.
+    fn phases(&self) -> PlanPhases;
+}
+
+/// How to build a planner, and what its rollouts need.
+#[derive(Debug)]
+pub struct PlannerSpec {
+    /// A new planner with `config`'s settings, planning `steps` control steps ahead.
+    pub build: fn(config: &OptimizerConfig, steps: usize) -> Box<dyn BikePlanner>,
+    /// Whether trajectory 1 rides with the arcade controller, live (combined mode).
+    pub follows_arcade: bool,
+}
+
+/// C-PBP alone; trajectory 1 replays the last plan's local refinement (thesis §4.3).
+pub static OPTIMIZER: PlannerSpec = PlannerSpec {
+    build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Refinement)),
+    follows_arcade: false,
+};
+
+/// C-PBP warm-started with the arcade controller's trajectory (thesis §4.3.2).
+pub static COMBINED: PlannerSpec = PlannerSpec {
+    build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Arcade)),
+    follows_arcade: true,
+};
+
+/// MuJoCo MPC's predictive sampling: the cheapest of a nominal plan and its perturbations
+/// becomes the plan.
+pub static SAMPLING: PlannerSpec = PlannerSpec {
+    build: |config, steps| Box::new(sampling(config, steps, SamplingUpdate::Best)),
+    follows_arcade: false,
+};
+
+/// MPPI: the cost-weighted average of the perturbations becomes the plan.
+pub static MPPI: PlannerSpec = PlannerSpec {
+    build: |config, steps| {
+        let temperature = config.baseline.temperature;
+        Box::new(sampling(
+            config,
+            steps,
+            SamplingUpdate::Weighted { temperature },
+        ))
+    },
+    follows_arcade: false,
+};
+
+/// What C-PBP's trajectory 1 replays.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum WarmRoute {
+    Refinement,
+    Arcade,
+}
+
+/// C-PBP with the warm start its mode takes.
+struct Cpbp {
+    planner: Planner,
+    warm: WarmRoute,
+}
+
+impl Cpbp {
+    fn new(config: &OptimizerConfig, steps: usize, warm: WarmRoute) -> Self {
+        let planner_config = PlannerConfig {
+            particles: config.particles.max(1),
+            steps,
+            seed: config.seed,
+            threads: config.threads,
+            // Only the optimizer alone replays a refinement: computing one for combined
+            // mode would cost without being used.
+            refine: warm == WarmRoute::Refinement,
+            control_cost_weight: config.control_cost_weight,
+            ..PlannerConfig::default()
+        };
+        Self {
+            planner: Planner::new(planner_config, priors(config)),
+            warm,
+        }
+    }
+}
+
+impl BikePlanner for Cpbp {
+    fn reset(&mut self) {
+        self.planner.reset();
+    }
+
+    fn note_applied(&mut self, control: &[f64]) {
+        self.planner.note_applied(control);
+    }
+
+    fn plan(&mut self, rollouts: &mut [BikeRollout], start: &WorldState) -> PlanResult {
+        let warm = match self.warm {
+            WarmRoute::Refinement => WarmStart::Refinement,
+            WarmRoute::Arcade => WarmStart::Policy,
+        };
+        self.planner.plan(rollouts, start, warm)
+    }
+
+    fn phases(&self) -> PlanPhases {
+        self.planner.phases
+    }
+}
+
+/// Predictive sampling or MPPI as the baseline settings say.
+fn sampling(config: &OptimizerConfig, steps: usize, update: SamplingUpdate) -> SamplingPlanner {
+    let baseline = &config.baseline;
+    let sampled = baseline
+        .steering_only
+        .then(|| (0..CONTROL_DIM).map(|d| d == index::STEER).collect());
+    let sampling_config = SamplingConfig {
+        samples: config.particles.max(1),
+        steps,
+        knots: baseline.knots.max(2),
+        noise: baseline.noise,
+        update,
+        sampled,
+        control_cost_weight: config.control_cost_weight,
+        seed: config.seed,
+        threads: config.threads,
+        ..SamplingConfig::default()
+    };
+    SamplingPlanner::new(sampling_config, priors(config))
+}
+
+impl BikePlanner for SamplingPlanner {
+    fn reset(&mut self) {
+        SamplingPlanner::reset(self);
+    }
+
+    fn note_applied(&mut self, control: &[f64]) {
+        SamplingPlanner::note_applied(self, control);
+    }
+
+    fn plan(&mut self, rollouts: &mut [BikeRollout], start: &WorldState) -> PlanResult {
+        SamplingPlanner::plan(self, rollouts, start)
+    }
+
+    fn phases(&self) -> PlanPhases {
+        self.phases
+    }
+}
+
+fn priors(config: &OptimizerConfig) -> Priors {
+    bike_priors(config.mutation_scale)
+}
