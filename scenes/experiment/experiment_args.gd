@@ -3,8 +3,6 @@ extends RefCounted
 ## The experiment worker's command line, checked: every value in range, or `error` says
 ## which one is wrong.
 
-const MAX_TRAJECTORIES := 256
-
 var speed := 15.0
 var controller := "combined"
 var physics := "classic"
@@ -43,10 +41,9 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 				args.physics = value
 			"trajectories":
 				args.trajectories.clear()
+				var most := BikeSimulation.max_trajectories()
 				for item in value.split(","):
-					args.trajectories.append(
-						int(_number(args, "trajectories", item, 1, MAX_TRAJECTORIES))
-					)
+					args.trajectories.append(int(_number(args, "trajectories", item, 1, most)))
 			"seed":
 				args.base_seed = int(_number(args, "seed", value, 0, 2_000_000_000))
 			"first":

@@ -82,8 +82,20 @@ func test_bad_input_is_rejected_or_clamped_without_a_crash() -> void:
 	assert_true(_bike.set_controls(wild), "out-of-range values are clamped, not refused")
 	assert_eq(_bike.get_body_transform(99), Transform3D.IDENTITY)
 	assert_eq(_bike.get_body_name(-1), "")
+	_bike.horizon = NAN
+	_bike.plan_wait_ms = NAN
+	_bike.trajectories = -5
+	_bike.lean_tolerance_deg = INF
 	await wait_physics_frames(30)
 	assert_true(_bike.get_body_transform(0).origin.is_finite())
+
+
+func test_a_top_speed_set_after_the_throttle_still_applies() -> void:
+	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
+	_bike.set_drive(1.0, 0.0)
+	_bike.max_speed_kmh = 6.0
+	await wait_physics_frames(300)
+	assert_between(_bike.get_speed(), 1.0, 6.0 / 3.6 + 0.3, "held near 6 km/h, not the 25 before")
 
 
 func test_the_baseline_planners_plan_with_their_settings_and_survive_bad_ones() -> void:

@@ -19,9 +19,11 @@ THESIS_CONTROLLERS = (
 )
 # The controller registry (cpbp_core::ride::ControllerKind::ALL) as the native tests
 # write it into controllers.json and hold it equal: every controller's name, menu label,
-# whether players pick it and whether it plans. The worker also refuses a name the
-# registry does not know.
-REGISTRY = tuple(json.loads(Path(__file__).with_name("controllers.json").read_text("utf-8")))
+# whether players pick it and whether it plans, and the trajectory counts the ride takes
+# (cpbp_core::ride::limits). The worker also refuses a name the registry does not know.
+_NATIVE = json.loads(Path(__file__).with_name("controllers.json").read_text("utf-8"))
+REGISTRY = tuple(_NATIVE["controllers"])
+MIN_TRAJECTORIES, MAX_TRAJECTORIES = (int(n) for n in _NATIVE["trajectories"])
 PLANNERS = tuple(entry["name"] for entry in REGISTRY if entry["plans"])
 # The thesis's planners, C-PBP alone and warm-started; the registry's other planners are
 # the baselines they are compared with.
@@ -66,11 +68,13 @@ class Controller:
         kind, _, count = name.partition("-")
         if kind == "arcade" and not count:
             return Controller("arcade", 0, physics)
-        if kind in PLANNERS and count.isdigit() and 1 <= int(count) <= 256:
+        if kind in PLANNERS and count.isdigit() and (
+                MIN_TRAJECTORIES <= int(count) <= MAX_TRAJECTORIES):
             return Controller(kind, int(count), physics)
         planners = ", ".join(f"{p}-N" for p in PLANNERS)
         raise ValueError(
-            f"unknown controller '{label}': use arcade or {planners} (N in 1–256), "
+            f"unknown controller '{label}': use arcade or {planners} "
+            f"(N in {MIN_TRAJECTORIES}–{MAX_TRAJECTORIES}), "
             "with :exact for the exact physics"
         )
 
@@ -101,7 +105,8 @@ def display_order(controller: Controller) -> tuple[int, int, int]:
 
 
 def parse_counts(text: str) -> list[int]:
-    return _whole_numbers(text, 1, 256, "trajectory counts are whole numbers")
+    return _whole_numbers(text, MIN_TRAJECTORIES, MAX_TRAJECTORIES,
+                          "trajectory counts are whole numbers")
 
 
 def _whole_numbers(text: str, low: int, high: int, what: str) -> list[int]:

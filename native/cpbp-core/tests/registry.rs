@@ -13,7 +13,7 @@ use cpbp_core::control::cpbp::{PlanPhases, PlanResult};
 use cpbp_core::control::{BikePlanner, BikeRollout, OptimizerConfig, PlanWait, PlannerSpec};
 use cpbp_core::ode::WorldState;
 use cpbp_core::ride::{
-    Controller, ControllerEntry, ControllerKind, Drives, Intent, Ride, RideState,
+    limits, Controller, ControllerEntry, ControllerKind, Drives, Intent, Ride, RideState,
 };
 
 /// A controller that leaves the bar alone and counts how often it was asked.
@@ -135,13 +135,14 @@ fn a_new_planner_is_a_spec_and_an_entry_and_plans_on_the_planning_thread() {
     assert_eq!(ride.late_plans(), 0);
 }
 
-/// The registry as the Python tools read it (tools/cpbp_experiment/controllers.json).
+/// The registry as the Python tools read it (tools/cpbp_experiment/controllers.json),
+/// with the range of the trajectory count they accept.
 fn registry_json() -> String {
     let entries: Vec<String> = ControllerKind::ALL
         .iter()
         .map(|k| {
             format!(
-                "  {{\"name\": \"{}\", \"label\": \"{}\", \"offered\": {}, \"plans\": {}}}",
+                "    {{\"name\": \"{}\", \"label\": \"{}\", \"offered\": {}, \"plans\": {}}}",
                 k.name(),
                 k.label(),
                 k.offered(),
@@ -149,7 +150,13 @@ fn registry_json() -> String {
             )
         })
         .collect();
-    format!("[\n{}\n]\n", entries.join(",\n"))
+    let trajectories = limits::TRAJECTORIES;
+    format!(
+        "{{\n  \"controllers\": [\n{}\n  ],\n  \"trajectories\": [{}, {}]\n}}\n",
+        entries.join(",\n"),
+        trajectories.min,
+        trajectories.max
+    )
 }
 
 #[test]

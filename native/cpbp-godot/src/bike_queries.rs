@@ -76,6 +76,12 @@ impl BikeSimulation {
         physics_choice::names()
     }
 
+    /// The most trajectories a planner may simulate per control step (the core's limit).
+    #[func]
+    fn max_trajectories() -> i64 {
+        cpbp_core::ride::limits::TRAJECTORIES.max as i64
+    }
+
     /// What menus show for controller `name` (empty for an unknown name).
     #[func]
     fn controller_label(name: GString) -> GString {

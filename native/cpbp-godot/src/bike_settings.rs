@@ -1,12 +1,13 @@
-//! The node's exports as the ride's settings: which controller drives and how the
-//! planners plan. GDScript and the inspector may change them at any time; they are read
-//! again before every physics tick.
+//! The node's exports as the ride's settings: which controller drives, how the planners
+//! plan and what the pedals drive. GDScript and the inspector may change them at any
+//! time, in any order; before every physics tick they are read, clamped to the core's
+//! limits, and handed to the ride when they differ from what it has.
 
 use std::time::Duration;
 
 use cpbp_core::control::{BaselineSettings, CostTolerances, OptimizerConfig, PlanWait};
 use cpbp_core::physics::{PhysicsModel, RolloutStepping};
-use cpbp_core::ride::PlannerSettings;
+use cpbp_core::ride::{limits, PlannerSettings, GAME_PLAN_WAIT};
 
 use crate::bike_simulation::BikeSimulation;
 
@@ -14,57 +15,70 @@ impl BikeSimulation {
     /// The exports, as the ride's settings: GDScript may change them at any time.
     pub(crate) fn sync_settings(&mut self) {
         let kind = self.controller_kind();
-        let defaults = BaselineSettings::default();
+        let planner = self.planner_settings();
+        if let Some(drive) = self.drive().filter(|d| *d != self.intent.drive) {
+            self.intent.drive = drive;
+            self.apply_intent();
+        }
+        if let Some(ride) = &mut self.ride {
+            if ride.controller() != kind {
+                ride.set_controller(kind);
+            }
+            if ride.planner != planner {
+                ride.planner = planner;
+            }
+            ride.wait_for_throttle = self.wait_for_throttle;
+        }
+    }
+
+    /// The planners' settings the exports ask for, within the core's limits (a value
+    /// that is not a number counts as the default).
+    fn planner_settings(&self) -> PlannerSettings {
+        let defaults = OptimizerConfig::default();
+        let baseline = BaselineSettings::default();
         // The built ride's physics: a change of the export waits for the next build.
         let physics = self
             .sim()
             .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
         let mut optimizer = OptimizerConfig {
-            particles: self.trajectories.clamp(1, 256) as usize,
-            horizon: self.horizon.clamp(0.2, 3.0),
+            particles: limits::TRAJECTORIES.clamp_count(self.trajectories.into()),
+            horizon: limits::HORIZON_S.clamp(self.horizon, defaults.horizon),
             tolerances: CostTolerances {
-                lean: self.lean_tolerance_deg.clamp(1.0, 30.0).to_radians(),
-                rider: self.rider_tolerance_cm.clamp(1.0, 20.0) / 100.0,
+                lean: limits::LEAN_TOLERANCE_DEG
+                    .clamp(
+                        self.lean_tolerance_deg,
+                        defaults.tolerances.lean.to_degrees(),
+                    )
+                    .to_radians(),
+                rider: limits::RIDER_TOLERANCE_CM
+                    .clamp(self.rider_tolerance_cm, defaults.tolerances.rider * 100.0)
+                    / 100.0,
             },
-            threads: self.planning_threads.clamp(0, 64) as usize,
+            threads: limits::PLANNING_THREADS.clamp_count(self.planning_threads.into()),
             seed: self.planner_seed as u64,
             baseline: BaselineSettings {
-                knots: self.baseline_knots.clamp(2, 36) as usize,
-                noise: finite_or(self.baseline_noise, defaults.noise).clamp(0.05, 2.0),
-                temperature: finite_or(self.mppi_temperature, defaults.temperature)
-                    .clamp(0.001, 1.0),
+                knots: limits::BASELINE_KNOTS.clamp_count(self.baseline_knots.into()),
+                noise: limits::BASELINE_NOISE.clamp(self.baseline_noise, baseline.noise),
+                temperature: limits::MPPI_TEMPERATURE
+                    .clamp(self.mppi_temperature, baseline.temperature),
                 steering_only: self.baseline_steering_only,
             },
-            ..OptimizerConfig::default()
+            ..defaults
         }
         .rolling_out_in(physics);
-        if self.rollout_substeps > 0 {
-            optimizer.rollout_stepping =
-                RolloutStepping::uniform(self.rollout_substeps.min(8) as usize);
+        let rollout_substeps = limits::ROLLOUT_SUBSTEPS.clamp_count(self.rollout_substeps.into());
+        if rollout_substeps > 0 {
+            optimizer.rollout_stepping = RolloutStepping::uniform(rollout_substeps);
         }
-        let planner = PlannerSettings {
+        PlannerSettings {
             optimizer,
             wait: if self.wait_for_every_plan {
                 PlanWait::EveryPlan
             } else {
-                PlanWait::AtMost(Duration::from_secs_f64(
-                    self.plan_wait_ms.clamp(0.0, 1000.0) / 1000.0,
-                ))
+                let default_ms = GAME_PLAN_WAIT.as_secs_f64() * 1000.0;
+                let wait_ms = limits::PLAN_WAIT_MS.clamp(self.plan_wait_ms, default_ms);
+                PlanWait::AtMost(Duration::from_secs_f64(wait_ms / 1000.0))
             },
-        };
-        if let Some(ride) = &mut self.ride {
-            ride.set_controller(kind);
-            ride.planner = planner;
-            ride.wait_for_throttle = self.wait_for_throttle;
         }
-    }
-}
-
-/// `value`, or `fallback` if it is not a number (an inspector typo, a script's NaN).
-fn finite_or(value: f64, fallback: f64) -> f64 {
-    if value.is_finite() {
-        value
-    } else {
-        fallback
     }
 }

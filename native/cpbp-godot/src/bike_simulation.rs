@@ -7,7 +7,7 @@ use std::sync::Arc;
 use cpbp_core::bike::{Controls, DriveInput, Part, CONTROL_DIM};
 use cpbp_core::control::cpbp::DEFAULT_SEED;
 use cpbp_core::control::{BaselineSettings, CostTolerances, OptimizerConfig};
-use cpbp_core::ride::{ControllerKind, Intent, Ride, GAME_PLAN_WAIT};
+use cpbp_core::ride::{limits, ControllerKind, Intent, Ride, GAME_PLAN_WAIT};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
@@ -33,15 +33,15 @@ pub struct BikeSimulation {
     #[init(val = NodePath::from(".."))]
     terrain_root: NodePath,
     /// Speed (km/h) full throttle drives towards.
-    #[export(range = (1.0, 90.0))]
+    #[export(range = (limits::MAX_SPEED_KMH.min, limits::MAX_SPEED_KMH.max))]
     #[init(val = 25.0)]
     max_speed_kmh: f64,
     /// Share of the rear motor's torque (700 N·m) that full throttle or brake uses.
-    #[export(range = (0.1, 1.0, 0.05))]
+    #[export(range = (limits::MOTOR_FORCE.min, limits::MOTOR_FORCE.max, 0.05))]
     #[init(val = 1.0)]
     motor_force: f64,
     /// ODE steps per control step (more: stiffer joints, slower).
-    #[export(range = (1.0, 16.0))]
+    #[export(range = (limits::SUBSTEPS.min, limits::SUBSTEPS.max))]
     #[init(val = SimulationConfig::default().substeps as i32)]
     substeps: i32,
     /// The physics model, by name: `classic` (QuickStep, the physics the thesis
@@ -58,30 +58,30 @@ pub struct BikeSimulation {
     #[init(val = ControllerChoice(ControllerKind::ARCADE))]
     pub(crate) controller: ControllerChoice,
     /// Trajectories the optimizer simulates each control step (N).
-    #[export(range = (1.0, 256.0))]
+    #[export(range = (limits::TRAJECTORIES.min, limits::TRAJECTORIES.max))]
     #[init(val = OptimizerConfig::default().particles as i32)]
     pub(crate) trajectories: i32,
     /// How far ahead the optimizer plans (s); the thesis used 1.2 s.
-    #[export(range = (0.2, 3.0, 0.1, suffix = "s"))]
+    #[export(range = (limits::HORIZON_S.min, limits::HORIZON_S.max, 0.1, suffix = "s"))]
     #[init(val = OptimizerConfig::default().horizon)]
     pub(crate) horizon: f64,
     /// Lean error (degrees) that costs as much as one unit (eq. 4.7's s): smaller tracks
     /// the requested lean more strictly.
-    #[export(range = (1.0, 30.0, 0.5, suffix = "°"))]
+    #[export(range = (limits::LEAN_TOLERANCE_DEG.min, limits::LEAN_TOLERANCE_DEG.max, 0.5, suffix = "°"))]
     #[init(val = CostTolerances::default().lean.to_degrees())]
     pub(crate) lean_tolerance_deg: f64,
     /// Rider position error (cm) that costs as much as one unit at full stick.
-    #[export(range = (1.0, 20.0, 0.5, suffix = "cm"))]
+    #[export(range = (limits::RIDER_TOLERANCE_CM.min, limits::RIDER_TOLERANCE_CM.max, 0.5, suffix = "cm"))]
     #[init(val = CostTolerances::default().rider * 100.0)]
     pub(crate) rider_tolerance_cm: f64,
     /// ODE steps per planning step in the rollouts; 0 takes the physics model's own (4 in
     /// classic; in exact 2 for the first planning steps, then 1). Fewer plan faster but
     /// predict a different bike.
-    #[export(range = (0.0, 8.0))]
+    #[export(range = (limits::ROLLOUT_SUBSTEPS.min, limits::ROLLOUT_SUBSTEPS.max))]
     pub(crate) rollout_substeps: i32,
     /// Longest the game waits at a control step for the planning thread (ms); a later
     /// plan is taken over at a later step while the last best trajectory plays on.
-    #[export(range = (0.0, 1000.0, 1.0, suffix = "ms"))]
+    #[export(range = (limits::PLAN_WAIT_MS.min, limits::PLAN_WAIT_MS.max, 1.0, suffix = "ms"))]
     #[init(val = GAME_PLAN_WAIT.as_secs_f64() * 1000.0)]
     pub(crate) plan_wait_ms: f64,
     /// Wait at every control step until its plan comes, however long that takes (headless
@@ -91,7 +91,7 @@ pub struct BikeSimulation {
     pub(crate) wait_for_every_plan: bool,
     /// Threads that simulate the optimizer's trajectories (0: one per core). The
     /// experiment runs one bike per core with one thread each.
-    #[export(range = (0.0, 64.0))]
+    #[export(range = (limits::PLANNING_THREADS.min, limits::PLANNING_THREADS.max))]
     pub(crate) planning_threads: i32,
     /// Seed of the optimizer's random draws: the same seed, start and inputs give the same
     /// ride.
@@ -99,15 +99,15 @@ pub struct BikeSimulation {
     #[init(val = DEFAULT_SEED as i64)]
     pub(crate) planner_seed: i64,
     /// The baseline planners (`sampling`, `mppi`): knots of a plan over the horizon.
-    #[export(range = (2.0, 36.0))]
+    #[export(range = (limits::BASELINE_KNOTS.min, limits::BASELINE_KNOTS.max))]
     #[init(val = BaselineSettings::default().knots as i32)]
     pub(crate) baseline_knots: i32,
     /// The baselines' knot perturbation, as a share of the steering prior's σ (4 rad/s).
-    #[export(range = (0.05, 2.0, 0.05))]
+    #[export(range = (limits::BASELINE_NOISE.min, limits::BASELINE_NOISE.max, 0.05))]
     #[init(val = BaselineSettings::default().noise)]
     pub(crate) baseline_noise: f64,
     /// MPPI's temperature, relative to the spread of its candidates' costs.
-    #[export(range = (0.001, 1.0, 0.001))]
+    #[export(range = (limits::MPPI_TEMPERATURE.min, limits::MPPI_TEMPERATURE.max, 0.001))]
     #[init(val = BaselineSettings::default().temperature)]
     pub(crate) mppi_temperature: f64,
     /// The baselines plan the steering alone, the rider on the pose PD (else every joint).
@@ -123,6 +123,9 @@ pub struct BikeSimulation {
     pub(crate) ride: Option<Ride>,
     /// The player's intent as set so far (also before the ride is built).
     pub(crate) intent: Intent,
+    /// Throttle and brake as last set (none yet: the intent's drive is its default), so a
+    /// later change of `max_speed_kmh` or `motor_force` reaches the drive too.
+    pub(crate) pedals: Option<(f64, f64)>,
     pub(crate) accumulator: f64,
     pub(crate) previous_poses: Vec<(DVec3, DQuat)>,
     /// Whether the active controller's failure has been reported.
@@ -143,7 +146,7 @@ impl INode3D for BikeSimulation {
             return;
         };
         let config = SimulationConfig {
-            substeps: self.substeps.clamp(1, 16) as usize,
+            substeps: limits::SUBSTEPS.clamp_count(self.substeps.into()),
             physics: self.physics.into(),
             ..SimulationConfig::default()
         };
@@ -200,13 +203,10 @@ impl BikeSimulation {
         if !(throttle.is_finite() && brake.is_finite()) {
             godot_warn!("BikeSimulation.set_drive: non-finite input ({throttle}, {brake}) treated as released");
         }
-        let force = self.motor_force.clamp(0.1, 1.0);
-        self.intent.drive = DriveInput {
-            throttle: throttle * force,
-            brake: brake * force,
-            max_speed: self.max_speed_kmh / 3.6,
+        self.pedals = Some((throttle, brake));
+        if let Some(drive) = self.drive() {
+            self.intent.drive = drive;
         }
-        .sanitized();
         self.apply_intent();
     }
 
@@ -338,6 +338,18 @@ impl BikeSimulation {
 
     pub(crate) fn controller_kind(&self) -> ControllerKind {
         self.controller.0
+    }
+
+    /// The drive the pedals ask for with the present top speed and motor share.
+    pub(crate) fn drive(&self) -> Option<DriveInput> {
+        let (throttle, brake) = self.pedals?;
+        let force = limits::MOTOR_FORCE.clamp(self.motor_force, 1.0);
+        let drive = DriveInput {
+            throttle: throttle * force,
+            brake: brake * force,
+            max_speed: self.max_speed_kmh / 3.6,
+        };
+        Some(drive.sanitized())
     }
 
     pub(crate) fn apply_intent(&mut self) {

@@ -4,12 +4,14 @@ import json
 import unittest
 from pathlib import Path
 
-from cpbp_experiment.configs import BASELINES, PLANNERS, REGISTRY, THESIS_PLANNERS, Controller
+from cpbp_experiment.configs import (BASELINES, MAX_TRAJECTORIES, MIN_TRAJECTORIES, PLANNERS,
+                                     REGISTRY, THESIS_PLANNERS, Controller)
 
 
 class RegistryTest(unittest.TestCase):
     def test_the_planners_are_the_registry_entries_that_plan(self):
         copy = json.loads((Path(__file__).parents[1] / "controllers.json").read_text("utf-8"))
+        copy = copy["controllers"]
         self.assertEqual([e["name"] for e in copy if e["plans"]], list(PLANNERS))
         self.assertEqual(len(REGISTRY), len(copy))
         self.assertTrue(set(THESIS_PLANNERS) <= set(PLANNERS))
@@ -29,6 +31,13 @@ class RegistryTest(unittest.TestCase):
             self.assertIn(kind, str(refusal.exception))
         with self.assertRaises(ValueError):
             Controller.parse("manual-5")
+
+    def test_the_trajectory_count_is_the_rides_range(self):
+        self.assertEqual(Controller.parse(f"combined-{MAX_TRAJECTORIES}").trajectories,
+                         MAX_TRAJECTORIES)
+        for count in (MIN_TRAJECTORIES - 1, MAX_TRAJECTORIES + 1):
+            with self.assertRaises(ValueError):
+                Controller.parse(f"combined-{count}")
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@
 
 mod controller;
 mod drivers;
+pub mod limits;
 mod registry;
 
 pub use controller::{Controller, Intent, PlannerSettings, RideState, GAME_PLAN_WAIT};
