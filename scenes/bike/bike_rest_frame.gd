@@ -57,11 +57,11 @@ func on_body(body: int, world_at_rest: Transform3D) -> Transform3D:
 ## The two ends (bike frame) of a body's capsule, the one furthest along `first_towards`
 ## (a bike-frame direction) first.
 func capsule_ends(body: int, first_towards: Vector3) -> Array[Vector3]:
-	for shape: Dictionary in _simulation.get_shapes():
+	for shape: BikeShape in _simulation.get_shapes():
 		if shape.body != body or shape.kind != "capsule":
 			continue
-		var offset: Transform3D = shape.offset
-		var half := offset.basis.z.normalized() * float(shape.length) / 2.0
+		var offset := shape.offset
+		var half := offset.basis.z.normalized() * shape.length / 2.0
 		var a := bike_of(_bodies[body] * (offset.origin + half))
 		var b := bike_of(_bodies[body] * (offset.origin - half))
 		var ends: Array[Vector3] = [a, b]

@@ -25,7 +25,7 @@ func _ready() -> void:
 		push_error("PhysicalBikeView: no running BikeSimulation at %s" % simulation_path)
 		set_process(false)
 		return
-	for shape: Dictionary in _simulation.get_shapes():
+	for shape: BikeShape in _simulation.get_shapes():
 		_add_shape(shape)
 	_follow()
 
@@ -35,15 +35,15 @@ func _process(_delta: float) -> void:
 		_follow()
 
 
-func _add_shape(shape: Dictionary) -> void:
-	var body: int = shape.body
+func _add_shape(shape: BikeShape) -> void:
+	var body := shape.body
 	var mesh_instance := MeshInstance3D.new()
 	var alignment := Transform3D.IDENTITY
-	match str(shape.kind):
+	match shape.kind:
 		"sphere":
 			var sphere := SphereMesh.new()
 			sphere.radius = shape.radius
-			sphere.height = 2.0 * float(shape.radius)
+			sphere.height = 2.0 * shape.radius
 			mesh_instance.mesh = sphere
 		"box":
 			var box := BoxMesh.new()
@@ -52,7 +52,7 @@ func _add_shape(shape: Dictionary) -> void:
 		"capsule":
 			var capsule := CapsuleMesh.new()
 			capsule.radius = shape.radius
-			capsule.height = float(shape.length) + 2.0 * float(shape.radius)
+			capsule.height = shape.length + 2.0 * shape.radius
 			mesh_instance.mesh = capsule
 			# Godot's capsule stands along y; the simulation's lies along z.
 			alignment = Transform3D(Basis(Vector3.RIGHT, PI / 2.0), Vector3.ZERO)

@@ -102,14 +102,10 @@ static func feet_down_of(simulation: BikeSimulation) -> Array[Dictionary]:
 	var lean := simulation.get_lean()
 	for i in feet.size():
 		var side := -1.0 if i == 0 else 1.0
-		var foot: Dictionary = feet[i]
+		var foot: BikeFoot = feet[i]
 		if foot.down and (foot.on_ground or lean * side > 0.0):
 			down.append(
-				{
-					side = side,
-					sole = frame * (foot.on_frame as Vector3),
-					up = frame.basis.y.normalized()
-				}
+				{side = side, sole = frame * foot.on_frame, up = frame.basis.y.normalized()}
 			)
 	return down
 
@@ -143,18 +139,20 @@ func drawn_shock_length() -> float:
 
 
 func _build_wheels() -> void:
+	# Sized by the simulated wheel: a tyre a quarter of the radius deep on its rim.
+	var radius := _simulation.get_wheel_radius()
 	for body in WHEELS:
 		var hub := _frame.rest_of(body).origin
 		var axle := _frame.right().normalized()
 		var facing := _basis_with_y(axle, Vector3.UP)
 		var tyre := TorusMesh.new()
-		tyre.inner_radius = 0.225
-		tyre.outer_radius = 0.3
+		tyre.inner_radius = 0.75 * radius
+		tyre.outer_radius = radius
 		tyre.rings = 48
 		_add(body, tyre, "tyre", Transform3D(facing, hub))
 		var rim := TorusMesh.new()
-		rim.inner_radius = 0.19
-		rim.outer_radius = 0.235
+		rim.inner_radius = 0.63 * radius
+		rim.outer_radius = 0.78 * radius
 		_add(body, rim, "rim", Transform3D(facing, hub))
 		var hub_mesh := CylinderMesh.new()
 		hub_mesh.top_radius = 0.05
@@ -164,13 +162,14 @@ func _build_wheels() -> void:
 		# Spokes make the wheel's turning visible.
 		for i in 5:
 			var spoke := BoxMesh.new()
-			spoke.size = Vector3(0.02, 0.2, 0.035)
+			spoke.size = Vector3(0.02, 0.67 * radius, 0.035)
 			var radial := _frame.basis().y.rotated(axle, TAU * i / 5.0)
-			_add(body, spoke, "rim", Transform3D(_basis_with_y(radial, axle), hub + radial * 0.1))
+			var middle := hub + radial * radius / 3.0
+			_add(body, spoke, "rim", Transform3D(_basis_with_y(radial, axle), middle))
 		if body == BikeSimulation.REAR_WHEEL:
 			var disc := CylinderMesh.new()
-			disc.top_radius = 0.12
-			disc.bottom_radius = 0.12
+			disc.top_radius = 0.4 * radius
+			disc.bottom_radius = 0.4 * radius
 			disc.height = 0.01
 			_add(body, disc, "metal", Transform3D(facing, hub - axle * 0.07))
 

@@ -149,7 +149,7 @@ func test_a_stop_on_a_foot_for_30_s_and_a_pull_away() -> void:
 		if frame < 120:
 			continue
 		widest_lean = maxf(widest_lean, absf(_game.bike.get_lean()))
-		for foot: Dictionary in _game.bike.get_feet():
+		for foot: BikeFoot in _game.bike.get_feet():
 			on_a_foot += int(foot.on_ground)
 		leg_drawn_down += int(feet.is_leg_down(-1.0) or feet.is_leg_down(1.0))
 	assert_lt(absf(_game.bike.get_speed()), 0.1, "standing still")
@@ -187,7 +187,7 @@ func test_full_throttle_then_the_full_brake_on_the_tracks_straight() -> void:
 	assert_lt(absf(_game.bike.get_speed()), 0.1, "standing still")
 	assert_gt(stopped_at, -24.0, "stopped before the kicker")
 	var on_a_foot := false
-	for foot: Dictionary in _game.bike.get_feet():
+	for foot: BikeFoot in _game.bike.get_feet():
 		on_a_foot = on_a_foot or foot.on_ground
 	assert_true(on_a_foot, "standing on a foot")
 	print(

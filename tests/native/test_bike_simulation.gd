@@ -129,7 +129,7 @@ func test_the_optimizer_settings_shape_its_plans() -> void:
 	assert_eq(paths.size(), 4)
 	assert_eq(paths[0].size(), 18, "0.6 s at 30 planning steps a second")
 	assert_eq(_bike.get_warm_trajectory(), 1, "combined: the arcade rollout")
-	var stats: Dictionary = _bike.get_handover_stats()
+	var stats := _bike.get_handover_stats()
 	assert_gt(stats.boundaries, 20)
 	assert_eq(stats.late, 0, "waiting up to a second, every plan is on time")
 	_bike.trajectories = 1
@@ -273,3 +273,39 @@ func _spawn(where: Transform3D) -> void:
 	_bike.transform = where
 	_level.add_child(_bike)
 	await wait_physics_frames(1)
+
+
+func test_the_bike_is_data_and_the_shipped_file_is_the_reference_bike() -> void:
+	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
+	var reference := _bike.get_center_of_mass()
+	_bike.queue_free()
+	_bike = BikeSimulation.new()
+	_bike.bike = load("res://scenes/bike/bikes/street_350.tres")
+	_bike.transform = Transform3D(Basis(), Vector3(0, 0.02, 0))
+	_level.add_child(_bike)
+	await wait_physics_frames(1)
+	assert_eq(_bike.get_center_of_mass(), reference, "the file describes the reference bike")
+	_bike.queue_free()
+	var small := BikeDescription.new()
+	small.wheel_radius = 0.25
+	small.wheelbase = 1.25
+	_bike = BikeSimulation.new()
+	_bike.bike = small
+	_level.add_child(_bike)
+	await wait_physics_frames(60)
+	assert_eq(_bike.get_wheel_radius(), 0.25)
+	var rear := _bike.get_body_transform(BikeSimulation.REAR_WHEEL).origin
+	var front := _bike.get_body_transform(BikeSimulation.FRONT_WHEEL).origin
+	assert_almost_eq(rear.distance_to(front), 1.25, 0.02, "wheelbase as described")
+	assert_almost_eq(rear.y, 0.25, 0.02, "standing on its smaller wheels")
+
+
+func test_a_bike_that_cannot_be_built_is_an_error_not_a_crash() -> void:
+	var broken := BikeDescription.new()
+	broken.wheelbase = NAN
+	_bike = BikeSimulation.new()
+	_bike.bike = broken
+	expect_error("wheelbase must be a positive number")
+	_level.add_child(_bike)
+	await wait_physics_frames(2)
+	assert_false(_bike.is_running())

@@ -52,12 +52,10 @@ func _simulated_end(body: int, near: Vector3, side: float, out: float) -> Vector
 
 func _capsule_ends(body: int) -> Array[Vector3]:
 	var ends: Array[Vector3] = []
-	for shape: Dictionary in _game.bike.get_shapes():
+	for shape: BikeShape in _game.bike.get_shapes():
 		if shape.body == body and shape.kind == "capsule":
-			var world: Transform3D = (
-				_game.bike.get_body_transform(body) * (shape.offset as Transform3D)
-			)
-			var half := world.basis.z.normalized() * float(shape.length) / 2.0
+			var world := _game.bike.get_body_transform(body) * shape.offset
+			var half := world.basis.z.normalized() * shape.length / 2.0
 			ends = [world.origin + half, world.origin - half]
 	return ends
 

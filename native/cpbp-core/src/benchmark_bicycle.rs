@@ -5,7 +5,7 @@
 //! paper's linear model says whether our physics rides like a bicycle the field agrees on
 //! (`tools/bicycle_benchmark`, docs/bike-model.md).
 
-use glam::{DMat3, DQuat, DVec3};
+use glam::{DMat3, DVec3};
 
 use crate::bike::BikeParams;
 use crate::ode::{BodyId, Gyroscopic, JointId, Mass, Solver, SurfaceParams, World};
@@ -201,11 +201,11 @@ fn mass(total: f64, inertia: [[f64; 3]; 3]) -> Mass {
 
 impl Bicycle {
     fn build(p: &BenchmarkParameters, config: &CoastConfig) -> Self {
-        let mut world = World::new([0.0, -p.g, 0.0]);
+        let mut world = World::new(DVec3::new(0.0, -p.g, 0.0));
         world.set_solver(config.solver);
         world.set_surface(config.surface);
-        world.add_plane([0.0, 1.0, 0.0], 0.0);
-        let at = |x: f64, z: f64| to_game(DVec3::new(x, 0.0, z)).to_array();
+        world.add_plane(DVec3::Y, 0.0);
+        let at = |x: f64, z: f64| to_game(DVec3::new(x, 0.0, z));
         let rear_axle = at(0.0, -p.r_r);
         let front_axle = at(p.w, -p.r_f);
         let rear_wheel = world.add_body(mass(p.m_r, wheel_inertia(p.i_rxx, p.i_ryy)), rear_axle);
@@ -218,7 +218,7 @@ impl Bicycle {
             world.set_gyroscopic(wheel, config.gyroscopic);
         }
 
-        let axle = [0.0, 0.0, 1.0];
+        let axle = DVec3::Z;
         world.add_hinge(rear_frame, Some(rear_wheel), rear_axle, axle);
         world.add_hinge(front_frame, Some(front_wheel), front_axle, axle);
         // The steer axis meets the ground one trail ahead of the front contact and tilts
@@ -229,7 +229,7 @@ impl Bicycle {
             front_frame,
             Some(rear_frame),
             at(p.w + p.c, 0.0),
-            steer_axis.to_array(),
+            steer_axis,
         );
         Self {
             world,
@@ -246,10 +246,9 @@ impl Bicycle {
         let roll = DVec3::X * roll_rate;
         for index in 0..self.world.body_count() {
             let body = BodyId(index);
-            let position = DVec3::from_array(self.world.body_position(body));
+            let position = self.world.body_position(body);
             let velocity = DVec3::X * speed + roll.cross(position);
-            self.world
-                .set_body_linear_velocity(body, velocity.to_array());
+            self.world.set_body_linear_velocity(body, velocity);
             // Rolling forward spins a wheel about −z.
             let spin = self
                 .wheels
@@ -257,16 +256,13 @@ impl Bicycle {
                 .find(|(wheel, _)| *wheel == body)
                 .map_or(0.0, |(_, radius)| -speed / radius);
             let angular = roll + DVec3::Z * spin;
-            self.world
-                .set_body_angular_velocity(body, angular.to_array());
+            self.world.set_body_angular_velocity(body, angular);
         }
     }
 
     /// Roll of the rear frame to the right (rad).
     fn roll(&self) -> f64 {
-        let q = self.world.body_quaternion(self.rear_frame);
-        let rotation = DQuat::from_xyzw(q[1], q[2], q[3], q[0]);
-        let right = rotation * DVec3::Z;
+        let right = self.world.body_quaternion(self.rear_frame) * DVec3::Z;
         (-right.y).clamp(-1.0, 1.0).asin()
     }
 }

@@ -226,9 +226,9 @@ impl Simulation {
         }
         let frame = self.bike.body(Part::Frame);
         let mass = self.world.body_mass(frame);
-        let velocity = DVec3::from_array(self.world.body_linear_velocity(frame));
+        let velocity = self.world.body_linear_velocity(frame);
         self.world
-            .set_body_linear_velocity(frame, (velocity + impulse / mass).to_array());
+            .set_body_linear_velocity(frame, velocity + impulse / mass);
     }
 
     /// Stands the bike up where it is, facing where it was heading, a little above the
@@ -236,7 +236,7 @@ impl Simulation {
     pub fn lift_upright(&mut self) {
         let up = self.up();
         let frame = self.bike.body(Part::Frame);
-        let here = DVec3::from_array(self.world.body_position(frame));
+        let here = self.world.body_position(frame);
         let forward = self.bike.frame_rotation(&self.world) * DVec3::X;
         let heading = (forward - up * forward.dot(up)).normalize_or(DVec3::X);
         let ground = here - up * here.dot(up) + up * self.lowest_wheel_height(up);
@@ -261,8 +261,8 @@ impl Simulation {
         [Part::RearWheel, Part::FrontWheel]
             .map(|p| {
                 let body = self.bike.body(p);
-                let centre = DVec3::from_array(self.world.body_position(body));
-                let axle = crate::bike::from_quat(self.world.body_quaternion(body)) * DVec3::Z;
+                let centre = self.world.body_position(body);
+                let axle = self.world.body_quaternion(body) * DVec3::Z;
                 let tilt = (1.0 - axle.dot(up).powi(2)).max(0.0).sqrt();
                 centre.dot(up) - ((r - crown) * tilt + crown)
             })
@@ -329,7 +329,7 @@ impl PeriodWatch for MasterWatch<'_> {
 }
 
 fn build_world(config: &SimulationConfig, terrain: &Terrain, spawn: &Placement) -> (World, Bike) {
-    let mut world = World::new(config.gravity.to_array());
+    let mut world = World::new(config.gravity);
     world.set_solver(config.physics.solver());
     // The bike first: its bodies and joints then have the same indices in every world,
     // whatever the terrain, so snapshots move between worlds and levels.

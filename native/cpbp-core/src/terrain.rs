@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 use glam::{DQuat, DVec3};
 
-use crate::bike::{to_quat, Placement};
+use crate::bike::Placement;
 use crate::ode::{HeightFieldData, TriMeshData, World};
 
 /// One collision shape of a level, in its own frame.
@@ -130,12 +130,10 @@ impl Terrain {
         for piece in &self.pieces {
             let geom = match &piece.shape {
                 ReadyShape::Simple(TerrainShape::Plane { normal, distance }) => {
-                    world.add_plane(normal.to_array(), *distance);
+                    world.add_plane(*normal, *distance);
                     continue;
                 }
-                ReadyShape::Simple(TerrainShape::Cuboid { size }) => {
-                    world.add_box(size.to_array(), None)
-                }
+                ReadyShape::Simple(TerrainShape::Cuboid { size }) => world.add_box(*size, None),
                 ReadyShape::Simple(TerrainShape::Sphere { radius }) => {
                     world.add_sphere(*radius, None)
                 }
@@ -159,8 +157,8 @@ impl Terrain {
             } else {
                 DQuat::IDENTITY
             };
-            world.set_geom_position(geom, piece.placement.position.to_array());
-            world.set_geom_quaternion(geom, to_quat(piece.placement.rotation * local));
+            world.set_geom_position(geom, piece.placement.position);
+            world.set_geom_quaternion(geom, piece.placement.rotation * local);
         }
     }
 }

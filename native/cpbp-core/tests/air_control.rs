@@ -8,6 +8,7 @@ mod common;
 
 use cpbp_core::bike::{Part, RiderPosition};
 use cpbp_core::ride::{ControllerKind, Intent};
+use glam::DVec3;
 
 /// The frame's pitch (degrees, nose up) 0.67 s into a jump: the bike thrown level at
 /// 8 m/s from 3 m up, wheels turning with the ground speed, the rider's weight at
@@ -19,12 +20,12 @@ fn pitch_after_a_jump(kind: ControllerKind, forward: f64) -> f64 {
     for part in Part::ALL {
         let body = bike.body(part);
         sim.world_mut()
-            .set_body_linear_velocity(body, [speed, 0.0, 0.0]);
+            .set_body_linear_velocity(body, DVec3::new(speed, 0.0, 0.0));
     }
     let spin = -speed / bike.params().wheel_radius;
     for wheel in [Part::RearWheel, Part::FrontWheel] {
         sim.world_mut()
-            .set_body_angular_velocity(bike.body(wheel), [0.0, 0.0, spin]);
+            .set_body_angular_velocity(bike.body(wheel), DVec3::new(0.0, 0.0, spin));
     }
     let mut ride = common::planned_ride(sim, kind);
     ride.set_intent(Intent {

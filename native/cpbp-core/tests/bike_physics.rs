@@ -9,8 +9,8 @@ const UP: DVec3 = DVec3::Y;
 const POSE_GAIN: f64 = 5.0;
 
 fn flat_world(placement: Placement) -> (World, Bike) {
-    let mut world = World::new([0.0, -9.81, 0.0]);
-    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
+    world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
     let bike = Bike::build(&mut world, &BikeParams::default(), &placement);
     (world, bike)
 }
@@ -18,11 +18,11 @@ fn flat_world(placement: Placement) -> (World, Bike) {
 /// Sets every body moving forward at `speed` with the wheels rolling to match.
 fn launch(world: &mut World, bike: &Bike, speed: f64) {
     for part in Part::ALL {
-        world.set_body_linear_velocity(bike.body(part), [speed, 0.0, 0.0]);
+        world.set_body_linear_velocity(bike.body(part), DVec3::new(speed, 0.0, 0.0));
     }
     let spin = -speed / bike.params().wheel_radius;
     for wheel in [Part::RearWheel, Part::FrontWheel] {
-        world.set_body_angular_velocity(bike.body(wheel), [0.0, 0.0, spin]);
+        world.set_body_angular_velocity(bike.body(wheel), DVec3::new(0.0, 0.0, spin));
     }
 }
 
@@ -52,8 +52,8 @@ fn the_model_weighs_a_light_motorcycle_and_an_adult() {
 fn placed_upright_at_rest_it_settles_without_jitter_or_drift() {
     // Without the rider's feet, which would let it settle onto one (`tests/feet.rs`):
     // balanced on its wheels alone it must stay exactly upright.
-    let mut world = World::new([0.0, -9.81, 0.0]);
-    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
+    world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
     let params = BikeParams {
         feet: None,
         ..BikeParams::default()
@@ -120,7 +120,7 @@ fn free_rolling_on_flat_ground_only_slows() {
 fn the_built_front_wheel_sits_behind_the_steering_axis_on_the_ground() {
     let (world, bike) = flat_world(Placement::IDENTITY);
     let layout = Layout::new(bike.params());
-    let front = DVec3::from_array(world.body_position(bike.body(Part::FrontWheel)));
+    let front = world.body_position(bike.body(Part::FrontWheel));
     let axis_on_ground =
         layout.steer_anchor - layout.steer_axis * (layout.steer_anchor.y / layout.steer_axis.y);
     let trail = axis_on_ground.x - front.x;
@@ -192,7 +192,7 @@ fn a_placement_turns_and_moves_the_whole_bike() {
     }
     assert_eq!(bike.wheel_contacts(&world), (true, true));
     bike.reset(&mut world, &Placement::IDENTITY);
-    let rear = DVec3::from_array(world.body_position(bike.body(Part::RearWheel)));
+    let rear = world.body_position(bike.body(Part::RearWheel));
     assert!(
         (rear - DVec3::new(-0.695, 0.30, 0.0)).length() < 1e-9,
         "rear wheel at {rear}"
@@ -206,8 +206,8 @@ fn the_measured_lean_rate_is_the_derivative_of_the_lean() {
     let yaw = DQuat::from_rotation_y(0.4);
     let leaning = DQuat::from_axis_angle(yaw * DVec3::X, 5f64.to_radians()) * yaw;
     // Without feet: a foot props the bike at a few degrees (`Feet`).
-    let mut world = World::new([0.0, -9.81, 0.0]);
-    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
+    world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
     let params = BikeParams {
         feet: None,
         ..BikeParams::default()

@@ -2,12 +2,13 @@
 
 use cpbp_core::bike::{index, Bike, BikeParams, Controls, Part, Placement, CONTROL_DIM};
 use cpbp_core::ode::{World, WorldState};
+use glam::DVec3;
 
 const DT: f64 = 1.0 / 120.0;
 
 fn riding_bike() -> (World, Bike) {
-    let mut world = World::new([0.0, -9.81, 0.0]);
-    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
+    world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
     let bike = Bike::build(&mut world, &BikeParams::default(), &Placement::IDENTITY);
     (world, bike)
 }
@@ -114,12 +115,12 @@ fn an_exploding_world_is_detected() {
     let (mut world, bike) = riding_bike();
     world.step(DT);
     assert_eq!(bike.explosion(&world), None);
-    world.set_body_linear_velocity(bike.body(Part::Torso), [1e9, 0.0, 0.0]);
+    world.set_body_linear_velocity(bike.body(Part::Torso), DVec3::new(1e9, 0.0, 0.0));
     let report = bike
         .explosion(&world)
         .expect("an absurd speed is an explosion");
     assert!(report.contains("torso"), "{report}");
-    world.set_body_linear_velocity(bike.body(Part::Torso), [f64::NAN, 0.0, 0.0]);
+    world.set_body_linear_velocity(bike.body(Part::Torso), DVec3::new(f64::NAN, 0.0, 0.0));
     assert!(bike.explosion(&world).unwrap().contains("non-finite"));
     bike.reset(&mut world, &Placement::IDENTITY);
     assert_eq!(bike.explosion(&world), None, "a reset recovers");

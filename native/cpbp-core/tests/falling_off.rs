@@ -15,9 +15,8 @@ use glam::DVec3;
 fn relative(sim: &Simulation, part: Part, on: Part) -> DVec3 {
     let world = sim.world();
     let base = sim.bike().body(on);
-    let rotation = cpbp_core::bike::from_quat(world.body_quaternion(base));
-    let offset = DVec3::from_array(world.body_position(sim.bike().body(part)))
-        - DVec3::from_array(world.body_position(base));
+    let rotation = world.body_quaternion(base);
+    let offset = world.body_position(sim.bike().body(part)) - world.body_position(base);
     rotation.inverse() * offset
 }
 

@@ -8,8 +8,8 @@ use glam::DVec3;
 
 /// A 10 kg wheel of 0.30 m (a torus tyre or a plain sphere) rolling at `speed` into a
 /// 0.12 m kerb 1 m ahead; where it is after 2 s (x forward, y up).
-fn roll_into_a_kerb(speed: f64, tyre: bool) -> [f64; 3] {
-    let mut world = World::new([0.0, -9.81, 0.0]);
+fn roll_into_a_kerb(speed: f64, tyre: bool) -> DVec3 {
+    let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
     world.set_solver(Solver::Direct);
     let corners = [(1.0, 0.0), (1.0, 0.12), (5.0, 0.0), (5.0, 0.12)];
     let points = corners
@@ -22,7 +22,7 @@ fn roll_into_a_kerb(speed: f64, tyre: bool) -> [f64; 3] {
         placement: Placement::IDENTITY,
     };
     let ground = TerrainPiece::flat_ground();
-    let wheel = world.add_body(Mass::sphere(10.0, 0.3), [0.0, 0.3, 0.0]);
+    let wheel = world.add_body(Mass::sphere(10.0, 0.3), DVec3::new(0.0, 0.3, 0.0));
     if tyre {
         world.add_tyre(0.3, 0.06, wheel);
     } else {
@@ -31,8 +31,8 @@ fn roll_into_a_kerb(speed: f64, tyre: bool) -> [f64; 3] {
     Terrain::new(vec![kerb, ground])
         .expect("valid terrain")
         .add_to(&mut world);
-    world.set_body_linear_velocity(wheel, [speed, 0.0, 0.0]);
-    world.set_body_angular_velocity(wheel, [0.0, 0.0, -speed / 0.3]);
+    world.set_body_linear_velocity(wheel, DVec3::new(speed, 0.0, 0.0));
+    world.set_body_angular_velocity(wheel, DVec3::new(0.0, 0.0, -speed / 0.3));
     for _ in 0..240 {
         world.step(1.0 / 120.0);
     }

@@ -289,12 +289,12 @@ fn a_blown_up_world_is_recovered_at_the_spawn_point() {
     settle(&mut sim, 0.3);
     let torso = sim.bike().body(Part::Torso);
     sim.world_mut()
-        .set_body_linear_velocity(torso, [f64::NAN, 0.0, 0.0]);
+        .set_body_linear_velocity(torso, DVec3::new(f64::NAN, 0.0, 0.0));
     let events = sim.step();
     let reason = events.recovered_from.expect("the explosion is reported");
     assert!(reason.contains("non-finite"), "{reason}");
     let frame = sim.world().body_position(sim.bike().body(Part::Frame));
-    assert!((DVec3::from_array(frame) - DVec3::new(-0.05, 0.55, 0.0)).length() < 1e-9);
+    assert!((frame - DVec3::new(-0.05, 0.55, 0.0)).length() < 1e-9);
     assert!(sim.bike().explosion(sim.world()).is_none());
 }
 
@@ -311,7 +311,7 @@ fn lifting_stands_a_fallen_bike_up_where_it_lies() {
     let mut sim = Simulation::new(config, flat(), spawn_at(0.0));
     let frame = sim.bike().body(Part::Frame);
     sim.world_mut()
-        .set_body_angular_velocity(frame, [3.0, 0.0, 0.0]); // tip it over
+        .set_body_angular_velocity(frame, DVec3::new(3.0, 0.0, 0.0)); // tip it over
     for _ in 0..60 {
         sim.step();
     }
@@ -319,7 +319,7 @@ fn lifting_stands_a_fallen_bike_up_where_it_lies() {
         sim.crashed().is_some(),
         "the push should have knocked it over"
     );
-    let lying_at = DVec3::from_array(sim.world().body_position(frame));
+    let lying_at = sim.world().body_position(frame);
     sim.lift_upright();
     assert_eq!(sim.crashed(), None);
     assert!(
@@ -330,7 +330,7 @@ fn lifting_stands_a_fallen_bike_up_where_it_lies() {
     // once (about 1–2° by 0.3 s, depending on the random sequence): check it soon, with
     // room for that, before it topples again.
     settle(&mut sim, 0.3);
-    let standing_at = DVec3::from_array(sim.world().body_position(frame));
+    let standing_at = sim.world().body_position(frame);
     assert!((standing_at.x - lying_at.x).abs() < 0.6 && (standing_at.z - lying_at.z).abs() < 0.6);
     let lean = sim.bike().lean(sim.world(), DVec3::Y);
     assert!(lean.abs() < 0.05, "lean {lean} rad 0.3 s after the lift");

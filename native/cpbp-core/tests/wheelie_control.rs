@@ -166,7 +166,7 @@ fn ride_at_a_platform(kind: ControllerKind, wheelie: bool) -> DVec3 {
     ride.set_intent(Intent::cruise(10.0));
     let centre = |ride: &Ride, part| {
         let sim = ride.sim();
-        DVec3::from_array(sim.world().body_position(sim.bike().body(part)))
+        sim.world().body_position(sim.bike().body(part))
     };
     for _ in 0..(3.5 * common::FRAMES_PER_SECOND as f64) as usize {
         let front = centre(&ride, Part::FrontWheel).x;

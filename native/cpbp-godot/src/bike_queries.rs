@@ -1,14 +1,17 @@
 //! `BikeSimulation`'s read-only side for GDScript: the controller registry, the plans and
 //! hand-over statistics, the ride's state, and the bodies and shapes the views draw.
 
-use cpbp_core::bike::{from_quat, Part, Shape};
+use cpbp_core::bike::Part;
 use cpbp_core::ride::{ControllerKind, Ride};
 use cpbp_core::simulation::Simulation;
 use glam::{DQuat, DVec3};
 use godot::prelude::*;
 
+use crate::bike_foot::BikeFoot;
+use crate::bike_shape::BikeShape;
 use crate::bike_simulation::BikeSimulation;
-use crate::convert::{basis, transform, vector3};
+use crate::convert::{transform, vector3};
+use crate::plan_handover::PlanHandover;
 use crate::{controller_choice, physics_choice};
 
 #[godot_api(secondary)]
@@ -128,32 +131,12 @@ impl BikeSimulation {
         self.current_plan().map_or(0, |p| p.resamples as i64)
     }
 
-    /// Hand-over statistics of the planning thread: `last_wait_ms`, `mean_wait_ms`,
-    /// `max_wait_ms` (the game thread's waits at control-step boundaries), `boundaries`
-    /// and `late` (boundaries with no plan for their step).
+    /// How the planning thread's plans reached the control steps since the ride was last
+    /// placed (all zero for a controller that does not plan).
     #[func]
-    fn get_handover_stats(&self) -> Dictionary<Variant, Variant> {
-        let mut d: Dictionary<Variant, Variant> = Dictionary::new();
-        let stats = self
-            .ride
-            .as_ref()
-            .and_then(Ride::handover)
-            .unwrap_or_default();
-        d.set(
-            &"last_wait_ms".to_variant(),
-            &stats.last_wait_ms.to_variant(),
-        );
-        d.set(
-            &"mean_wait_ms".to_variant(),
-            &stats.mean_wait_ms().to_variant(),
-        );
-        d.set(&"max_wait_ms".to_variant(), &stats.max_wait_ms.to_variant());
-        d.set(
-            &"boundaries".to_variant(),
-            &(stats.boundaries as i64).to_variant(),
-        );
-        d.set(&"late".to_variant(), &(stats.late as i64).to_variant());
-        d
+    fn get_handover_stats(&self) -> Gd<PlanHandover> {
+        let stats = self.ride.as_ref().and_then(Ride::handover);
+        PlanHandover::of(&stats.unwrap_or_default())
     }
 
     /// The last plan's trajectories as centre-of-mass paths (one point per planning
@@ -237,25 +220,16 @@ impl BikeSimulation {
             .is_some_and(|s| s.bike().wheel_contacts(s.world()).1)
     }
 
-    /// The rider's feet, left then right (none on the classic physics' rigid bike): one
-    /// Dictionary each with `down` (put down: below walking pace, throttle closed),
-    /// `on_ground` (stood on the ground in the last step) and `on_frame` (the sole's
-    /// centre in the frame body's frame, for `get_body_transform(FRAME) * on_frame`).
+    /// The rider's feet, left then right (none on the classic physics' rigid bike).
     #[func]
-    fn get_feet(&self) -> Array<Dictionary<Variant, Variant>> {
+    fn get_feet(&self) -> Array<Gd<BikeFoot>> {
         let Some(sim) = self.sim() else {
             return Array::new();
         };
         sim.bike()
             .feet(sim.world())
             .iter()
-            .map(|foot| {
-                let mut d = Dictionary::new();
-                d.set("down", foot.down);
-                d.set("on_ground", foot.on_ground);
-                d.set("on_frame", vector3(foot.on_frame));
-                d
-            })
+            .map(BikeFoot::of)
             .collect()
     }
 
@@ -278,6 +252,12 @@ impl BikeSimulation {
         self.sim().map_or(Vector3::ZERO, |s| {
             vector3(s.bike().center_of_mass(s.world()))
         })
+    }
+
+    /// Radius of the wheels, tyre included (m): the drawing sizes its wheels by it.
+    #[func]
+    fn get_wheel_radius(&self) -> f64 {
+        self.sim().map_or(0.0, |s| s.config().bike.wheel_radius)
     }
 
     /// Number of rigid bodies of the bike and rider (`Part::ALL`).
@@ -328,38 +308,12 @@ impl BikeSimulation {
             .collect()
     }
 
-    /// The collision shapes, for drawing the physical model: one Dictionary per shape with
-    /// `body` (index), `kind` ("sphere", "box", "capsule"), `radius`, `length` (capsule,
-    /// without caps, along local z), `size` (box) and `offset` (Transform3D in the body).
+    /// The collision shapes of every body, for drawing the physical model.
     #[func]
-    fn get_shapes(&self) -> Array<Dictionary<Variant, Variant>> {
-        let mut shapes = Array::new();
-        let Some(sim) = self.sim() else { return shapes };
-        for s in sim.bike().shapes() {
-            let mut d: Dictionary<Variant, Variant> = Dictionary::new();
-            d.set(&"body".to_variant(), &(s.part as i64).to_variant());
-            d.set(
-                &"offset".to_variant(),
-                &Transform3D::new(basis(s.rotation), vector3(s.offset)).to_variant(),
-            );
-            match s.shape {
-                Shape::Sphere { radius } => {
-                    d.set(&"kind".to_variant(), &"sphere".to_variant());
-                    d.set(&"radius".to_variant(), &radius.to_variant());
-                }
-                Shape::Cuboid { size } => {
-                    d.set(&"kind".to_variant(), &"box".to_variant());
-                    d.set(&"size".to_variant(), &vector3(size).to_variant());
-                }
-                Shape::Capsule { radius, length } => {
-                    d.set(&"kind".to_variant(), &"capsule".to_variant());
-                    d.set(&"radius".to_variant(), &radius.to_variant());
-                    d.set(&"length".to_variant(), &length.to_variant());
-                }
-            }
-            shapes.push(&d);
-        }
-        shapes
+    fn get_shapes(&self) -> Array<Gd<BikeShape>> {
+        self.sim().map_or_else(Array::new, |sim| {
+            sim.bike().shapes().iter().map(BikeShape::of).collect()
+        })
     }
 }
 
@@ -373,7 +327,7 @@ fn part(index: i64) -> Option<Part> {
 pub(crate) fn pose_of(sim: &Simulation, part: Part) -> (DVec3, DQuat) {
     let body = sim.bike().body(part);
     (
-        DVec3::from_array(sim.world().body_position(body)),
-        from_quat(sim.world().body_quaternion(body)),
+        sim.world().body_position(body),
+        sim.world().body_quaternion(body),
     )
 }

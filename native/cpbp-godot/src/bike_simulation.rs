@@ -14,6 +14,7 @@ use glam::{DQuat, DVec3};
 use godot::classes::{INode3D, Node3D};
 use godot::prelude::*;
 
+use crate::bike_description::{params_of, BikeDescription};
 use crate::bike_queries::pose_of;
 use crate::controller_choice::ControllerChoice;
 use crate::convert::placement;
@@ -40,6 +41,11 @@ pub struct BikeSimulation {
     #[export(range = (limits::MOTOR_FORCE.min, limits::MOTOR_FORCE.max, 0.05))]
     #[init(val = 1.0)]
     motor_force: f64,
+    /// The bike, as data (bikes/*.tres); none rides the reference bike. Read when the
+    /// ride is built (`_ready`); a description that cannot be built is an error and no
+    /// ride is built.
+    #[export]
+    bike: Option<Gd<BikeDescription>>,
     /// ODE steps per control step (more: stiffer joints, slower).
     #[export(range = (limits::SUBSTEPS.min, limits::SUBSTEPS.max))]
     #[init(val = SimulationConfig::default().substeps as i32)]
@@ -145,9 +151,14 @@ impl INode3D for BikeSimulation {
         let Some(terrain) = self.import_terrain() else {
             return;
         };
+        let bike = match params_of(self.bike.as_ref()) {
+            Ok(bike) => bike,
+            Err(why) => return godot_error!("BikeSimulation: {why}"),
+        };
         let config = SimulationConfig {
             substeps: limits::SUBSTEPS.clamp_count(self.substeps.into()),
             physics: self.physics.into(),
+            bike,
             ..SimulationConfig::default()
         };
         let mut ride = Ride::new(

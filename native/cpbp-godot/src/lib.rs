@@ -1,9 +1,12 @@
 //! Counter-Steer's GDExtension entry point: the Godot classes that wrap `cpbp-core`.
 
+mod bike_description;
 mod bike_events;
+mod bike_foot;
 mod bike_queries;
 mod bike_rider;
 mod bike_settings;
+mod bike_shape;
 mod bike_simulation;
 mod bike_synth;
 mod controller_choice;
@@ -11,6 +14,7 @@ mod convert;
 mod native_info;
 mod ode_world;
 mod physics_choice;
+mod plan_handover;
 mod terrain_check;
 mod terrain_import;
 

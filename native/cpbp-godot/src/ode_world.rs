@@ -1,7 +1,10 @@
 //! `OdeWorld`: a bare ODE world for tools and tests (spheres, planes, stepping).
 
 use cpbp_core::ode::{BodyId, Mass, World};
+use glam::DVec3;
 use godot::prelude::*;
+
+use crate::convert::{dvec3, vector3};
 
 /// A bare ODE world: drop spheres onto planes and step it. The bike simulation has its own
 /// node; this class is for tests, experiments and checking the native module works.
@@ -16,7 +19,7 @@ pub struct OdeWorld {
 impl IRefCounted for OdeWorld {
     fn init(base: Base<RefCounted>) -> Self {
         Self {
-            world: World::new([0.0, -9.81, 0.0]),
+            world: World::new(DVec3::new(0.0, -9.81, 0.0)),
             base,
         }
     }
@@ -31,7 +34,7 @@ impl OdeWorld {
             godot_error!("OdeWorld.set_gravity: gravity must be finite, got {gravity}");
             return;
         }
-        self.world.set_gravity(to_ode(gravity));
+        self.world.set_gravity(dvec3(gravity));
     }
 
     /// Adds a static horizontal ground plane at the given height.
@@ -41,7 +44,7 @@ impl OdeWorld {
             godot_error!("OdeWorld.add_ground_plane: height must be finite, got {height}");
             return;
         }
-        self.world.add_plane([0.0, 1.0, 0.0], height);
+        self.world.add_plane(DVec3::new(0.0, 1.0, 0.0), height);
     }
 
     /// Adds a solid sphere body that collides; returns its id, or -1 on invalid input.
@@ -57,7 +60,7 @@ impl OdeWorld {
         }
         let body = self
             .world
-            .add_body(Mass::sphere(mass, radius), to_ode(position));
+            .add_body(Mass::sphere(mass, radius), dvec3(position));
         self.world.add_sphere(radius, Some(body));
         body.0 as i64
     }
@@ -82,7 +85,7 @@ impl OdeWorld {
     #[func]
     fn body_position(&self, body: i64) -> Vector3 {
         self.body(body)
-            .map(|id| from_ode(self.world.body_position(id)))
+            .map(|id| vector3(self.world.body_position(id)))
             .unwrap_or(Vector3::ZERO)
     }
 
@@ -90,7 +93,7 @@ impl OdeWorld {
     #[func]
     fn body_linear_velocity(&self, body: i64) -> Vector3 {
         self.body(body)
-            .map(|id| from_ode(self.world.body_linear_velocity(id)))
+            .map(|id| vector3(self.world.body_linear_velocity(id)))
             .unwrap_or(Vector3::ZERO)
     }
 }
@@ -107,12 +110,4 @@ impl OdeWorld {
             None
         }
     }
-}
-
-fn to_ode(v: Vector3) -> [f64; 3] {
-    [f64::from(v.x), f64::from(v.y), f64::from(v.z)]
-}
-
-fn from_ode(v: [f64; 3]) -> Vector3 {
-    Vector3::new(v[0] as f32, v[1] as f32, v[2] as f32)
 }

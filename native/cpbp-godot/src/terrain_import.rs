@@ -89,84 +89,78 @@ fn convert(node: &Gd<CollisionShape3D>) -> Result<TerrainPiece, String> {
             ))
         }
     };
-    let shape = match shape.get_class().to_string().as_str() {
-        "BoxShape3D" => placed(TerrainShape::Cuboid {
-            size: dvec3(cast::<BoxShape3D>(shape).get_size()) * scale,
-        }),
-        "SphereShape3D" => {
-            uniform("sphere", scale.x, scale.y)?;
-            uniform("sphere", scale.x, scale.z)?;
-            let radius = f64::from(cast::<SphereShape3D>(shape).get_radius()) * scale.x;
-            placed(TerrainShape::Sphere { radius })
-        }
-        "CapsuleShape3D" => {
-            uniform("capsule", scale.x, scale.z)?;
-            let capsule = cast::<CapsuleShape3D>(shape);
-            let radius = f64::from(capsule.get_radius()) * scale.x;
-            let height = (f64::from(capsule.get_height()) * scale.y).max(2.0 * radius);
-            placed(TerrainShape::Capsule { radius, height })
-        }
-        "CylinderShape3D" => {
-            uniform("cylinder", scale.x, scale.z)?;
-            let cylinder = cast::<CylinderShape3D>(shape);
-            let radius = f64::from(cylinder.get_radius()) * scale.x;
-            placed(TerrainShape::Cylinder {
-                radius,
-                height: f64::from(cylinder.get_height()) * scale.y,
+    // By class, not by class name, so a script's subclass of a shape imports as its base.
+    let piece = if let Some(cuboid) = as_a::<BoxShape3D>(&shape) {
+        placed(TerrainShape::Cuboid {
+            size: dvec3(cuboid.get_size()) * scale,
+        })
+    } else if let Some(sphere) = as_a::<SphereShape3D>(&shape) {
+        uniform("sphere", scale.x, scale.y)?;
+        uniform("sphere", scale.x, scale.z)?;
+        let radius = f64::from(sphere.get_radius()) * scale.x;
+        placed(TerrainShape::Sphere { radius })
+    } else if let Some(capsule) = as_a::<CapsuleShape3D>(&shape) {
+        uniform("capsule", scale.x, scale.z)?;
+        let radius = f64::from(capsule.get_radius()) * scale.x;
+        let height = (f64::from(capsule.get_height()) * scale.y).max(2.0 * radius);
+        placed(TerrainShape::Capsule { radius, height })
+    } else if let Some(cylinder) = as_a::<CylinderShape3D>(&shape) {
+        uniform("cylinder", scale.x, scale.z)?;
+        let radius = f64::from(cylinder.get_radius()) * scale.x;
+        placed(TerrainShape::Cylinder {
+            radius,
+            height: f64::from(cylinder.get_height()) * scale.y,
+        })
+    } else if let Some(boundary) = as_a::<WorldBoundaryShape3D>(&shape) {
+        let plane = boundary.get_plane();
+        let local_normal = dvec3(plane.normal);
+        let point = to_world(plane.normal * plane.d);
+        let normal = (rotation * (local_normal / scale)).normalize_or_zero();
+        in_world(TerrainShape::Plane {
+            normal,
+            distance: normal.dot(point),
+        })
+    } else if let Some(map) = as_a::<HeightMapShape3D>(&shape) {
+        let heights = map
+            .get_map_data()
+            .as_slice()
+            .iter()
+            .map(|h| f64::from(*h) * scale.y)
+            .collect();
+        placed(TerrainShape::HeightMap {
+            width: map.get_map_width().max(0) as usize,
+            depth: map.get_map_depth().max(0) as usize,
+            heights,
+            spacing: [scale.x, scale.z],
+        })
+    } else if let Some(mesh) = as_a::<ConcavePolygonShape3D>(&shape) {
+        // Godot's front faces wind clockwise, ODE's counter-clockwise.
+        let vertices = mesh
+            .get_faces()
+            .as_slice()
+            .chunks(3)
+            .flat_map(|t| match t {
+                [a, b, c] => vec![to_world(*a), to_world(*c), to_world(*b)],
+                partial => partial.iter().map(|v| to_world(*v)).collect(),
             })
-        }
-        "WorldBoundaryShape3D" => {
-            let plane = cast::<WorldBoundaryShape3D>(shape).get_plane();
-            let local_normal = dvec3(plane.normal);
-            let point = to_world(plane.normal * plane.d);
-            let normal = (rotation * (local_normal / scale)).normalize_or_zero();
-            in_world(TerrainShape::Plane {
-                normal,
-                distance: normal.dot(point),
-            })
-        }
-        "HeightMapShape3D" => {
-            let map = cast::<HeightMapShape3D>(shape);
-            let heights = map
-                .get_map_data()
-                .as_slice()
-                .iter()
-                .map(|h| f64::from(*h) * scale.y)
-                .collect();
-            placed(TerrainShape::HeightMap {
-                width: map.get_map_width().max(0) as usize,
-                depth: map.get_map_depth().max(0) as usize,
-                heights,
-                spacing: [scale.x, scale.z],
-            })
-        }
-        "ConcavePolygonShape3D" => {
-            let faces = cast::<ConcavePolygonShape3D>(shape).get_faces();
-            // Godot's front faces wind clockwise, ODE's counter-clockwise.
-            let vertices = faces
-                .as_slice()
-                .chunks(3)
-                .flat_map(|t| match t {
-                    [a, b, c] => vec![to_world(*a), to_world(*c), to_world(*b)],
-                    partial => partial.iter().map(|v| to_world(*v)).collect(),
-                })
-                .collect();
-            in_world(TerrainShape::TriMesh { vertices })
-        }
-        "ConvexPolygonShape3D" => {
-            let points = cast::<ConvexPolygonShape3D>(shape)
-                .get_points()
-                .as_slice()
-                .iter()
-                .map(|p| to_world(*p))
-                .collect();
-            in_world(TerrainShape::Convex { points })
-        }
-        other => return Err(format!("{other} is not supported by the bike simulation")),
+            .collect();
+        in_world(TerrainShape::TriMesh { vertices })
+    } else if let Some(hull) = as_a::<ConvexPolygonShape3D>(&shape) {
+        let points = hull
+            .get_points()
+            .as_slice()
+            .iter()
+            .map(|p| to_world(*p))
+            .collect();
+        in_world(TerrainShape::Convex { points })
+    } else {
+        let class = shape.get_class();
+        return Err(format!("{class} is not supported by the bike simulation"));
     };
-    Ok(shape)
+    Ok(piece)
 }
 
-fn cast<T: GodotClass + Inherits<Shape3D>>(shape: Gd<Shape3D>) -> Gd<T> {
-    shape.cast::<T>()
+/// `shape` as a `T`, if it is one.
+fn as_a<T: GodotClass + Inherits<Shape3D>>(shape: &Gd<Shape3D>) -> Option<Gd<T>> {
+    shape.clone().try_cast::<T>().ok()
 }

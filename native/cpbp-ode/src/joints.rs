@@ -3,7 +3,7 @@
 
 use crate::ffi;
 use crate::world::{BodyId, World};
-use crate::Vec3;
+use crate::DVec3;
 
 /// Index of a joint inside its [`World`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -46,7 +46,7 @@ impl JointKind {
 
 impl World {
     /// A ball-and-socket joint at a world-frame anchor; `b = None` attaches to the world.
-    pub fn add_ball(&mut self, a: BodyId, b: Option<BodyId>, anchor: Vec3) -> JointId {
+    pub fn add_ball(&mut self, a: BodyId, b: Option<BodyId>, anchor: DVec3) -> JointId {
         // SAFETY: the world and bodies are alive; the joint is owned by the world.
         let joint = unsafe {
             let joint = ffi::dJointCreateBall(self.world, std::ptr::null_mut());
@@ -58,7 +58,13 @@ impl World {
     }
 
     /// A hinge at a world-frame anchor about a world-frame axis; its angle is 0 as built.
-    pub fn add_hinge(&mut self, a: BodyId, b: Option<BodyId>, anchor: Vec3, axis: Vec3) -> JointId {
+    pub fn add_hinge(
+        &mut self,
+        a: BodyId,
+        b: Option<BodyId>,
+        anchor: DVec3,
+        axis: DVec3,
+    ) -> JointId {
         // SAFETY: as for add_ball.
         let joint = unsafe {
             let joint = ffi::dJointCreateHinge(self.world, std::ptr::null_mut());
@@ -72,7 +78,7 @@ impl World {
 
     /// A slider (prismatic joint) along a world-frame axis; its position is 0 as built and
     /// grows as `a` moves along the axis relative to `b`.
-    pub fn add_slider(&mut self, a: BodyId, b: Option<BodyId>, axis: Vec3) -> JointId {
+    pub fn add_slider(&mut self, a: BodyId, b: Option<BodyId>, axis: DVec3) -> JointId {
         // SAFETY: as for add_ball.
         let joint = unsafe {
             let joint = ffi::dJointCreateSlider(self.world, std::ptr::null_mut());
@@ -86,7 +92,7 @@ impl World {
     /// An Euler-mode angular motor between two bodies (for a ball joint): axis 0 is fixed
     /// to `a`, axis 2 to `b`, both given in world frame and perpendicular; ODE derives
     /// axis 1 and the three angles every step (so they need no saving in snapshots).
-    pub fn add_euler_motor(&mut self, a: BodyId, b: BodyId, axis0: Vec3, axis2: Vec3) -> JointId {
+    pub fn add_euler_motor(&mut self, a: BodyId, b: BodyId, axis0: DVec3, axis2: DVec3) -> JointId {
         // SAFETY: as for add_ball.
         let joint = unsafe {
             let joint = ffi::dJointCreateAMotor(self.world, std::ptr::null_mut());

@@ -26,7 +26,16 @@ pub use springs::Spring;
 pub use state::{BodyState, StateMismatch, WorldState};
 pub use world::{BodyId, GeomId, Gyroscopic, Solver, World};
 
-/// Three-component vector as ODE uses it (double precision).
+/// The API's vectors and rotations are glam's; ODE's own numbers appear only in snapshots
+/// ([`BodyState`]), as ODE keeps them.
+pub use glam::{DQuat, DVec3};
+
+/// Three components as ODE keeps them (double precision), in snapshots.
 pub type Vec3 = [f64; 3];
-/// Quaternion in ODE's order: w, x, y, z.
+/// A quaternion in ODE's order (w, x, y, z), in snapshots.
 pub type Quat = [f64; 4];
+
+/// glam's quaternion (x, y, z, w) in ODE's order.
+pub(crate) fn ode_quat(q: DQuat) -> Quat {
+    [q.w, q.x, q.y, q.z]
+}

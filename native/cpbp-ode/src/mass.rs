@@ -1,6 +1,6 @@
 //! Mass properties of a rigid body, as ODE computes them for solid shapes.
 
-use crate::{ffi, Vec3};
+use crate::{ffi, DVec3};
 
 /// Mass properties of a rigid body, in the body's own frame.
 #[derive(Clone, Copy, Debug)]
@@ -18,7 +18,7 @@ impl Mass {
     }
 
     /// A solid box of the given total mass (kg) and full side lengths (m).
-    pub fn cuboid(total: f64, size: Vec3) -> Self {
+    pub fn cuboid(total: f64, size: DVec3) -> Self {
         let mut raw = ffi::dMass::default();
         // SAFETY: `raw` is a valid, exclusively borrowed dMass.
         unsafe { ffi::dMassSetBoxTotal(&mut raw, total, size[0], size[1], size[2]) };

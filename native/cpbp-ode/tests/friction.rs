@@ -5,7 +5,7 @@
 //! without friction (the static load); for tyres, ODE patch 04 solves again with the
 //! loaded ones.
 
-use cpbp_ode::{Mass, Solver, SurfaceParams, World};
+use cpbp_ode::{DQuat, DVec3, Mass, Solver, SurfaceParams, World};
 
 const G: f64 = 9.81;
 const MU: f64 = 1.0;
@@ -20,31 +20,34 @@ const SKID_RADIUS: f64 = 0.05;
 
 /// The cart's deceleration (m/s²) from 5 m/s, measured over 0.3 s.
 fn skid_deceleration(solver: Solver) -> f64 {
-    let mut world = World::new([0.0, -G, 0.0]);
+    let mut world = World::new(DVec3::new(0.0, -G, 0.0));
     world.set_solver(solver);
     world.set_surface(SurfaceParams {
         mu: MU,
         ..SurfaceParams::default()
     });
-    world.add_plane([0.0, 1.0, 0.0], 0.0);
-    let cart = world.add_body(Mass::cuboid(CART_MASS, [1.4, 0.2, 0.3]), [0.0, HEIGHT, 0.0]);
+    world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
+    let cart = world.add_body(
+        Mass::cuboid(CART_MASS, DVec3::new(1.4, 0.2, 0.3)),
+        DVec3::new(0.0, HEIGHT, 0.0),
+    );
     // Both contacts are tyres (a skid of round section is a tyre whose crown is its
     // radius): only tyres ask for the loaded bound.
     let skid = world.add_tyre(SKID_RADIUS, SKID_RADIUS, cart);
     world.set_geom_offset(
         skid,
-        [-REAR, SKID_RADIUS - HEIGHT, 0.0],
-        [1.0, 0.0, 0.0, 0.0],
+        DVec3::new(-REAR, SKID_RADIUS - HEIGHT, 0.0),
+        DQuat::IDENTITY,
     );
     // A light wheel, so the cart's mass and centre are the cart body's.
-    let axle = [FRONT, WHEEL_RADIUS, 0.0];
+    let axle = DVec3::new(FRONT, WHEEL_RADIUS, 0.0);
     let wheel = world.add_body(Mass::sphere(0.01, WHEEL_RADIUS), axle);
     world.add_tyre(WHEEL_RADIUS, 0.06, wheel);
-    world.add_hinge(cart, Some(wheel), axle, [0.0, 0.0, 1.0]);
+    world.add_hinge(cart, Some(wheel), axle, DVec3::new(0.0, 0.0, 1.0));
     let v0 = 5.0;
-    world.set_body_linear_velocity(cart, [v0, 0.0, 0.0]);
-    world.set_body_linear_velocity(wheel, [v0, 0.0, 0.0]);
-    world.set_body_angular_velocity(wheel, [0.0, 0.0, -v0 / WHEEL_RADIUS]);
+    world.set_body_linear_velocity(cart, DVec3::new(v0, 0.0, 0.0));
+    world.set_body_linear_velocity(wheel, DVec3::new(v0, 0.0, 0.0));
+    world.set_body_angular_velocity(wheel, DVec3::new(0.0, 0.0, -v0 / WHEEL_RADIUS));
     let (dt, seconds) = (1.0 / 120.0, 0.3);
     for _ in 0..(seconds / dt) as usize {
         world.step(dt);

@@ -2,26 +2,26 @@
 //! original world does, bit for bit, and a world must step the same whatever else its
 //! thread steps (each world carries its own QuickStep random sequence).
 
-use cpbp_ode::{Mass, World, WorldState};
+use cpbp_ode::{DVec3, Mass, World, WorldState};
 
 const DT: f64 = 1.0 / 120.0;
 
 /// A small pile of boxes and spheres tumbling onto a plane and into each other: many
 /// contacts, so QuickStep's constraint reordering and the collision order both matter.
 fn tumbling_pile() -> World {
-    let mut world = World::new([0.0, -9.81, 0.0]);
-    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
+    world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
     for i in 0..4 {
         let x = i as f64 * 0.35;
         let cube = world.add_body(
-            Mass::cuboid(3.0, [0.4, 0.4, 0.4]),
-            [x, 0.5 + 0.45 * i as f64, 0.1 * i as f64],
+            Mass::cuboid(3.0, DVec3::new(0.4, 0.4, 0.4)),
+            DVec3::new(x, 0.5 + 0.45 * i as f64, 0.1 * i as f64),
         );
-        world.add_box([0.4, 0.4, 0.4], Some(cube));
-        world.set_body_linear_velocity(cube, [0.5 - 0.3 * i as f64, 0.0, 0.2]);
+        world.add_box(DVec3::new(0.4, 0.4, 0.4), Some(cube));
+        world.set_body_linear_velocity(cube, DVec3::new(0.5 - 0.3 * i as f64, 0.0, 0.2));
         let ball = world.add_body(
             Mass::sphere(1.5, 0.2),
-            [x + 0.1, 1.2 + 0.4 * i as f64, -0.15],
+            DVec3::new(x + 0.1, 1.2 + 0.4 * i as f64, -0.15),
         );
         world.add_sphere(0.2, Some(ball));
     }
@@ -91,8 +91,8 @@ fn rollouts_on_several_threads_match_the_single_threaded_result() {
 
 #[test]
 fn a_snapshot_of_another_shape_is_refused() {
-    let mut small = World::new([0.0, -9.81, 0.0]);
-    small.add_body(Mass::sphere(1.0, 0.1), [0.0, 1.0, 0.0]);
+    let mut small = World::new(DVec3::new(0.0, -9.81, 0.0));
+    small.add_body(Mass::sphere(1.0, 0.1), DVec3::new(0.0, 1.0, 0.0));
     let error = small.restore(&tumbling_pile().snapshot()).unwrap_err();
     assert_eq!(error.expected_bodies, 1);
     assert_eq!(error.found_bodies, 8);

@@ -2,7 +2,7 @@
 //! its weight, rings at the spring's frequency with the damper's overshoot, stays stable
 //! at long steps, stops hard at the ends of its travel, and a hinge spring works alike.
 
-use cpbp_ode::{Mass, Solver, Spring, World};
+use cpbp_ode::{DVec3, Mass, Solver, Spring, World};
 
 const G: f64 = 9.81;
 /// A motorcycle corner: 100 kg on 18 N/mm, damped at 0.4 of critical (ω = 13.4 rad/s).
@@ -20,10 +20,13 @@ fn sprung_block(
     solver: Solver,
     travel: (f64, f64),
 ) -> (World, cpbp_ode::BodyId, cpbp_ode::JointId) {
-    let mut world = World::new([0.0, -G, 0.0]);
+    let mut world = World::new(DVec3::new(0.0, -G, 0.0));
     world.set_solver(solver);
-    let block = world.add_body(Mass::cuboid(MASS, [0.3, 0.3, 0.3]), [0.0, 1.0, 0.0]);
-    let slider = world.add_slider(block, None, [0.0, 1.0, 0.0]);
+    let block = world.add_body(
+        Mass::cuboid(MASS, DVec3::new(0.3, 0.3, 0.3)),
+        DVec3::new(0.0, 1.0, 0.0),
+    );
+    let slider = world.add_slider(block, None, DVec3::new(0.0, 1.0, 0.0));
     world.set_spring(
         slider,
         Spring {
@@ -112,7 +115,7 @@ fn the_ends_of_travel_are_hard_stops() {
     assert!(world.body_linear_velocity(block)[1].abs() < 1e-2);
     // Thrown up at 3 m/s, it tops out at +10 mm: stops are found at the start of a step,
     // so it may pass the end by one step's travel before the stop pulls it back.
-    world.set_body_linear_velocity(block, [0.0, 3.0, 0.0]);
+    world.set_body_linear_velocity(block, DVec3::new(0.0, 3.0, 0.0));
     let dt = 1.0 / 120.0;
     let path = ride(&mut world, slider, dt, 0.3);
     let high = path.iter().cloned().fold(f64::MIN, f64::max);
@@ -127,10 +130,15 @@ fn the_ends_of_travel_are_hard_stops() {
 fn a_hinge_spring_holds_a_lever_where_the_torques_balance() {
     // A 10 kg bob 0.5 m from a pivot about z: gravity's torque m·g·L·cos θ against the
     // spring's k_θ·(θ_free − θ).
-    let mut world = World::new([0.0, -G, 0.0]);
+    let mut world = World::new(DVec3::new(0.0, -G, 0.0));
     world.set_solver(Solver::Direct);
-    let bob = world.add_body(Mass::sphere(10.0, 0.05), [0.5, 1.0, 0.0]);
-    let pivot = world.add_hinge(bob, None, [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+    let bob = world.add_body(Mass::sphere(10.0, 0.05), DVec3::new(0.5, 1.0, 0.0));
+    let pivot = world.add_hinge(
+        bob,
+        None,
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(0.0, 0.0, 1.0),
+    );
     let k = 2_000.0;
     world.set_spring(
         pivot,

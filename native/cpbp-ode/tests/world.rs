@@ -1,13 +1,13 @@
 //! A world steps, collides and moves between threads, through the public API only.
 
-use cpbp_ode::{Gyroscopic, Mass, Solver, World};
+use cpbp_ode::{DVec3, Gyroscopic, Mass, Solver, World};
 
 const G: f64 = 9.81;
 
 #[test]
 fn a_dropped_body_falls_half_g_t_squared() {
-    let mut world = World::new([0.0, -G, 0.0]);
-    let ball = world.add_body(Mass::sphere(1.0, 0.1), [0.0, 10.0, 0.0]);
+    let mut world = World::new(DVec3::new(0.0, -G, 0.0));
+    let ball = world.add_body(Mass::sphere(1.0, 0.1), DVec3::new(0.0, 10.0, 0.0));
     let dt = 1.0 / 240.0;
     let steps = 240;
     for _ in 0..steps {
@@ -27,10 +27,10 @@ fn a_dropped_body_falls_half_g_t_squared() {
 #[test]
 fn a_sphere_comes_to_rest_on_a_plane_with_either_solver() {
     for solver in [Solver::QuickStep, Solver::Direct] {
-        let mut world = World::new([0.0, -G, 0.0]);
+        let mut world = World::new(DVec3::new(0.0, -G, 0.0));
         world.set_solver(solver);
-        world.add_plane([0.0, 1.0, 0.0], 0.0);
-        let ball = world.add_body(Mass::sphere(2.0, 0.25), [0.0, 1.0, 0.0]);
+        world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
+        let ball = world.add_body(Mass::sphere(2.0, 0.25), DVec3::new(0.0, 1.0, 0.0));
         world.add_sphere(0.25, Some(ball));
         for _ in 0..600 {
             world.step(1.0 / 120.0);
@@ -52,11 +52,11 @@ fn many_threads_step_their_own_worlds_with_contacts_at_once() {
     // The rollouts step one world per thread; this must be race-free (no shared
     // threading dispatcher, thread-local collision caches) and give identical results.
     let simulate = || {
-        let mut world = World::new([0.0, -G, 0.0]);
-        world.add_plane([0.0, 1.0, 0.0], 0.0);
-        let ball = world.add_body(Mass::sphere(1.0, 0.2), [0.0, 0.5, 0.0]);
+        let mut world = World::new(DVec3::new(0.0, -G, 0.0));
+        world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
+        let ball = world.add_body(Mass::sphere(1.0, 0.2), DVec3::new(0.0, 0.5, 0.0));
         world.add_sphere(0.2, Some(ball));
-        world.add_box([0.5, 0.5, 0.5], None);
+        world.add_box(DVec3::new(0.5, 0.5, 0.5), None);
         for _ in 0..2000 {
             world.step(1.0 / 240.0);
         }
@@ -71,8 +71,8 @@ fn many_threads_step_their_own_worlds_with_contacts_at_once() {
 
 #[test]
 fn worlds_can_move_between_threads() {
-    let mut world = World::new([0.0, -G, 0.0]);
-    let ball = world.add_body(Mass::sphere(1.0, 0.1), [0.0, 0.0, 0.0]);
+    let mut world = World::new(DVec3::new(0.0, -G, 0.0));
+    let ball = world.add_body(Mass::sphere(1.0, 0.1), DVec3::new(0.0, 0.0, 0.0));
     let world = std::thread::spawn(move || {
         world.step(0.1);
         world
@@ -106,16 +106,19 @@ fn a_gyroscope_precesses_at_the_textbook_rate_with_the_explicit_gyroscopic_term(
     let precession = mass * G * arm / (0.5 * mass * radius * radius * spin);
     let seconds = 2.0;
     let turned = |mode: Gyroscopic| {
-        let mut world = World::new([0.0, -G, 0.0]);
-        let wheel = world.add_body(Mass::cylinder(mass, 0, radius, 0.05), [arm, 0.0, 0.0]);
-        world.add_ball(wheel, None, [0.0; 3]);
+        let mut world = World::new(DVec3::new(0.0, -G, 0.0));
+        let wheel = world.add_body(
+            Mass::cylinder(mass, 0, radius, 0.05),
+            DVec3::new(arm, 0.0, 0.0),
+        );
+        world.add_ball(wheel, None, DVec3::ZERO);
         world.set_gyroscopic(wheel, mode);
-        world.set_body_angular_velocity(wheel, [spin, precession, 0.0]);
-        world.set_body_linear_velocity(wheel, [0.0, 0.0, -precession * arm]);
+        world.set_body_angular_velocity(wheel, DVec3::new(spin, precession, 0.0));
+        world.set_body_linear_velocity(wheel, DVec3::new(0.0, 0.0, -precession * arm));
         for _ in 0..(seconds * 120.0) as usize {
             world.step(1.0 / 120.0);
         }
-        let [x, _, z] = world.body_position(wheel);
+        let [x, _, z] = world.body_position(wheel).to_array();
         (-z).atan2(x)
     };
     let expected = precession * seconds;

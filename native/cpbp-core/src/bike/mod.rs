@@ -26,10 +26,7 @@ pub use feet::Feet;
 pub use front_brake::FrontBrake;
 pub use layout::Layout;
 pub use manual::{manual_controls, POSE_GAIN};
-pub use model::{
-    from_quat, to_quat, Bike, Exploded, FootState, Part, PartShape, PeriodWatch, Placement, Shape,
-    PARTS,
-};
+pub use model::{Bike, Exploded, FootState, Part, PartShape, PeriodWatch, Placement, Shape, PARTS};
 pub use params::{BikeParams, GRAVITY};
 pub use rider_position::{
     rider_position_cost, RiderPosition, BACK_POSE, COM_REACH_FORWARD, COM_REACH_RIGHT,

@@ -1,10 +1,9 @@
 //! An inverted pendulum simulated in ODE, the smallest unstable system with real
 //! contact-free rigid-body dynamics, cloned worlds and motors: every planner's first test.
 
-use cpbp_core::bike::to_quat;
 use cpbp_core::control::cpbp::RolloutSystem;
 use cpbp_core::ode::{JointId, Mass, World, WorldState};
-use glam::DQuat;
+use glam::{DQuat, DVec3};
 
 pub const DT: f64 = 1.0 / 30.0;
 pub const SUBSTEPS: usize = 2;
@@ -19,13 +18,13 @@ pub struct Pendulum {
 impl Pendulum {
     /// Built upright (so the hinge angle is the tilt from upright), then tilted by `tilt`.
     pub fn new(tilt: f64) -> Self {
-        let mut world = World::new([0.0, -9.81, 0.0]);
-        let rod = world.add_body(Mass::capsule(1.0, 0.03, 1.0), [0.0, 0.5, 0.0]);
-        let hinge = world.add_hinge(rod, None, [0.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
+        let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
+        let rod = world.add_body(Mass::capsule(1.0, 0.03, 1.0), DVec3::new(0.0, 0.5, 0.0));
+        let hinge = world.add_hinge(rod, None, DVec3::ZERO, DVec3::Z);
         let rotation = DQuat::from_rotation_z(tilt);
-        let centre = rotation * glam::DVec3::new(0.0, 0.5, 0.0);
-        world.set_body_quaternion(rod, to_quat(rotation));
-        world.set_body_position(rod, centre.to_array());
+        let centre = rotation * DVec3::new(0.0, 0.5, 0.0);
+        world.set_body_quaternion(rod, rotation);
+        world.set_body_position(rod, centre);
         Self { world, hinge }
     }
 

@@ -7,7 +7,7 @@ use super::{GeomId, World};
 use crate::feet::{Foot, FootSurface};
 use crate::shared_data::{HeightFieldData, TriMeshData};
 use crate::tyre::Tyre;
-use crate::{ffi, BodyId, Quat, Vec3};
+use crate::{ffi, ode_quat, BodyId, DQuat, DVec3};
 
 /// Collision categories: bodies collide with static terrain only, never with each other
 /// (a bike's parts are held by joints; the rider must not snag on the bike).
@@ -23,7 +23,7 @@ impl World {
     }
 
     /// Adds a box geom with full side lengths, attached to `body` or static.
-    pub fn add_box(&mut self, size: Vec3, body: Option<BodyId>) -> GeomId {
+    pub fn add_box(&mut self, size: DVec3, body: Option<BodyId>) -> GeomId {
         // SAFETY: as for add_sphere.
         let geom = unsafe { ffi::dCreateBox(self.space, size[0], size[1], size[2]) };
         self.attach(geom, body)
@@ -122,7 +122,7 @@ impl World {
     }
 
     /// Adds a static infinite plane `normal · p = offset` (normal need not be unit length).
-    pub fn add_plane(&mut self, normal: Vec3, offset: f64) -> GeomId {
+    pub fn add_plane(&mut self, normal: DVec3, offset: f64) -> GeomId {
         // SAFETY: as for add_sphere.
         let geom =
             unsafe { ffi::dCreatePlane(self.space, normal[0], normal[1], normal[2], offset) };
@@ -146,19 +146,21 @@ impl World {
     }
 
     /// Sets the world-frame position of a static geom (planes are placed by their equation).
-    pub fn set_geom_position(&mut self, geom: GeomId, position: Vec3) {
+    pub fn set_geom_position(&mut self, geom: GeomId, position: DVec3) {
         // SAFETY: the geom belongs to this world.
         unsafe { ffi::dGeomSetPosition(self.geoms[geom.0], position[0], position[1], position[2]) };
     }
 
     /// Sets the world-frame orientation of a static geom.
-    pub fn set_geom_quaternion(&mut self, geom: GeomId, q: Quat) {
+    pub fn set_geom_quaternion(&mut self, geom: GeomId, q: DQuat) {
+        let q = ode_quat(q);
         // SAFETY: the geom belongs to this world; q is 4 reals.
         unsafe { ffi::dGeomSetQuaternion(self.geoms[geom.0], q.as_ptr()) };
     }
 
     /// Places a body geom relative to its body (position and orientation in body frame).
-    pub fn set_geom_offset(&mut self, geom: GeomId, position: Vec3, q: Quat) {
+    pub fn set_geom_offset(&mut self, geom: GeomId, position: DVec3, q: DQuat) {
+        let q = ode_quat(q);
         // SAFETY: the geom belongs to this world and is attached to a body.
         unsafe {
             let g = self.geoms[geom.0];

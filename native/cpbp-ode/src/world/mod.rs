@@ -18,7 +18,7 @@ use crate::runtime::ensure_thread_data;
 use crate::shared_data::{HeightFieldData, TriMeshData};
 use crate::springs::Spring;
 use crate::tyre::Tyre;
-use crate::{BodyState, Quat, StateMismatch, Vec3, WorldState};
+use crate::{ode_quat, BodyState, DQuat, DVec3, StateMismatch, WorldState};
 
 /// Index of a body inside its [`World`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -79,7 +79,7 @@ unsafe impl Send for World {}
 
 impl World {
     /// An empty world with the given gravity (m/s²) and a simple collision space.
-    pub fn new(gravity: Vec3) -> Self {
+    pub fn new(gravity: DVec3) -> Self {
         ensure_thread_data();
         // SAFETY: ODE is initialised; the returned ids are owned by this World.
         unsafe {
@@ -119,7 +119,7 @@ impl World {
     }
 
     /// Sets gravity (m/s²).
-    pub fn set_gravity(&mut self, gravity: Vec3) {
+    pub fn set_gravity(&mut self, gravity: DVec3) {
         // SAFETY: the world is alive.
         unsafe { ffi::dWorldSetGravity(self.world, gravity[0], gravity[1], gravity[2]) };
     }
@@ -135,7 +135,7 @@ impl World {
     }
 
     /// Adds a dynamic body with the given mass at a position.
-    pub fn add_body(&mut self, mass: Mass, position: Vec3) -> BodyId {
+    pub fn add_body(&mut self, mass: Mass, position: DVec3) -> BodyId {
         ensure_thread_data();
         // SAFETY: the world is alive; the body is owned by it and recorded here.
         unsafe {
@@ -151,25 +151,26 @@ impl World {
     }
 
     /// Sets a body's orientation (normalised, as when building a model).
-    pub fn set_body_quaternion(&mut self, body: BodyId, q: Quat) {
+    pub fn set_body_quaternion(&mut self, body: BodyId, q: DQuat) {
+        let q = ode_quat(q);
         // SAFETY: the body belongs to this world; q is 4 reals.
         unsafe { ffi::dBodySetQuaternion(self.bodies[body.0], q.as_ptr()) };
     }
 
     /// Sets a body's world-frame position.
-    pub fn set_body_position(&mut self, body: BodyId, p: Vec3) {
+    pub fn set_body_position(&mut self, body: BodyId, p: DVec3) {
         // SAFETY: the body belongs to this world.
         unsafe { ffi::dBodySetPosition(self.bodies[body.0], p[0], p[1], p[2]) };
     }
 
     /// World-frame angular velocity of a body.
-    pub fn body_angular_velocity(&self, body: BodyId) -> Vec3 {
+    pub fn body_angular_velocity(&self, body: BodyId) -> DVec3 {
         // SAFETY: as for body_position.
-        unsafe { read_vec3(ffi::dBodyGetAngularVel(self.bodies[body.0])) }
+        DVec3::from_array(unsafe { read_vec3(ffi::dBodyGetAngularVel(self.bodies[body.0])) })
     }
 
     /// Sets the world-frame angular velocity of a body.
-    pub fn set_body_angular_velocity(&mut self, body: BodyId, w: Vec3) {
+    pub fn set_body_angular_velocity(&mut self, body: BodyId, w: DVec3) {
         // SAFETY: the body belongs to this world.
         unsafe { ffi::dBodySetAngularVel(self.bodies[body.0], w[0], w[1], w[2]) };
     }
@@ -193,28 +194,28 @@ impl World {
     }
 
     /// World-frame position of a body's centre of mass.
-    pub fn body_position(&self, body: BodyId) -> Vec3 {
+    pub fn body_position(&self, body: BodyId) -> DVec3 {
         // SAFETY: the body belongs to this world; ODE returns a pointer to 3 (padded to 4) reals.
-        unsafe { read_vec3(ffi::dBodyGetPosition(self.bodies[body.0])) }
+        DVec3::from_array(unsafe { read_vec3(ffi::dBodyGetPosition(self.bodies[body.0])) })
     }
 
-    /// Orientation of a body as a quaternion (w, x, y, z).
-    pub fn body_quaternion(&self, body: BodyId) -> Quat {
-        // SAFETY: the body belongs to this world; ODE returns a pointer to 4 reals.
+    /// Orientation of a body.
+    pub fn body_quaternion(&self, body: BodyId) -> DQuat {
+        // SAFETY: the body belongs to this world; ODE returns a pointer to 4 reals, w first.
         unsafe {
             let q = ffi::dBodyGetQuaternion(self.bodies[body.0]);
-            [*q, *q.add(1), *q.add(2), *q.add(3)]
+            DQuat::from_xyzw(*q.add(1), *q.add(2), *q.add(3), *q)
         }
     }
 
     /// World-frame linear velocity of a body.
-    pub fn body_linear_velocity(&self, body: BodyId) -> Vec3 {
+    pub fn body_linear_velocity(&self, body: BodyId) -> DVec3 {
         // SAFETY: as for body_position.
-        unsafe { read_vec3(ffi::dBodyGetLinearVel(self.bodies[body.0])) }
+        DVec3::from_array(unsafe { read_vec3(ffi::dBodyGetLinearVel(self.bodies[body.0])) })
     }
 
     /// Sets the world-frame linear velocity of a body.
-    pub fn set_body_linear_velocity(&mut self, body: BodyId, velocity: Vec3) {
+    pub fn set_body_linear_velocity(&mut self, body: BodyId, velocity: DVec3) {
         // SAFETY: the body belongs to this world.
         unsafe {
             ffi::dBodySetLinearVel(self.bodies[body.0], velocity[0], velocity[1], velocity[2])
@@ -231,9 +232,9 @@ impl World {
                 let angular_velocity =
                     unsafe { read_vec3(ffi::dBodyGetAngularVel(self.bodies[i])) };
                 BodyState {
-                    position: self.body_position(id),
-                    quaternion: self.body_quaternion(id),
-                    linear_velocity: self.body_linear_velocity(id),
+                    position: self.body_position(id).to_array(),
+                    quaternion: ode_quat(self.body_quaternion(id)),
+                    linear_velocity: self.body_linear_velocity(id).to_array(),
                     angular_velocity,
                 }
             })

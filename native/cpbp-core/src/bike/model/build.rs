@@ -3,7 +3,7 @@
 
 use glam::{DQuat, DVec3};
 
-use super::{to_array, to_quat, Bike, Part, PartShape, Placement, Shape, SuspensionJoints};
+use super::{Bike, Part, PartShape, Placement, Shape, SuspensionJoints};
 use crate::bike::controls::Controls;
 use crate::bike::layout::Layout;
 use crate::bike::params::{BikeParams, GRAVITY};
@@ -84,7 +84,7 @@ impl Bike {
             // to the lower legs; the swingarm's angle grows as its rear end drops.
             let axis = b.placement.rotation * l.steer_axis;
             SuspensionJoints {
-                fork_slider: b.world.add_slider(fork, Some(fork_lower), axis.to_array()),
+                fork_slider: b.world.add_slider(fork, Some(fork_lower), axis),
                 swingarm_pivot: b.hinge(swingarm, frame, l.swingarm_pivot, z),
                 swingarm_reach: l.swingarm_pivot.x - l.rear_axle.x,
             }
@@ -110,10 +110,8 @@ impl Bike {
             let frame_rest = builder.rest[Part::Frame as usize].0;
             feet.positions().map(|at| {
                 let foot = builder.world.add_foot(feet.radius, frame, feet.surface);
-                let offset = to_array(at - frame_rest);
-                builder
-                    .world
-                    .set_geom_offset(foot, offset, to_quat(DQuat::IDENTITY));
+                let offset = at - frame_rest;
+                builder.world.set_geom_offset(foot, offset, DQuat::IDENTITY);
                 foot
             })
         });
@@ -161,9 +159,9 @@ impl Builder<'_> {
     /// A body at a bike-frame pose.
     fn body(&mut self, mass: Mass, position: DVec3, rotation: DQuat) -> BodyId {
         let world_position = self.placement.transform_point(position);
-        let body = self.world.add_body(mass, to_array(world_position));
+        let body = self.world.add_body(mass, world_position);
         self.world
-            .set_body_quaternion(body, to_quat(self.placement.rotation * rotation));
+            .set_body_quaternion(body, self.placement.rotation * rotation);
         self.rest.push((position, rotation));
         body
     }
@@ -201,15 +199,14 @@ impl Builder<'_> {
         // scrapes the ground in a fall.
         let centre = DVec3::new(-0.05, 0.55, 0.0);
         let body = self.body(
-            Mass::cuboid(mass, [1.05, 0.45, 0.30]),
+            Mass::cuboid(mass, DVec3::new(1.05, 0.45, 0.30)),
             centre,
             DQuat::IDENTITY,
         );
         let size = DVec3::new(0.95, 0.28, 0.28);
         let offset = DVec3::new(0.0, 0.06, 0.0);
-        let geom = self.world.add_box(to_array(size), Some(body));
-        self.world
-            .set_geom_offset(geom, to_array(offset), to_quat(DQuat::IDENTITY));
+        let geom = self.world.add_box(size, Some(body));
+        self.world.set_geom_offset(geom, offset, DQuat::IDENTITY);
         self.shape(Part::Frame, Shape::Cuboid { size }, offset, DQuat::IDENTITY);
         body
     }
@@ -222,9 +219,8 @@ impl Builder<'_> {
         let size = DVec3::new(0.05, 0.05, 0.76);
         let offset = rotation.inverse() * (grip - centre);
         let bar_rotation = rotation.inverse();
-        let geom = self.world.add_box(to_array(size), Some(body));
-        self.world
-            .set_geom_offset(geom, to_array(offset), to_quat(bar_rotation));
+        let geom = self.world.add_box(size, Some(body));
+        self.world.set_geom_offset(geom, offset, bar_rotation);
         self.shape(Part::Fork, Shape::Cuboid { size }, offset, bar_rotation);
         body
     }
@@ -247,13 +243,12 @@ impl Builder<'_> {
     fn hinge(&mut self, a: BodyId, b: BodyId, anchor: DVec3, axis: DVec3) -> JointId {
         let anchor = self.placement.transform_point(anchor);
         let axis = self.placement.rotation * axis;
-        self.world
-            .add_hinge(a, Some(b), to_array(anchor), to_array(axis))
+        self.world.add_hinge(a, Some(b), anchor, axis)
     }
 
     fn ball(&mut self, a: BodyId, b: BodyId, anchor: DVec3) -> JointId {
         self.world
-            .add_ball(a, Some(b), to_array(self.placement.transform_point(anchor)))
+            .add_ball(a, Some(b), self.placement.transform_point(anchor))
     }
 
     /// A ball joint driven by an Euler motor: pitch about z (fixed to `a`), twist about
@@ -269,9 +264,7 @@ impl Builder<'_> {
         let ball = self.ball(a, b, anchor);
         let axis0 = self.placement.rotation * DVec3::Z;
         let axis2 = self.placement.rotation * DVec3::X;
-        let motor = self
-            .world
-            .add_euler_motor(a, b, to_array(axis0), to_array(axis2));
+        let motor = self.world.add_euler_motor(a, b, axis0, axis2);
         for (axis, limit) in limits.into_iter().enumerate() {
             self.world.set_joint_limits(motor, axis, -limit, limit);
         }

@@ -5,7 +5,7 @@
 
 use glam::DVec3;
 
-use super::{from_array, Bike, Part};
+use super::{Bike, Part};
 use crate::ode::World;
 
 impl Bike {
@@ -25,9 +25,9 @@ impl Bike {
             if !world.body_touches_static(body) {
                 return 0.0;
             }
-            let centre = from_array(world.body_position(body));
-            let velocity = from_array(world.body_linear_velocity(body))
-                + from_array(world.body_angular_velocity(body)).cross(contact - centre);
+            let centre = world.body_position(body);
+            let velocity = world.body_linear_velocity(body)
+                + world.body_angular_velocity(body).cross(contact - centre);
             (velocity - up * velocity.dot(up)).length()
         };
         (

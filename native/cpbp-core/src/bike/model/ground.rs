@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use super::{from_array, from_quat, Bike, Part};
+use super::{Bike, Part};
 use crate::bike::controls::{index, Controls, ForceClass};
 use crate::bike::drive::throttle_open;
 use crate::bike::manual::POSE_GAIN;
@@ -29,8 +29,8 @@ impl Bike {
         let (r, crown) = (self.params.wheel_radius, self.params.tyre_crown);
         let contact = |part: Part| {
             let body = self.body(part);
-            let centre = from_array(world.body_position(body));
-            let axle = from_quat(world.body_quaternion(body)) * DVec3::Z;
+            let centre = world.body_position(body);
+            let axle = world.body_quaternion(body) * DVec3::Z;
             let down = -(up - axle * up.dot(axle)).normalize_or(up);
             centre + down * (r - crown) - up * crown
         };
@@ -98,7 +98,7 @@ impl Bike {
         let heading = self.heading(world, up);
         let support = self.support_point_lifted(world, up, shift);
         let ahead = (self.center_of_mass(world) - support).dot(heading);
-        let velocity = |part: Part| from_array(world.body_linear_velocity(self.body(part)));
+        let velocity = |part: Part| world.body_linear_velocity(self.body(part));
         let (rear, front) = (velocity(Part::RearWheel), velocity(Part::FrontWheel));
         // Where between the axles the support point sits: 0 at the rear, 1 at the front.
         let along = (1.0 - shift.clamp(-1.0, 1.0)) / 2.0;

@@ -236,10 +236,10 @@ impl Bike {
     pub fn reset(&self, world: &mut World, placement: &Placement) {
         for part in self.own_parts() {
             let (body, (position, rotation)) = (self.body(part), self.rest[part as usize]);
-            world.set_body_position(body, to_array(placement.transform_point(position)));
-            world.set_body_quaternion(body, to_quat(placement.rotation * rotation));
-            world.set_body_linear_velocity(body, [0.0; 3]);
-            world.set_body_angular_velocity(body, [0.0; 3]);
+            world.set_body_position(body, placement.transform_point(position));
+            world.set_body_quaternion(body, placement.rotation * rotation);
+            world.set_body_linear_velocity(body, DVec3::ZERO);
+            world.set_body_angular_velocity(body, DVec3::ZERO);
         }
     }
 
@@ -282,7 +282,7 @@ impl Bike {
 
     /// Orientation of the frame (bike frame → world).
     pub fn frame_rotation(&self, world: &World) -> DQuat {
-        from_quat(world.body_quaternion(self.body(Part::Frame)))
+        world.body_quaternion(self.body(Part::Frame))
     }
 
     /// Mass-weighted centre of all bodies.
@@ -296,12 +296,12 @@ impl Bike {
     }
 
     /// The mass-weighted mean of a per-body vector.
-    fn mass_weighted(&self, world: &World, of: impl Fn(BodyId) -> [f64; 3]) -> DVec3 {
+    fn mass_weighted(&self, world: &World, of: impl Fn(BodyId) -> DVec3) -> DVec3 {
         let (sum, mass) = self.own_parts().map(|part| self.body(part)).fold(
             (DVec3::ZERO, 0.0),
             |(sum, mass), b| {
                 let m = world.body_mass(b);
-                (sum + from_array(of(b)) * m, mass + m)
+                (sum + of(b) * m, mass + m)
             },
         );
         sum / mass
@@ -310,7 +310,7 @@ impl Bike {
     /// Forward speed (m/s) along the frame's heading projected on the ground plane
     /// (`up` is the world's up, against gravity).
     pub fn forward_speed(&self, world: &World, up: DVec3) -> f64 {
-        let velocity = from_array(world.body_linear_velocity(self.body(Part::Frame)));
+        let velocity = world.body_linear_velocity(self.body(Part::Frame));
         velocity.dot(self.heading(world, up))
     }
 
@@ -326,7 +326,7 @@ impl Bike {
     /// Lean rate (rad/s, positive when leaning further right): the frame's angular velocity
     /// about its heading. Exact, unlike a difference of two leans a step apart.
     pub fn lean_rate(&self, world: &World, up: DVec3) -> f64 {
-        let spin = from_array(world.body_angular_velocity(self.body(Part::Frame)));
+        let spin = world.body_angular_velocity(self.body(Part::Frame));
         // Tipping up towards right (= heading × up) is a turn about up × right = heading.
         spin.dot(self.heading(world, up))
     }
@@ -343,11 +343,11 @@ impl Bike {
                 world.body_linear_velocity(b),
                 world.body_angular_velocity(b),
             ];
-            if state.iter().flatten().any(|v| !v.is_finite()) {
+            if state.iter().any(|v| !v.is_finite()) {
                 return Some(format!("{} has a non-finite state", part.name()));
             }
-            let speed = from_array(state[1]).length();
-            let spin = from_array(state[2]).length();
+            let speed = state[1].length();
+            let spin = state[2].length();
             if speed > MAX_SPEED || spin > MAX_SPIN {
                 return Some(format!(
                     "{} moves implausibly fast ({speed:.0} m/s, {spin:.0} rad/s)",
@@ -367,22 +367,4 @@ impl Bike {
 
 fn up_y() -> DVec3 {
     DVec3::Y
-}
-
-fn to_array(v: DVec3) -> [f64; 3] {
-    v.to_array()
-}
-
-fn from_array(v: [f64; 3]) -> DVec3 {
-    DVec3::from_array(v)
-}
-
-/// glam stores quaternions as x, y, z, w; ODE as w, x, y, z.
-pub fn to_quat(q: DQuat) -> [f64; 4] {
-    [q.w, q.x, q.y, q.z]
-}
-
-/// An ODE quaternion (w, x, y, z) as glam's.
-pub fn from_quat(q: [f64; 4]) -> DQuat {
-    DQuat::from_xyzw(q[1], q[2], q[3], q[0])
 }

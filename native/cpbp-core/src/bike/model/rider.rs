@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use super::{from_array, Bike, Part};
+use super::{Bike, Part};
 use crate::bike::controls::{index, Controls};
 use crate::bike::rider_position::RIDER_JOINTS;
 use crate::ode::World;
@@ -52,14 +52,14 @@ impl Bike {
         let (mut now, mut rest, mut mass) = (DVec3::ZERO, DVec3::ZERO, 0.0);
         for &part in rider {
             let m = world.body_mass(self.body(part));
-            now += from_array(world.body_position(self.body(part))) * m;
+            now += world.body_position(self.body(part)) * m;
             rest += self.rest[part as usize].0 * m;
             mass += m;
         }
         let frame = self.body(Part::Frame);
         let (frame_rest, frame_rest_rotation) = self.rest[Part::Frame as usize];
-        let local = self.frame_rotation(world).inverse()
-            * (now / mass - from_array(world.body_position(frame)));
+        let local =
+            self.frame_rotation(world).inverse() * (now / mass - world.body_position(frame));
         local - frame_rest_rotation.inverse() * (rest / mass - frame_rest)
     }
 }

@@ -235,10 +235,10 @@ fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
 }
 
 fn sphere_step_cost(bodies: usize, steps: usize) -> f64 {
-    let mut world = World::new([0.0, -9.81, 0.0]);
-    world.add_plane([0.0, 1.0, 0.0], 0.0);
+    let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
+    world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);
     for i in 0..bodies {
-        let body = world.add_body(Mass::sphere(10.0, 0.3), [i as f64, 0.3, 0.0]);
+        let body = world.add_body(Mass::sphere(10.0, 0.3), DVec3::new(i as f64, 0.3, 0.0));
         world.add_sphere(0.3, Some(body));
     }
     time_per_call(steps, || world.step(ODE_DT))

@@ -16,43 +16,75 @@ pub(super) struct Outcome<State> {
     pub blew_up: bool,
 }
 
-/// One planning step, per particle i: `parents[i]` is the particle (at the step before)
-/// that particle i continued from, `controls[i]` what it applied, `features[i]` and
-/// `points[i]` where it got to, `potentials[i]` its step's ψ and `weights[i]` its forward
-/// weight after the step (unnormalised).
+/// What one particle did in one planning step: the particle (at the step before) it
+/// continued from, the control it applied, where it got to (features for the refinement,
+/// a point for drawing), its step's ψ and its forward weight after the step
+/// (unnormalised).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(super) struct ParticleStep {
+    pub parent: usize,
+    pub control: Vec<f64>,
+    pub features: Vec<f64>,
+    pub point: Option<[f64; 3]>,
+    pub potential: f64,
+    pub weight: f64,
+}
+
+/// One planning step: every particle's, in particle order.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub(super) struct StepRecord {
-    pub parents: Vec<usize>,
-    pub controls: Vec<Vec<f64>>,
-    pub features: Vec<Vec<f64>>,
-    pub potentials: Vec<f64>,
-    pub weights: Vec<f64>,
-    pub points: Vec<Option<[f64; 3]>>,
+    pub particles: Vec<ParticleStep>,
     pub blowups: usize,
     /// Whether the parents were drawn by weight (always at the first step).
     pub resampled: bool,
 }
 
+/// One particle between steps.
+#[derive(Clone)]
+pub(super) struct Particle<State> {
+    pub state: State,
+    pub weight: f64,
+    /// Total (state + control) cost of its lineage so far.
+    pub total: f64,
+    /// Its last control and the one before: the smoothness priors' inputs.
+    pub previous: Vec<f64>,
+    pub before_previous: Vec<f64>,
+}
+
 /// The particles between steps.
 pub(super) struct Particles<State> {
-    pub states: Vec<State>,
-    pub weights: Vec<f64>,
-    /// Total (state + control) cost of each particle's lineage so far.
-    pub totals: Vec<f64>,
-    /// Each particle's last control and the one before: the smoothness priors' inputs.
-    pub previous: Vec<Vec<f64>>,
-    pub before_previous: Vec<Vec<f64>>,
+    pub all: Vec<Particle<State>>,
+}
+
+impl<State> Particles<State> {
+    /// Every particle's weight, in order.
+    pub fn weights(&self) -> Vec<f64> {
+        self.all.iter().map(|p| p.weight).collect()
+    }
+
+    /// Normalises the weights (see [`normalise`]) and returns them.
+    pub fn normalise_weights(&mut self) -> Vec<f64> {
+        let mut weights = self.weights();
+        normalise(&mut weights);
+        for (particle, &weight) in self.all.iter_mut().zip(&weights) {
+            particle.weight = weight;
+        }
+        weights
+    }
 }
 
 impl<State: Clone> Particles<State> {
     /// `n` particles at `start`, equally weighted, after the master's last two controls.
     pub fn start(start: &State, n: usize, applied: &[f64], applied_before: &[f64]) -> Self {
+        let particle = Particle {
+            state: start.clone(),
+            weight: 1.0 / n as f64,
+            total: 0.0,
+            previous: applied.to_vec(),
+            before_previous: applied_before.to_vec(),
+        };
         Self {
-            states: vec![start.clone(); n],
-            weights: vec![1.0 / n as f64; n],
-            totals: vec![0.0; n],
-            previous: vec![applied.to_vec(); n],
-            before_previous: vec![applied_before.to_vec(); n],
+            all: vec![particle; n],
         }
     }
 
@@ -67,16 +99,16 @@ impl<State: Clone> Particles<State> {
         replays: &[bool],
         rng: &mut Pcg64,
     ) -> (Vec<usize>, bool) {
-        let n = self.weights.len();
-        normalise(&mut self.weights);
-        let ess = 1.0 / self.weights.iter().map(|w| w * w).sum::<f64>();
+        let n = self.all.len();
+        let weights = self.normalise_weights();
+        let ess = 1.0 / weights.iter().map(|w| w * w).sum::<f64>();
         let resample = k == 0 || ess < threshold * n as f64;
         let parents = (0..n)
             .map(|i| {
                 if replays[i] || !resample {
                     i
                 } else {
-                    draw(&self.weights, rng)
+                    draw(&weights, rng)
                 }
             })
             .collect();
@@ -91,38 +123,39 @@ impl<State: Clone> Particles<State> {
         resampled: bool,
         outcomes: Vec<Outcome<State>>,
     ) -> StepRecord {
-        let mut record = StepRecord::default();
-        let mut state_costs = Vec::with_capacity(outcomes.len());
-        let mut totals = Vec::with_capacity(outcomes.len());
-        let mut states = Vec::with_capacity(outcomes.len());
-        for (outcome, &parent) in outcomes.into_iter().zip(&parents) {
-            record.features.push(outcome.features);
-            record.points.push(outcome.point);
+        let state_costs: Vec<f64> = outcomes.iter().map(|o| o.state_cost).collect();
+        let potentials = potentials(&state_costs);
+        let mut record = StepRecord {
+            particles: Vec::with_capacity(outcomes.len()),
+            blowups: 0,
+            resampled,
+        };
+        let mut next = Vec::with_capacity(outcomes.len());
+        for ((outcome, parent), potential) in outcomes.into_iter().zip(parents).zip(potentials) {
+            let old = &self.all[parent];
+            let weight = if resampled {
+                potential
+            } else {
+                old.weight * potential
+            };
             record.blowups += usize::from(outcome.blew_up);
-            totals.push(self.totals[parent] + outcome.state_cost + outcome.control_cost);
-            state_costs.push(outcome.state_cost);
-            states.push(outcome.state);
-            record.controls.push(outcome.control);
+            next.push(Particle {
+                state: outcome.state,
+                weight,
+                total: old.total + outcome.state_cost + outcome.control_cost,
+                previous: outcome.control.clone(),
+                before_previous: old.previous.clone(),
+            });
+            record.particles.push(ParticleStep {
+                parent,
+                control: outcome.control,
+                features: outcome.features,
+                point: outcome.point,
+                potential,
+                weight,
+            });
         }
-        self.totals = totals;
-        self.states = states;
-        self.before_previous = parents.iter().map(|&p| self.previous[p].clone()).collect();
-        self.previous = record.controls.clone();
-        record.potentials = potentials(&state_costs);
-        self.weights = parents
-            .iter()
-            .zip(&record.potentials)
-            .map(|(&parent, &potential)| {
-                if resampled {
-                    potential
-                } else {
-                    self.weights[parent] * potential
-                }
-            })
-            .collect();
-        record.weights = self.weights.clone();
-        record.parents = parents;
-        record.resampled = resampled;
+        self.all = next;
         record
     }
 }
@@ -133,7 +166,7 @@ pub(super) fn ancestry(records: &[StepRecord], end: usize) -> Vec<usize> {
     let mut i = end;
     for (k, record) in records.iter().enumerate().rev() {
         indices[k] = i;
-        i = record.parents[i];
+        i = record.particles[i].parent;
     }
     indices
 }
@@ -141,16 +174,18 @@ pub(super) fn ancestry(records: &[StepRecord], end: usize) -> Vec<usize> {
 /// Each final particle's control sequence (K·D values) and trace points (empty when the
 /// system has none), read along its ancestry.
 pub(super) fn lineages(records: &[StepRecord]) -> (Vec<Vec<f64>>, Vec<Vec<[f64; 3]>>) {
-    let count = records.last().map_or(0, |r| r.parents.len());
+    let count = records.last().map_or(0, |r| r.particles.len());
     (0..count)
         .map(|end| {
             let line = ancestry(records, end);
             let steps = records.iter().zip(&line);
             let sequence = steps
                 .clone()
-                .flat_map(|(record, &i)| record.controls[i].iter().copied())
+                .flat_map(|(record, &i)| record.particles[i].control.iter().copied())
                 .collect();
-            let path = steps.filter_map(|(record, &i)| record.points[i]).collect();
+            let path = steps
+                .filter_map(|(record, &i)| record.particles[i].point)
+                .collect();
             (sequence, path)
         })
         .unzip()
@@ -160,19 +195,21 @@ pub(super) fn lineages(records: &[StepRecord]) -> (Vec<Vec<f64>>, Vec<Vec<[f64; 
 /// smoothed belief of particle i at step k is its forward weight times β_k(i), so a
 /// step's samples count by how well their whole future went, not only their past.
 pub(super) fn smoothed_beliefs(records: &[StepRecord]) -> Vec<Vec<f64>> {
-    let Some(n) = records.first().map(|r| r.weights.len()) else {
+    let Some(n) = records.first().map(|r| r.particles.len()) else {
         return Vec::new();
     };
     let mut beliefs = vec![Vec::new(); records.len()];
     let mut backward = vec![1.0 / n as f64; n];
     for (k, record) in records.iter().enumerate().rev() {
-        let mut smoothed: Vec<f64> = (0..n).map(|i| record.weights[i] * backward[i]).collect();
+        let mut smoothed: Vec<f64> = (0..n)
+            .map(|i| record.particles[i].weight * backward[i])
+            .collect();
         normalise(&mut smoothed);
         beliefs[k] = smoothed;
         if k > 0 {
             let mut message = vec![0.0; n];
-            for i in 0..n {
-                message[record.parents[i]] += record.potentials[i] * backward[i];
+            for (step, b) in record.particles.iter().zip(&backward) {
+                message[step.parent] += step.potential * b;
             }
             normalise(&mut message);
             backward = message;
@@ -231,9 +268,16 @@ mod tests {
 
     fn step(parents: Vec<usize>, controls: &[f64]) -> StepRecord {
         StepRecord {
-            points: controls.iter().map(|&u| Some([u, 0.0, 0.0])).collect(),
-            controls: controls.iter().map(|&u| vec![u]).collect(),
-            parents,
+            particles: parents
+                .into_iter()
+                .zip(controls)
+                .map(|(parent, &u)| ParticleStep {
+                    parent,
+                    control: vec![u],
+                    point: Some([u, 0.0, 0.0]),
+                    ..ParticleStep::default()
+                })
+                .collect(),
             ..StepRecord::default()
         }
     }

@@ -10,7 +10,7 @@ use rayon::prelude::*;
 use std::time::{Duration, Instant};
 
 use super::config::{PlanPhases, PlanResult, PlannerConfig, WarmStart};
-use super::frame::{draw, lineages, mix, normalise, smoothed_beliefs};
+use super::frame::{draw, lineages, mix, smoothed_beliefs};
 use super::frame::{Outcome, Particles, StepRecord};
 use super::priors::{AppliedControls, Priors};
 use super::refinement::{refine, StepSamples};
@@ -120,7 +120,6 @@ impl Planner {
                 particles.advance(parents, resampled, outcomes)
             })
             .collect();
-        normalise(&mut particles.weights);
         let concluding = Instant::now();
         let warm_started = replays.get(1) == Some(&true);
         let result = self.conclude(records, particles, &start_features, warm_started);
@@ -146,14 +145,11 @@ impl Planner {
                 .zip(rngs.par_iter_mut())
                 .enumerate()
                 .map(|(i, (system, rng))| {
-                    let p = parents[i];
-                    let parent = (
-                        &particles.previous[p][..],
-                        &particles.before_previous[p][..],
-                    );
-                    system.restore(&particles.states[p]);
+                    let from = &particles.all[parents[i]];
+                    let parent = (&from.previous[..], &from.before_previous[..]);
+                    system.restore(&from.state);
                     let control = self.choose_control(system, rng, parent, &guides[i], k);
-                    self.simulate(system, &particles.states[p], control, parent, k)
+                    self.simulate(system, &from.state, control, parent, k)
                 })
                 .collect()
         })
@@ -226,23 +222,24 @@ impl Planner {
     fn conclude<State>(
         &mut self,
         records: Vec<StepRecord>,
-        particles: Particles<State>,
+        mut particles: Particles<State>,
         start_features: &[f64],
         warm_started: bool,
     ) -> PlanResult {
         let dim = self.priors.dim();
         let (sequences, paths) = lineages(&records);
-        let totals = particles.totals;
+        let end_weights = particles.normalise_weights();
+        let totals: Vec<f64> = particles.all.iter().map(|p| p.total).collect();
         let best = (0..totals.len())
             .min_by(|a, b| totals[*a].total_cmp(&totals[*b]))
             .unwrap_or(0);
         let control = sequences[best][..dim].to_vec();
         let refined = if self.config.refine {
-            self.refinement(&records, &particles.weights, start_features)
+            self.refinement(&records, &end_weights, start_features)
         } else {
             None
         };
-        self.remember(&sequences, &particles.weights, best, refined.clone(), dim);
+        self.remember(&sequences, &end_weights, best, refined.clone(), dim);
         self.note_applied(&control);
         PlanResult {
             control,
@@ -254,7 +251,7 @@ impl Planner {
             resamples: records.iter().skip(1).filter(|r| r.resampled).count(),
             blowups: records.iter().map(|r| r.blowups).sum(),
             refined,
-            beliefs: particles.weights,
+            beliefs: end_weights,
             paths,
             warm_started,
         }
@@ -273,15 +270,23 @@ impl Planner {
             .enumerate()
             .map(|(k, record)| StepSamples {
                 before: record
-                    .parents
+                    .particles
                     .iter()
-                    .map(|&p| match k {
+                    .map(|step| match k {
                         0 => start_features,
-                        _ => records[k - 1].features[p].as_slice(),
+                        _ => records[k - 1].particles[step.parent].features.as_slice(),
                     })
                     .collect(),
-                controls: &record.controls,
-                after: &record.features,
+                controls: record
+                    .particles
+                    .iter()
+                    .map(|s| s.control.as_slice())
+                    .collect(),
+                after: record
+                    .particles
+                    .iter()
+                    .map(|s| s.features.as_slice())
+                    .collect(),
                 weights: &smoothed[k],
             })
             .collect();

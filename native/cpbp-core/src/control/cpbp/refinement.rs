@@ -13,8 +13,8 @@ use super::priors::Priors;
 /// the particle's parent and of the particle), the control it applied, and its weight.
 pub struct StepSamples<'a> {
     pub before: Vec<&'a [f64]>,
-    pub controls: &'a [Vec<f64>],
-    pub after: &'a [Vec<f64>],
+    pub controls: Vec<&'a [f64]>,
+    pub after: Vec<&'a [f64]>,
     pub weights: &'a [f64],
 }
 
@@ -32,7 +32,7 @@ pub fn refine(
         return None;
     }
     let planned: Vec<usize> = (0..priors.dim()).filter(|&d| priors.planned[d]).collect();
-    let mut target = weighted_mean(last.after.iter().map(Vec::as_slice), end_weights, features);
+    let mut target = weighted_mean(last.after.iter().copied(), end_weights, features);
     let mut sequence = vec![0.0; steps.len() * priors.dim()];
     for (k, step) in steps.iter().enumerate().rev() {
         let rows: Vec<DVector<f64>> = (0..step.weights.len())
@@ -40,7 +40,7 @@ pub fn refine(
                 let mut z = Vec::with_capacity(2 * features + planned.len());
                 z.extend_from_slice(step.before[i]);
                 z.extend(planned.iter().map(|&d| step.controls[i][d]));
-                z.extend_from_slice(&step.after[i]);
+                z.extend_from_slice(step.after[i]);
                 DVector::from_vec(z)
             })
             .collect();
@@ -148,12 +148,12 @@ mod tests {
         // The samples imply u = x' / 10, and the best particles ended far away: the
         // regression wants controls far outside [-1, 1].
         let before = vec![vec![0.0]; 4];
-        let controls = vec![vec![0.5], vec![0.9], vec![1.0], vec![0.95]];
+        let controls = [vec![0.5], vec![0.9], vec![1.0], vec![0.95]];
         let after: Vec<Vec<f64>> = controls.iter().map(|u| vec![u[0] * 10.0 + 50.0]).collect();
         let step = StepSamples {
             before: before.iter().map(Vec::as_slice).collect(),
-            controls: &controls,
-            after: &after,
+            controls: controls.iter().map(Vec::as_slice).collect(),
+            after: after.iter().map(Vec::as_slice).collect(),
             weights: &[0.1, 0.2, 0.3, 0.4],
         };
         let sequence = refine(&[step], &[0.0, 0.0, 0.0, 1.0], &priors(1), 0.001).unwrap();
@@ -166,12 +166,12 @@ mod tests {
     #[test]
     fn no_features_means_no_refinement() {
         let before: Vec<Vec<f64>> = vec![vec![]; 2];
-        let controls = vec![vec![0.1], vec![0.2]];
+        let controls = [vec![0.1], vec![0.2]];
         let after: Vec<Vec<f64>> = vec![vec![]; 2];
         let step = StepSamples {
             before: before.iter().map(Vec::as_slice).collect(),
-            controls: &controls,
-            after: &after,
+            controls: controls.iter().map(Vec::as_slice).collect(),
+            after: after.iter().map(Vec::as_slice).collect(),
             weights: &[0.5, 0.5],
         };
         assert_eq!(refine(&[step], &[0.5, 0.5], &priors(1), 0.001), None);
