@@ -11,7 +11,8 @@ use super::cpbp::{Priors, RolloutSystem};
 use super::lean::{current_lean_vector, desired_lean_vector, lean_cost, roll_lean_cost};
 use super::Goal;
 use crate::bike::{
-    index, rider_position_cost, Bike, Controls, ForceClass, CONTROL_DIM, LOWER, POSE_GAIN, UPPER,
+    index, rider_position_cost, Bike, Controls, ForceClass, CONTROL_DIM, FORCE_TUNINGS, LOWER,
+    POSE_GAIN, UPPER,
 };
 use crate::ode::{World, WorldState};
 use crate::physics::RolloutStepping;
@@ -193,7 +194,9 @@ pub fn bike_priors(mutation_scale: f64) -> Priors {
     sigma_static[index::STEER] = 4.0;
     sigma_smooth1[index::STEER] = 4.0;
     sigma_smooth2[index::STEER] = 4.0;
-    for class in 0..5 {
+    // The force tunings: near full strength, but the rear wheel's, which rolls freely
+    // unless the throttle or brake says otherwise.
+    for class in 0..FORCE_TUNINGS {
         let i = index::FORCE + class;
         mean[i] = if class == ForceClass::RearWheel as usize {
             0.0
