@@ -90,10 +90,15 @@ def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
     styles = {"combined": ("tab:orange", "s"), "optimizer": ("tab:blue", "o"),
               "sampling": ("tab:green", "^"), "mppi": ("tab:purple", "D"),
               "arcade": ("black", "P")}
-    fig, axes = plt.subplots(1, len(scenarios), figsize=(4.2 * len(scenarios), 4), dpi=110,
-                             squeeze=False)
+    # Rows of at most four panels, so the chart stays readable however many scenarios.
+    columns = min(4, len(scenarios))
+    rows_of_panels = -(-len(scenarios) // columns)
+    fig, axes = plt.subplots(rows_of_panels, columns, figsize=(4.2 * columns, 4 * rows_of_panels),
+                             dpi=110, squeeze=False)
+    for ax in axes.flat[len(scenarios):]:
+        ax.set_visible(False)
     legend = {}
-    for ax, scenario in zip(axes[0], scenarios):
+    for ax, scenario in zip(axes.flat, scenarios):
         mine = [r for r in rows if r["scenario"] == scenario]
         controllers = sorted({r["controller"] for r in mine}, key=_order)
         # N as categories, not a log axis: arcade rides as N = 0, and a scenario ridden at
