@@ -1,7 +1,8 @@
 class_name BikeLooks
 extends RefCounted
 ## The materials the drawn bike and rider are made of, by name: one shared material per
-## look, made on first use, and a see-through one for ghosts.
+## look, made on first use, and a see-through one for ghosts. The paint is each bike's own
+## (BikeDescription.paint): a look can be given its colour.
 
 const COLOURS := {
 	tyre = Color(0.06, 0.06, 0.07),
@@ -9,7 +10,6 @@ const COLOURS := {
 	metal = Color(0.7, 0.7, 0.72),
 	frame = Color(0.12, 0.12, 0.13),
 	engine = Color(0.25, 0.25, 0.27),
-	paint = Color(0.92, 0.35, 0.08),
 	seat = Color(0.08, 0.08, 0.09),
 	tail_light = Color(0.9, 0.05, 0.05),
 	exhaust = Color(0.55, 0.55, 0.58),
@@ -35,12 +35,14 @@ static var _ghosts := {}
 static var _skins := {}
 
 
-## The material of `look` (magenta for a look nobody defined, so it shows).
-static func material(look: String) -> StandardMaterial3D:
-	if _made.has(look):
-		return _made[look]
+## The material of `look`, in `colour` when one is given (magenta for a look nobody
+## defined and no colour, so it shows).
+static func material(look: String, colour := Color(0, 0, 0, 0)) -> StandardMaterial3D:
+	var key := _key(look, colour)
+	if _made.has(key):
+		return _made[key]
 	var made := StandardMaterial3D.new()
-	made.albedo_color = COLOURS.get(look, Color.MAGENTA)
+	made.albedo_color = colour if colour.a > 0.0 else COLOURS.get(look, Color.MAGENTA)
 	made.roughness = (
 		0.35 if look in ["paint", "helmet", "visor", "metal", "exhaust", "chain"] else 0.8
 	)
@@ -48,20 +50,21 @@ static func material(look: String) -> StandardMaterial3D:
 	if look in ["lamp", "tail_light"]:
 		made.emission_enabled = true
 		made.emission = made.albedo_color
-	_made[look] = made
+	_made[key] = made
 	return made
 
 
 ## The see-through version of `look` a ghost is drawn in: lit, tinted, casting no shadow.
-static func ghost_material(look: String) -> StandardMaterial3D:
-	if _ghosts.has(look):
-		return _ghosts[look]
-	var made := material(look).duplicate() as StandardMaterial3D
+static func ghost_material(look: String, colour := Color(0, 0, 0, 0)) -> StandardMaterial3D:
+	var key := _key(look, colour)
+	if _ghosts.has(key):
+		return _ghosts[key]
+	var made := material(look, colour).duplicate() as StandardMaterial3D
 	made.albedo_color = made.albedo_color.lerp(GHOST_TINT, 0.5)
 	made.albedo_color.a = GHOST_ALPHA
 	made.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
 	made.metallic = 0.0
-	_ghosts[look] = made
+	_ghosts[key] = made
 	return made
 
 
@@ -78,3 +81,7 @@ static func skin_material(ghost: bool) -> StandardMaterial3D:
 		made.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
 	_skins[ghost] = made
 	return made
+
+
+static func _key(look: String, colour: Color) -> String:
+	return look if colour.a <= 0.0 else "%s#%s" % [look, colour.to_html()]

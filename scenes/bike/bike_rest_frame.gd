@@ -54,6 +54,18 @@ func on_body(body: int, world_at_rest: Transform3D) -> Transform3D:
 	return _bodies[body].affine_inverse() * world_at_rest
 
 
+## The bike's key points at rest (bike frame) that bodywork is fitted to (BikeBodywork):
+## its axles, the swingarm's pivot, the top of the steering head and the rider's seat.
+func key_points() -> Dictionary:
+	return {
+		rear_axle = bike_of(_bodies[BikeSimulation.REAR_WHEEL].origin),
+		swingarm_pivot = capsule_ends(BikeSimulation.SWINGARM, FORWARD)[0],
+		steering_head = capsule_ends(BikeSimulation.FORK, DOWN)[1],
+		front_axle = bike_of(_bodies[BikeSimulation.FRONT_WHEEL].origin),
+		seat = capsule_ends(BikeSimulation.TORSO, DOWN)[0],
+	}
+
+
 ## The two ends (bike frame) of a body's capsule, the one furthest along `first_towards`
 ## (a bike-frame direction) first.
 func capsule_ends(body: int, first_towards: Vector3) -> Array[Vector3]:

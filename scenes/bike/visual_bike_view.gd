@@ -38,6 +38,8 @@ var _shock_rest_length := 1.0
 var _stanchion: Node3D
 var _fork_leg: Node3D
 var _rider: RiderFigure
+## The bike's paint (BikeDescription.paint).
+var _paint := Color.WHITE
 
 
 func _ready() -> void:
@@ -50,8 +52,10 @@ func _ready() -> void:
 		return
 	_frame = BikeRestFrame.new(_simulation)
 	_grip = _frame.capsule_ends(LOWER_ARM, -BIKE_FORWARD)[1]
+	var bike: BikeDescription = _simulation.bike if _simulation.bike else BikeDescription.new()
+	_paint = bike.paint
 	_build_wheels()
-	_build_frame()
+	_build_bodywork(bike)
 	_build_swingarm()
 	_build_fork()
 	_rider = RiderFigure.new()
@@ -174,28 +178,27 @@ func _build_wheels() -> void:
 			_add(body, disc, "metal", Transform3D(facing, hub - axle * 0.07))
 
 
-func _build_frame() -> void:
-	_box(FRAME, Vector3(0.05, 0.46, 0.0), Vector3(0.46, 0.34, 0.28), 0.0, "engine")
-	_ellipsoid(FRAME, Vector3(0.14, 0.94, 0.0), Vector3(0.52, 0.26, 0.36), "paint")
-	_box(FRAME, Vector3(-0.3, 0.88, 0.0), Vector3(0.5, 0.08, 0.26), -0.08, "seat")
-	_box(FRAME, Vector3(-0.64, 0.93, 0.0), Vector3(0.36, 0.09, 0.16), 0.22, "paint")
-	_box(FRAME, Vector3(-0.83, 0.99, 0.0), Vector3(0.04, 0.06, 0.12), 0.0, "tail_light")
-	_box(FRAME, Vector3(0.33, 0.62, 0.0), Vector3(0.05, 0.28, 0.3), -0.2, "metal")
-	for side: float in [-1.0, 1.0]:
-		_rod(
-			FRAME,
-			Vector3(0.34, 0.98, side * 0.08),
-			Vector3(-0.22, 0.5, side * 0.11),
-			0.025,
-			"frame"
-		)
-		_rod(
-			FRAME, Vector3(-0.05, 0.38, side * 0.2), Vector3(-0.1, 0.38, side * 0.2), 0.02, "metal"
-		)
-	_rod(FRAME, Vector3(0.0, 0.28, 0.15), Vector3(-0.42, 0.42, 0.2), 0.045, "metal")
-	_rod(FRAME, Vector3(-0.42, 0.42, 0.2), Vector3(-0.72, 0.52, 0.2), 0.06, "exhaust")
-	# The number plate under the tail light, leaning back with the tail.
-	_box(FRAME, Vector3(-0.86, 0.86, 0.0), Vector3(0.015, 0.13, 0.19), 0.3, "plate")
+## The bodywork on the frame (engine, tank, seat, tail, frame rails, exhaust), from the
+## bike's description, fitted to this bike's size.
+func _build_bodywork(bike: BikeDescription) -> void:
+	var bodywork := BikeBodywork.worn_by(bike)
+	var points := _frame.key_points()
+	for piece: BodyworkPiece in bodywork.pieces:
+		var sides: Array[float] = [1.0]
+		if piece.mirrored:
+			sides.append(-1.0)
+		for side in sides:
+			var mirror := Vector3(1.0, 1.0, side)
+			if piece.shape == BodyworkPiece.Shape.ROD:
+				var a := bodywork.fitted(piece.from * mirror, points)
+				var b := bodywork.fitted(piece.to * mirror, points)
+				_rod(FRAME, a, b, piece.radius, piece.look)
+				continue
+			var block := bodywork.fitted_block(piece.from * mirror, piece.size, piece.pitch, points)
+			if piece.shape == BodyworkPiece.Shape.ELLIPSOID:
+				_ellipsoid(FRAME, block.centre, block.size, block.pitch, piece.look)
+			else:
+				_box(FRAME, block.centre, block.size, block.pitch, piece.look)
 
 
 ## The swingarm's two arms from the pivot to the axle, and the rear shock from the frame
@@ -306,7 +309,9 @@ func _build_fork() -> void:
 		"lamp",
 		Transform3D(_frame.basis(), _frame.world_of(top + Vector3(0.14, -0.12, 0.0)))
 	)
-	_box(FORK_LOWER, axle + Vector3(0.0, 0.35, 0.0), Vector3(0.3, 0.03, 0.14), 0.0, "paint")
+	# The mudguard a few centimetres above the tyre, whatever its size.
+	var mudguard := axle + Vector3(0.0, _simulation.get_wheel_radius() + 0.05, 0.0)
+	_box(FORK_LOWER, mudguard, Vector3(0.3, 0.03, 0.14), 0.0, "paint")
 
 
 ## A capsule (rounded rod) from `a` to `b` (bike frame), `widen` times wider sideways.
@@ -329,11 +334,15 @@ func _box(body: int, centre: Vector3, size: Vector3, pitch: float, look: String)
 	_add(body, box, look, Transform3D(basis, _frame.world_of(centre)))
 
 
-func _ellipsoid(body: int, centre: Vector3, size: Vector3, look: String) -> void:
+func _ellipsoid(body: int, centre: Vector3, size: Vector3, pitch: float, look: String) -> void:
 	var sphere := SphereMesh.new()
 	sphere.radius = 0.5
 	sphere.height = 1.0
-	var basis := _frame.basis() * Basis.from_scale(Vector3(size.z, size.y, size.x))
+	var basis := (
+		_frame.basis()
+		* Basis(Vector3.RIGHT, pitch)
+		* Basis.from_scale(Vector3(size.z, size.y, size.x))
+	)
 	_add(body, sphere, look, Transform3D(basis, _frame.world_of(centre)))
 
 
@@ -341,11 +350,12 @@ func _ellipsoid(body: int, centre: Vector3, size: Vector3, look: String) -> void
 func _add(body: int, mesh: Mesh, look: String, world_at_rest: Transform3D) -> void:
 	var node := MeshInstance3D.new()
 	node.mesh = mesh
+	var colour := _paint if look == "paint" else Color(0, 0, 0, 0)
 	if ghost:
-		node.material_override = BikeLooks.ghost_material(look)
+		node.material_override = BikeLooks.ghost_material(look, colour)
 		node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	else:
-		node.material_override = BikeLooks.material(look)
+		node.material_override = BikeLooks.material(look, colour)
 	node.top_level = true
 	node.name = "%s_%d" % [look, _pieces.size()]
 	add_child(node)

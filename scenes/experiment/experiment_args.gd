@@ -41,9 +41,11 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 				args.physics = value
 			"trajectories":
 				args.trajectories.clear()
-				var most := BikeSimulation.max_trajectories()
+				var limits := BikeSimulation.trajectory_limits()
 				for item in value.split(","):
-					args.trajectories.append(int(_number(args, "trajectories", item, 1, most)))
+					args.trajectories.append(
+						int(_number(args, "trajectories", item, limits.x, limits.y))
+					)
 			"seed":
 				args.base_seed = int(_number(args, "seed", value, 0, 2_000_000_000))
 			"first":

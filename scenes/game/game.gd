@@ -3,7 +3,8 @@ extends Node3D
 ## One ride on one level: builds the level and the bike at its first spawn point, applies
 ## the player's settings, runs the level's rules and handles the game buttons (respawn,
 ## lift, spawn points, controller, trajectories, pause). The level comes from the
-## settings unless `level_path` names one.
+## settings unless `level_path` names one; the bike is the reference one unless
+## `bike_path` names another.
 
 const BIKE := preload("res://scenes/bike/bike.tscn")
 const REPLAY := preload("res://scenes/replay/replay.tscn")
@@ -13,6 +14,8 @@ const RESULT_PAUSE := 2.5
 
 ## Level scene to ride; empty: the one chosen in the settings.
 @export_file("*.tscn") var level_path := ""
+## Bike to ride (a BikeDescription file); empty: the reference bike.
+@export_file("*.tres") var bike_path := ""
 
 var level: Level
 var bike: BikeSimulation
@@ -38,6 +41,16 @@ var _crash_cause := ""
 @onready var _pause_menu: PauseMenu = $PauseMenu
 
 
+## The bike described at `path`, or none (the reference bike) with an error saying why.
+static func _bike_description(path: String) -> BikeDescription:
+	var description := (
+		load(path) as BikeDescription if ResourceLoader.exists(path, "BikeDescription") else null
+	)
+	if description == null:
+		push_error("Game: %s is not a bike description; riding the reference bike" % path)
+	return description
+
+
 func _ready() -> void:
 	var path := (
 		level_path if not level_path.is_empty() else Levels.path_of(Settings.get_value(&"level"))
@@ -56,6 +69,8 @@ func _ready() -> void:
 	bike = BIKE.instantiate() as BikeSimulation
 	bike.terrain_root = ^"../Level"
 	bike.wait_for_throttle = true
+	if not bike_path.is_empty():
+		bike.bike = _bike_description(bike_path)
 	if not spawns.is_empty():
 		bike.transform = spawns[0].spawn_transform()
 	add_child(bike)

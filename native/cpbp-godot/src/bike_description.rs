@@ -1,10 +1,14 @@
 //! `BikeDescription`: a bike as data, a resource file a level designer or a modder
 //! edits in the inspector (bikes/*.tres). `BikeSimulation.bike` takes one; a second bike
 //! is a second file. Its defaults are the core's reference bike (`BikeParams::default()`).
+//! Its looks (paint, bodywork) are the drawing's alone: the core never sees them.
 
 use cpbp_core::bike::BikeParams;
 use godot::classes::{IResource, Resource};
 use godot::prelude::*;
+
+/// The reference bike's paint.
+const STREET_ORANGE: Color = Color::from_rgb(0.92, 0.35, 0.08);
 
 /// Dimensions, masses and equipment of a bike and its rider.
 #[derive(GodotClass)]
@@ -47,6 +51,13 @@ pub struct BikeDescription {
     /// which then has no anti-wheelie, feet or front brake either).
     #[export]
     suspension: bool,
+    /// The colour of the tank and the bodywork.
+    #[export]
+    paint: Color,
+    /// The bodywork drawn on the frame (a `BikeBodywork` resource, fitted to this bike's
+    /// size); none draws the standard naked bodywork.
+    #[export]
+    bodywork: Option<Gd<Resource>>,
     base: Base<Resource>,
 }
 
@@ -67,6 +78,8 @@ impl IResource for BikeDescription {
             steer_limit_deg: reference.steer_limit.to_degrees(),
             tyre_friction: reference.tyre_friction,
             suspension: reference.suspension.is_some(),
+            paint: STREET_ORANGE,
+            bodywork: None,
             base,
         }
     }

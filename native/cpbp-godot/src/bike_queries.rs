@@ -79,10 +79,12 @@ impl BikeSimulation {
         physics_choice::names()
     }
 
-    /// The most trajectories a planner may simulate per control step (the core's limit).
+    /// The fewest (x) and most (y) trajectories a planner may simulate per control step
+    /// (the core's limit).
     #[func]
-    fn max_trajectories() -> i64 {
-        cpbp_core::ride::limits::TRAJECTORIES.max as i64
+    fn trajectory_limits() -> Vector2i {
+        let limit = cpbp_core::ride::limits::TRAJECTORIES;
+        Vector2i::new(limit.min as i32, limit.max as i32)
     }
 
     /// What menus show for controller `name` (empty for an unknown name).

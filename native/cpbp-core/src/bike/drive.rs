@@ -3,6 +3,10 @@
 
 use super::controls::{index, Controls, ForceClass};
 
+/// The fastest full throttle may be set to drive towards (km/h): the speed setting's top
+/// (`ride::limits::MAX_SPEED_KMH`) and the bound every drive input is held to.
+pub const TOP_SPEED_KMH: f64 = 90.0;
+
 /// What the player's triggers ask of the rear wheel.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DriveInput {
@@ -38,7 +42,7 @@ impl DriveInput {
             throttle: unit(self.throttle),
             brake: unit(self.brake),
             max_speed: if self.max_speed.is_finite() {
-                self.max_speed.clamp(0.0, 25.0)
+                self.max_speed.clamp(0.0, TOP_SPEED_KMH / 3.6)
             } else {
                 0.0
             },

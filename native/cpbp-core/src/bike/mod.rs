@@ -21,7 +21,7 @@ pub use controls::{
     UPPER,
 };
 pub use crash::{CrashCause, CrashMonitor};
-pub use drive::DriveInput;
+pub use drive::{DriveInput, TOP_SPEED_KMH};
 pub use feet::Feet;
 pub use front_brake::FrontBrake;
 pub use layout::Layout;

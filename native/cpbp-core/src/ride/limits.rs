@@ -3,6 +3,8 @@
 //! these, and the experiment's tools get the trajectory count's through the registry's
 //! copy (tools/cpbp_experiment/controllers.json). Each name says its unit.
 
+use crate::bike::TOP_SPEED_KMH;
+
 /// An inclusive range of one setting.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Limit {
@@ -50,7 +52,7 @@ pub const BASELINE_NOISE: Limit = Limit::new(0.05, 2.0);
 /// MPPI's temperature, relative to the spread of its candidates' costs.
 pub const MPPI_TEMPERATURE: Limit = Limit::new(0.001, 1.0);
 /// Speed full throttle drives towards (km/h).
-pub const MAX_SPEED_KMH: Limit = Limit::new(1.0, 90.0);
+pub const MAX_SPEED_KMH: Limit = Limit::new(1.0, TOP_SPEED_KMH);
 /// Share of the rear motor's torque that full throttle or brake uses.
 pub const MOTOR_FORCE: Limit = Limit::new(0.1, 1.0);
 
