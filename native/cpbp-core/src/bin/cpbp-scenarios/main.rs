@@ -60,8 +60,24 @@ pub(crate) struct Outcome {
     pub planning_ms: f64,
 }
 
+const USAGE: &str = "cpbp-scenarios [--controllers K,K…] [--counts N,N…] [--seeds FIRST-LAST] \
+[--scenarios S,S…] [--physics classic|exact] [--skip FILE]";
+const FLAGS: [&str; 6] = [
+    "--controllers",
+    "--counts",
+    "--seeds",
+    "--scenarios",
+    "--physics",
+    "--skip",
+];
+
 fn main() {
-    let args = match parse(std::env::args().skip(1).collect()) {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    if arguments.iter().any(|a| a == "--help" || a == "-h") {
+        println!("usage: {USAGE}\nscenarios: {}", scenario_names().join(", "));
+        return;
+    }
+    let args = match parse(arguments) {
         Ok(args) => args,
         Err(why) => {
             eprintln!("cpbp-scenarios: {why}");
@@ -103,6 +119,14 @@ fn main() {
 }
 
 fn parse(arguments: Vec<String>) -> Result<Args, String> {
+    // Anything but a known flag and its value is refused, not ignored: a mistyped flag
+    // would otherwise ride the defaults for an hour.
+    for (i, argument) in arguments.iter().enumerate() {
+        let is_value = i > 0 && FLAGS.contains(&arguments[i - 1].as_str());
+        if !is_value && !FLAGS.contains(&argument.as_str()) {
+            return Err(format!("unknown argument {argument}; usage: {USAGE}"));
+        }
+    }
     let value = |flag: &str| {
         arguments
             .iter()
@@ -127,9 +151,15 @@ fn parse(arguments: Vec<String>) -> Result<Args, String> {
     let counts = value("--counts")?
         .unwrap_or("5,10,20".into())
         .split(',')
-        .map(|n| match n.parse() {
-            Ok(n @ 1..=256) => Ok(n),
-            _ => Err(format!("trajectory counts are 1–256, not {n}")),
+        .map(|n| {
+            let limit = cpbp_core::ride::limits::TRAJECTORIES;
+            match n.parse::<usize>() {
+                Ok(n) if (limit.min..=limit.max).contains(&(n as f64)) => Ok(n),
+                _ => Err(format!(
+                    "trajectory counts are {}–{}, not {n}",
+                    limit.min, limit.max
+                )),
+            }
         })
         .collect::<Result<_, _>>()?;
     let seeds = value("--seeds")?.unwrap_or("0-9".into());
@@ -306,4 +336,30 @@ pub(crate) fn new_ride(rider: Rider, kmh: f64, slope: f64) -> Ride {
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(kmh));
     ride
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse;
+
+    fn words(line: &str) -> Vec<String> {
+        line.split_whitespace().map(String::from).collect()
+    }
+
+    #[test]
+    fn flags_and_their_values_parse_and_anything_else_is_refused() {
+        let args = parse(words("--counts 5,15 --seeds 2-4 --scenarios stop40")).unwrap();
+        assert_eq!(args.counts, vec![5, 15]);
+        assert_eq!(args.seeds, vec![2, 3, 4]);
+        assert_eq!(args.scenarios, vec!["stop40"]);
+        for wrong in [
+            "--seed 3",
+            "stop40",
+            "--counts 0",
+            "--counts 300",
+            "--seeds 4-2",
+        ] {
+            assert!(parse(words(wrong)).is_err(), "{wrong} was accepted");
+        }
+    }
 }
