@@ -7,6 +7,7 @@ use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
 use rayon::prelude::*;
 
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use super::config::{PlanPhases, PlanResult, PlannerConfig, WarmStart};
@@ -49,7 +50,7 @@ impl Guide {
 pub struct Planner {
     pub config: PlannerConfig,
     pub priors: Priors,
-    pool: rayon::ThreadPool,
+    pool: Arc<rayon::ThreadPool>,
     memory: Option<Memory>,
     applied: AppliedControls,
     frame: u64,
@@ -61,7 +62,7 @@ impl Planner {
     pub fn new(config: PlannerConfig, priors: Priors) -> Self {
         Self {
             applied: AppliedControls::at_rest(&priors.mean),
-            pool: rollout_pool(config.threads, "cpbp"),
+            pool: Arc::new(rollout_pool(config.threads, "cpbp")),
             config,
             priors,
             memory: None,
@@ -85,6 +86,18 @@ impl Planner {
     /// Plans one frame from `start` with one system per particle (`systems.len()` ≥ N);
     /// `warm` says what particle 1 replays.
     pub fn plan<S: RolloutSystem>(
+        &mut self,
+        systems: &mut [S],
+        start: &S::State,
+        warm: WarmStart<'_>,
+    ) -> PlanResult {
+        // The whole frame runs on the rollout threads: handing each of its K steps from the
+        // caller's thread to the pool and back put the kernel's scheduler in every step.
+        let pool = Arc::clone(&self.pool);
+        pool.install(|| self.plan_on_pool(systems, start, warm))
+    }
+
+    fn plan_on_pool<S: RolloutSystem>(
         &mut self,
         systems: &mut [S],
         start: &S::State,
@@ -139,11 +152,18 @@ impl Planner {
         k: usize,
     ) -> Vec<Outcome<S::State>> {
         let n = parents.len();
+        // One run of particles per thread, the calling thread taking the first: it starts
+        // at once while the others wake, and it carries the largest share when N does not
+        // divide evenly, so waking never adds to the step's critical path.
+        let run = n.div_ceil(self.pool.current_num_threads().max(1));
         self.pool.install(|| {
             systems[..n]
-                .par_iter_mut()
-                .zip(rngs.par_iter_mut())
+                .par_chunks_mut(run)
+                .zip(rngs[..n].par_chunks_mut(run))
                 .enumerate()
+                .flat_map_iter(|(c, (systems, rngs))| {
+                    (c * run..).zip(systems.iter_mut().zip(rngs.iter_mut()))
+                })
                 .map(|(i, (system, rng))| {
                     let from = &particles.all[parents[i]];
                     let parent = (&from.previous[..], &from.before_previous[..]);
