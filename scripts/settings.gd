@@ -6,7 +6,7 @@ extends Node
 ## A setting changed (by a menu or by a key); `key` is its name.
 signal changed(key: StringName)
 
-## Trajectory counts the menus offer.
+## Trajectory counts the menus offer, after "auto" (the planner's N follows the machine).
 const TRAJECTORY_CHOICES: Array[int] = [5, 10, 15, 32, 64, 128]
 ## Speeds auto-accelerate offers (km/h): the thesis tested 10, 15, 20 and 25.
 const AUTO_SPEEDS: Array[int] = [10, 15, 20, 25]
@@ -16,6 +16,7 @@ const AUTO_SPEEDS: Array[int] = [10, 15, 20, 25]
 const DEFAULTS := {
 	&"level": "test_level",
 	&"trajectories": 15,
+	&"auto_trajectories": true,
 	&"controller": "combined",
 	&"show_trajectories": true,
 	&"physical_model": false,
@@ -113,6 +114,37 @@ func set_value(key: StringName, value: Variant) -> void:
 	if key == &"master_volume":
 		_apply_master_volume()
 	changed.emit(key)
+
+
+## What the menus' trajectory list shows: "auto", then each fixed count.
+static func trajectory_labels() -> PackedStringArray:
+	var limits := BikeSimulation.auto_trajectory_limits()
+	var labels := PackedStringArray(["auto trajectories (%d–%d)" % [limits.x, limits.y]])
+	for count in TRAJECTORY_CHOICES:
+		labels.append("%d trajectories" % count)
+	return labels
+
+
+## The entry of `trajectory_labels()` the settings hold (a fixed count no menu offers
+## shows as the nearest offered).
+func trajectory_choice() -> int:
+	if get_value(&"auto_trajectories"):
+		return 0
+	var count: int = get_value(&"trajectories")
+	var nearest := 0
+	for i in TRAJECTORY_CHOICES.size():
+		if absi(TRAJECTORY_CHOICES[i] - count) < absi(TRAJECTORY_CHOICES[nearest] - count):
+			nearest = i
+	return nearest + 1
+
+
+## Picks entry `index` of `trajectory_labels()`: auto, or a fixed count.
+func choose_trajectories(index: int) -> void:
+	if index <= 0:
+		set_value(&"auto_trajectories", true)
+		return
+	set_value(&"trajectories", TRAJECTORY_CHOICES[mini(index, TRAJECTORY_CHOICES.size()) - 1])
+	set_value(&"auto_trajectories", false)
 
 
 ## The master bus plays at the player's volume (silent at 0).

@@ -243,6 +243,8 @@ func _apply_setting(key: StringName) -> void:
 			bike.controller = value
 		&"trajectories":
 			bike.trajectories = value
+		&"auto_trajectories":
+			bike.auto_trajectories = value
 		&"motor_force":
 			bike.motor_force = value
 		&"max_speed_kmh":

@@ -1,9 +1,10 @@
 class_name Hud
 extends CanvasLayer
 ## The riding HUD: lean dial (wanted vs actual lean), the rider's weight (asked vs
-## actual), speed, controller with its trajectory count and planning time, frame rate, the
-## level's timer line, attempt tally, banners for what just happened, and the split
-## against a ghost at each checkpoint.
+## actual), speed, controller with its trajectory count (and whether the game picks it),
+## planning time and late plans a second, frame rate, the level's timer line, attempt
+## tally, banners for what just happened, and the split against a ghost at each
+## checkpoint.
 
 ## Seconds a banner stays before fading.
 const BANNER_SECONDS := 3.0
@@ -11,6 +12,10 @@ const BANNER_SECONDS := 3.0
 var _game: Game
 var _banner_left := 0.0
 var _split_left := 0.0
+## Late plans counted at the last whole second, and how many came in that second.
+var _late_counted := 0
+var _late_last_second := 0
+var _late_clock := 0.0
 
 @onready var _dial: LeanDial = %LeanDial
 @onready var _rider: RiderPad = %RiderPad
@@ -75,8 +80,13 @@ func _process(delta: float) -> void:
 		controller += "  ·  planner failed, arcade steers (%s)" % failure
 	elif BikeSimulation.controller_plans(bike.controller):
 		controller += (
-			"  ·  %d trajectories  ·  planning %.1f ms"
-			% [bike.trajectories, bike.get_planning_ms()]
+			"  ·  %s%d trajectories  ·  planning %.1f ms  ·  %d late/s"
+			% [
+				"auto: " if bike.auto_trajectories else "",
+				bike.get_trajectories_in_use(),
+				bike.get_planning_ms(),
+				_late_per_second(bike, delta),
+			]
 		)
 	_controller.text = controller
 	_performance.text = "%d fps" % Engine.get_frames_per_second()
@@ -87,6 +97,17 @@ func _process(delta: float) -> void:
 		status += "   ·   falls %d" % _game.falls
 	_status.text = status
 	_hint.text = _hint_text(bike)
+
+
+## Plans that came too late in the last whole second (the count restarts with the ride).
+func _late_per_second(bike: BikeSimulation, delta: float) -> int:
+	_late_clock += delta
+	if _late_clock >= 1.0:
+		var count := bike.get_late_plan_count()
+		_late_last_second = maxi(count - _late_counted, 0)
+		_late_counted = count
+		_late_clock = 0.0
+	return _late_last_second
 
 
 func _hint_text(bike: BikeSimulation) -> String:

@@ -54,8 +54,8 @@ func _ready() -> void:
 	_controls.text = CONTROLS
 	for name in NativeModule.controller_names():
 		_controller.add_item(NativeModule.controller_label(name))
-	for count in Settings.TRAJECTORY_CHOICES:
-		_trajectory_count.add_item("%d trajectories" % count)
+	for label in Settings.trajectory_labels():
+		_trajectory_count.add_item(label)
 	for speed in Settings.AUTO_SPEEDS:
 		_auto_speed.add_item("%d km/h" % speed)
 	_resume.pressed.connect(close)
@@ -72,7 +72,9 @@ func _ready() -> void:
 		func(i: int) -> void: _save(NativeModule.controller_names()[i], &"controller")
 	)
 	_trajectory_count.item_selected.connect(
-		func(i: int) -> void: _save(Settings.TRAJECTORY_CHOICES[i], &"trajectories")
+		func(i: int) -> void:
+			if not _syncing:
+				Settings.choose_trajectories(i)
 	)
 	_auto_speed.item_selected.connect(
 		func(i: int) -> void: _save(Settings.AUTO_SPEEDS[i], &"auto_speed_kmh")
@@ -110,9 +112,7 @@ func _sync() -> void:
 	_controller.selected = maxi(
 		NativeModule.controller_names().find(Settings.get_value(&"controller")), 0
 	)
-	_trajectory_count.selected = maxi(
-		Settings.TRAJECTORY_CHOICES.find(Settings.get_value(&"trajectories")), 0
-	)
+	_trajectory_count.selected = Settings.trajectory_choice()
 	_auto_speed.selected = maxi(Settings.AUTO_SPEEDS.find(Settings.get_value(&"auto_speed_kmh")), 0)
 	_update_labels()
 	_syncing = false

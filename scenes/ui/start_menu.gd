@@ -58,14 +58,10 @@ func _build_choices() -> void:
 	_controller.item_selected.connect(
 		func(i: int) -> void: Settings.set_value(&"controller", NativeModule.controller_names()[i])
 	)
-	for count in Settings.TRAJECTORY_CHOICES:
-		_trajectories.add_item("%d trajectories" % count)
-	_trajectories.selected = maxi(
-		Settings.TRAJECTORY_CHOICES.find(Settings.get_value(&"trajectories")), 0
-	)
-	_trajectories.item_selected.connect(
-		func(i: int) -> void: Settings.set_value(&"trajectories", Settings.TRAJECTORY_CHOICES[i])
-	)
+	for label in Settings.trajectory_labels():
+		_trajectories.add_item(label)
+	_trajectories.selected = Settings.trajectory_choice()
+	_trajectories.item_selected.connect(Settings.choose_trajectories)
 	for speed in Settings.AUTO_SPEEDS:
 		_auto_speed.add_item("test speed %d km/h" % speed)
 	_auto_speed.selected = maxi(Settings.AUTO_SPEEDS.find(Settings.get_value(&"auto_speed_kmh")), 0)

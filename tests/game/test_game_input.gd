@@ -155,7 +155,8 @@ func test_spawn_buttons_cycle_through_the_spawn_points() -> void:
 
 
 func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
-	Settings.set_value(&"trajectories", 5)
+	Settings.choose_trajectories(Settings.TRAJECTORY_CHOICES.find(5) + 1)
+	assert_false(_game.bike.auto_trajectories, "a fixed count turns the automatic choice off")
 	Input.action_press(&"throttle", 0.5)
 	var seen: Array[String] = []
 	var view: TrajectoryView = _game.bike.get_node("TrajectoryView")

@@ -17,6 +17,26 @@ func test_a_change_is_saved_at_once_and_read_back() -> void:
 	assert_eq(Settings.get_value(&"trajectories"), 32)
 
 
+func test_the_trajectory_list_is_auto_then_the_fixed_counts() -> void:
+	var labels := Settings.trajectory_labels()
+	assert_eq(labels.size(), Settings.TRAJECTORY_CHOICES.size() + 1)
+	var limits := BikeSimulation.auto_trajectory_limits()
+	assert_eq(labels[0], "auto trajectories (%d–%d)" % [limits.x, limits.y])
+	assert_eq(Settings.trajectory_choice(), 0, "auto is the default")
+	Settings.choose_trajectories(3)
+	assert_eq(Settings.get_value(&"trajectories"), Settings.TRAJECTORY_CHOICES[2])
+	assert_false(Settings.get_value(&"auto_trajectories"))
+	Settings.reload()
+	assert_eq(Settings.trajectory_choice(), 3, "the fixed choice survives a restart")
+	Settings.choose_trajectories(0)
+	assert_true(Settings.get_value(&"auto_trajectories"))
+	assert_eq(Settings.get_value(&"trajectories"), Settings.TRAJECTORY_CHOICES[2], "kept")
+	# A count set by hand that no menu offers shows as the nearest offered.
+	Settings.set_value(&"auto_trajectories", false)
+	Settings.set_value(&"trajectories", 30)
+	assert_eq(Settings.trajectory_choice(), Settings.TRAJECTORY_CHOICES.find(32) + 1)
+
+
 func test_wrong_types_and_unknown_keys_are_refused() -> void:
 	expect_error("must be")
 	Settings.set_value(&"trajectories", "many")

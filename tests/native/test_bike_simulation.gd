@@ -155,6 +155,30 @@ func test_late_plans_are_counted_and_none_come_when_waiting_for_every_plan() -> 
 	assert_eq(_bike.get_late_plan_count(), 0, "every step waited for its plan")
 
 
+func test_the_automatic_count_moves_n_only_where_plans_may_come_late() -> void:
+	var start := Transform3D(Basis(), Vector3(0, 0.02, 0))
+	await _spawn(start)
+	_bike.set_physics_process(false)
+	_bike.controller = "combined"
+	assert_eq(_bike.get_trajectories_in_use(), 0, "no planner has run yet")
+	_bike.auto_trajectories = true
+	_bike.trajectories = 200
+	_bike.plan_wait_ms = 0.0
+	_bike.set_drive(1.0, 0.0)
+	_bike.advance(20)
+	var limits := BikeSimulation.auto_trajectory_limits()
+	var n := _bike.get_trajectories_in_use()
+	assert_between(n, limits.x, limits.y - 1, "200 asked, clamped to the range, then lowered")
+	# Waiting for every plan, no plan is late and a ride must repeat: N is the setting's.
+	_bike.wait_for_every_plan = true
+	_bike.trajectories = 6
+	_bike.advance(3)
+	assert_eq(_bike.get_trajectories_in_use(), 6)
+	_bike.controller = "arcade"
+	_bike.advance(1)
+	assert_eq(_bike.get_trajectories_in_use(), 0, "the arcade controller plans nothing")
+
+
 func test_a_dying_planner_is_reported_once_and_the_arcade_controller_steps_in() -> void:
 	var start := Transform3D(Basis(), Vector3(0, 0.02, 0))
 	await _spawn(start)

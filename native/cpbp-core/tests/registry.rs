@@ -69,6 +69,9 @@ const STILL_BAR_COST: f64 = 42.0;
 impl BikePlanner for StillBar {
     fn reset(&mut self) {}
 
+    /// It plans the one trajectory whatever N.
+    fn set_trajectories(&mut self, _n: usize) {}
+
     fn note_applied(&mut self, _control: &[f64]) {}
 
     fn plan(&mut self, rollouts: &mut [BikeRollout], _start: &WorldState) -> PlanResult {

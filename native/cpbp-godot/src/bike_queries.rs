@@ -87,6 +87,21 @@ impl BikeSimulation {
         Vector2i::new(limit.min as i32, limit.max as i32)
     }
 
+    /// The fewest (x) and most (y) trajectories the automatic choice moves between.
+    #[func]
+    fn auto_trajectory_limits() -> Vector2i {
+        let limit = cpbp_core::ride::limits::AUTO_TRAJECTORIES;
+        Vector2i::new(limit.min as i32, limit.max as i32)
+    }
+
+    /// Trajectories the active planner plans with now (the automatic choice's, or
+    /// `trajectories`); 0 while no planner drives.
+    #[func]
+    fn get_trajectories_in_use(&self) -> i64 {
+        let n = self.ride.as_ref().and_then(|r| r.trajectories());
+        n.map_or(0, |n| n as i64)
+    }
+
     /// What menus show for controller `name` (empty for an unknown name).
     #[func]
     fn controller_label(name: GString) -> GString {

@@ -72,6 +72,7 @@ impl BikeSimulation {
         }
         PlannerSettings {
             optimizer,
+            auto_trajectories: self.auto_trajectories,
             wait: if self.wait_for_every_plan {
                 PlanWait::EveryPlan
             } else {

@@ -63,10 +63,17 @@ pub struct BikeSimulation {
     #[export]
     #[init(val = ControllerChoice(ControllerKind::ARCADE))]
     pub(crate) controller: ControllerChoice,
-    /// Trajectories the optimizer simulates each control step (N).
+    /// Trajectories the optimizer simulates each control step (N); with
+    /// `auto_trajectories`, the N it starts from.
     #[export(range = (limits::TRAJECTORIES.min, limits::TRAJECTORIES.max))]
     #[init(val = OptimizerConfig::default().particles as i32)]
     pub(crate) trajectories: i32,
+    /// Move N while riding to what this machine plans in time (within
+    /// `auto_trajectory_limits()`): fewer when plans come late, more after a calm spell.
+    /// Ignored with `wait_for_every_plan`, whose rides must repeat exactly. The game turns
+    /// it on from the player's settings (the default there).
+    #[export]
+    pub(crate) auto_trajectories: bool,
     /// How far ahead the optimizer plans (s); the thesis used 1.2 s.
     #[export(range = (limits::HORIZON_S.min, limits::HORIZON_S.max, 0.1, suffix = "s"))]
     #[init(val = OptimizerConfig::default().horizon)]

@@ -53,6 +53,8 @@ pub struct Plan {
     /// control step from `step` on.
     pub sequence: Vec<Controls>,
     pub best_cost: f64,
+    /// Trajectories it was planned with (N).
+    pub trajectories: usize,
     pub resamples: usize,
     pub blowups: usize,
     pub planning_ms: f64,
@@ -301,6 +303,12 @@ fn plan_requests(
         replica.step();
         let optimizer = match &mut optimizer {
             Some(o) if o.config == request.config => o,
+            // The automatic N moves N while riding: keep the planner, its memory and its
+            // worlds rather than building them anew.
+            Some(o) if o.config.differs_only_in_trajectories(&request.config) => {
+                o.set_trajectories(&replica, request.config.particles);
+                o
+            }
             slot => slot.insert(BikeOptimizer::new(&replica, spec, request.config.clone())),
         };
         if request.reset {
@@ -316,6 +324,7 @@ fn plan_requests(
             step: request.step,
             sequence: optimizer.chosen_sequence(),
             best_cost: result.best_cost,
+            trajectories: optimizer.config.particles,
             resamples: result.resamples,
             blowups: result.blowups,
             planning_ms: started.elapsed().as_secs_f64() * 1000.0,

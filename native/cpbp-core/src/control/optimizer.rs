@@ -97,6 +97,15 @@ impl OptimizerConfig {
             ..self
         }
     }
+
+    /// Whether `other` plans as this does but for the number of trajectories: a planner
+    /// can switch between the two without being built anew.
+    pub fn differs_only_in_trajectories(&self, other: &Self) -> bool {
+        Self {
+            particles: other.particles,
+            ..self.clone()
+        } == *other
+    }
 }
 
 /// The planner, its rollout worlds, and the arcade controller it can lean on.
@@ -114,28 +123,43 @@ impl BikeOptimizer {
     pub fn new(sim: &Simulation, spec: &'static PlannerSpec, config: OptimizerConfig) -> Self {
         let dt = sim.config().control_dt;
         let steps = (config.horizon / dt).round().max(1.0) as usize;
-        let rollout = || BikeRollout {
-            world: {
-                let mut world = sim.new_world();
-                world.set_solver(config.rollout_solver);
-                world
-            },
-            bike: sim.bike().clone(),
-            gravity: sim.config().gravity,
-            up: sim.up(),
-            step_dt: dt,
-            stepping: config.rollout_stepping,
-            goal: Goal::default(),
-            tolerances: config.tolerances,
-            policy: None,
-        };
-        Self {
+        let mut optimizer = Self {
             planner: (spec.build)(&config, steps),
             spec,
-            rollouts: (0..config.particles.max(1)).map(|_| rollout()).collect(),
+            rollouts: Vec::new(),
             arcade: ArcadeController::default(),
             last: None,
             config,
+        };
+        optimizer.add_rollouts(sim, dt);
+        optimizer
+    }
+
+    /// Plans with `n` trajectories from the next plan on, keeping the planner's memory;
+    /// worlds are added when N grows past every N before (and kept when it shrinks).
+    pub fn set_trajectories(&mut self, sim: &Simulation, n: usize) {
+        self.config.particles = n.max(1);
+        self.planner.set_trajectories(self.config.particles);
+        self.add_rollouts(sim, sim.config().control_dt);
+    }
+
+    /// Rollout worlds like the master of `sim` until there is one per trajectory.
+    fn add_rollouts(&mut self, sim: &Simulation, step_dt: f64) {
+        let config = &self.config;
+        while self.rollouts.len() < config.particles.max(1) {
+            let mut world = sim.new_world();
+            world.set_solver(config.rollout_solver);
+            self.rollouts.push(BikeRollout {
+                world,
+                bike: sim.bike().clone(),
+                gravity: sim.config().gravity,
+                up: sim.up(),
+                step_dt,
+                stepping: config.rollout_stepping,
+                goal: Goal::default(),
+                tolerances: config.tolerances,
+                policy: None,
+            });
         }
     }
 

@@ -25,6 +25,9 @@ pub trait BikePlanner: Send {
     fn plan(&mut self, rollouts: &mut [BikeRollout], start: &WorldState) -> PlanResult;
     /// Where the last plan's time went.
     fn phases(&self) -> PlanPhases;
+    /// Plans with `n` trajectories from the next plan on, keeping what it remembers (the
+    /// game's automatic N moves it while riding).
+    fn set_trajectories(&mut self, n: usize);
 }
 
 /// How to build a planner, and what its rollouts need.
@@ -121,6 +124,10 @@ impl BikePlanner for Cpbp {
     fn phases(&self) -> PlanPhases {
         self.planner.phases
     }
+
+    fn set_trajectories(&mut self, n: usize) {
+        self.planner.config.particles = n.max(1);
+    }
 }
 
 /// Predictive sampling or MPPI as the baseline settings say.
@@ -159,6 +166,10 @@ impl BikePlanner for SamplingPlanner {
 
     fn phases(&self) -> PlanPhases {
         self.phases
+    }
+
+    fn set_trajectories(&mut self, n: usize) {
+        self.config.samples = n.max(1);
     }
 }
 

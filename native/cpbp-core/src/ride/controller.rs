@@ -76,13 +76,30 @@ pub trait Controller: Send {
     /// Fails as a dying planning thread would (tests of the fallback and its report);
     /// nothing for controllers without one.
     fn inject_fault(&mut self, _message: &str) {}
+    /// Trajectories it plans with now (planners only): the setting's, or the automatic
+    /// choice's.
+    fn trajectories(&self) -> Option<usize> {
+        None
+    }
 }
 
 /// How the planners plan: the optimizer's settings and how long the ride waits for a plan.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlannerSettings {
+    /// `optimizer.particles` is N, or where the automatic choice starts from.
     pub optimizer: OptimizerConfig,
     pub wait: PlanWait,
+    /// Move N while riding to what this machine plans in time (`AutoTrajectories`).
+    /// Only where the ride waits at most a while for a plan: a ride that waits for every
+    /// plan is never late, and must repeat exactly whatever the machine.
+    pub auto_trajectories: bool,
+}
+
+impl PlannerSettings {
+    /// Whether N moves with the machine's speed.
+    pub fn picks_trajectories(&self) -> bool {
+        self.auto_trajectories && matches!(self.wait, PlanWait::AtMost(_))
+    }
 }
 
 /// Longest the game waits at a control step for a plan: a frame of 60 Hz less what
@@ -95,6 +112,7 @@ impl Default for PlannerSettings {
         Self {
             optimizer: OptimizerConfig::default(),
             wait: PlanWait::AtMost(GAME_PLAN_WAIT),
+            auto_trajectories: false,
         }
     }
 }

@@ -1,6 +1,7 @@
 //! The controllers behind the registry: thin adapters from the one controller interface to
 //! the arcade controller, manual driving and the planning thread.
 
+use super::auto_trajectories::AutoTrajectories;
 use super::controller::{Controller, Intent, PlannerSettings, RideState};
 use crate::bike::{manual_controls, Controls};
 use crate::control::{AnytimeOptimizer, ArcadeController, HandoverStats, Plan, PlannerSpec};
@@ -51,21 +52,74 @@ impl Controller for ManualDriver {
 /// A planner on its own thread, handed over at control steps.
 pub struct PlannerDriver {
     anytime: AnytimeOptimizer,
+    /// The automatic N, while the settings ask for it; it outlives resets (the machine
+    /// did not change) but starts afresh when N's setting or the choice does.
+    auto: Option<(usize, AutoTrajectories)>,
+    /// The step of the last plan whose time `auto` was told.
+    timed_plan: Option<u64>,
+    trajectories: usize,
 }
 
 impl PlannerDriver {
     pub fn new(sim: &Simulation, spec: &'static PlannerSpec, planner: &PlannerSettings) -> Self {
         Self {
             anytime: AnytimeOptimizer::new(sim, spec, planner.wait),
+            auto: None,
+            timed_plan: None,
+            trajectories: planner.optimizer.particles,
         }
+    }
+
+    /// The automatic N for the next request, while the settings ask for one (it starts
+    /// afresh from the setting's N when that changes).
+    fn automatic(&mut self, settings: &PlannerSettings, period_s: f64) -> Option<usize> {
+        let start = settings.optimizer.particles;
+        if !settings.picks_trajectories() {
+            self.auto = None;
+            return None;
+        }
+        match &mut self.auto {
+            Some((from, _)) if *from == start => {}
+            slot => *slot = Some((start, AutoTrajectories::new(start, period_s))),
+        }
+        self.auto.as_ref().map(|(_, auto)| auto.trajectories())
+    }
+
+    /// Tells the automatic N how the step went: the newest plan's time, and whether the
+    /// step's plan was late.
+    fn note_step(&mut self, late: bool) {
+        let Some((_, auto)) = &mut self.auto else {
+            return;
+        };
+        if let Some(plan) = self
+            .anytime
+            .plan()
+            .filter(|p| Some(p.step) != self.timed_plan)
+        {
+            auto.note_plan(plan.planning_ms, plan.trajectories);
+            self.timed_plan = Some(plan.step);
+        }
+        auto.note_step(late);
     }
 }
 
 impl Controller for PlannerDriver {
     fn controls(&mut self, state: &RideState<'_>, _intent: &Intent) -> Controls {
         self.anytime.wait = state.planner.wait;
-        self.anytime
-            .controls(state.sim, &state.goal, &state.planner.optimizer)
+        let mut config = state.planner.optimizer.clone();
+        let period = state.sim.config().control_dt;
+        if let Some(n) = self.automatic(state.planner, period) {
+            config.particles = n;
+        }
+        self.trajectories = config.particles;
+        let late_before = self.anytime.stats.late;
+        let controls = self.anytime.controls(state.sim, &state.goal, &config);
+        self.note_step(self.anytime.stats.late > late_before);
+        controls
+    }
+
+    fn trajectories(&self) -> Option<usize> {
+        Some(self.trajectories)
     }
 
     fn reset(&mut self) {

@@ -31,6 +31,8 @@ impl Limit {
 
 /// Trajectories a planner simulates per control step (N).
 pub const TRAJECTORIES: Limit = Limit::new(1.0, 256.0);
+/// The trajectories the game's automatic choice moves between (`auto_trajectories`).
+pub const AUTO_TRAJECTORIES: Limit = Limit::new(5.0, 64.0);
 /// How far ahead the planners plan (s).
 pub const HORIZON_S: Limit = Limit::new(0.2, 3.0);
 /// Lean error that costs one unit (degrees).

@@ -3,11 +3,13 @@
 //! experiment, the benchmarks and the tests all ride through this, so the rules (the start
 //! gate, when plans are forgotten, what counts as a late plan) exist once.
 
+mod auto_trajectories;
 mod controller;
 mod drivers;
 pub mod limits;
 mod registry;
 
+pub use auto_trajectories::AutoTrajectories;
 pub use controller::{Controller, Intent, PlannerSettings, RideState, GAME_PLAN_WAIT};
 pub use registry::{ControllerEntry, ControllerKind, Drives};
 
@@ -147,6 +149,13 @@ impl Ride {
     pub fn plan(&self) -> Option<&Plan> {
         let driver = self.last_driver.filter(|k| k.plans())?;
         self.built_controller(driver)?.plan()
+    }
+
+    /// Trajectories the active planner plans with now: the setting's N, or the one the
+    /// automatic choice settled on (None for controllers that do not plan, or before the
+    /// planner ran).
+    pub fn trajectories(&self) -> Option<usize> {
+        self.built_controller(self.kind)?.trajectories()
     }
 
     /// Hand-over statistics of the active planner (None for the others, or before it ran).

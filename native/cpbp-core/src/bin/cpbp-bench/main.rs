@@ -1,13 +1,18 @@
 //! `make bench`: prints the performance figures recorded in docs/benchmarks.md.
 //! Timings are medians of several runs so one noisy run does not move them.
+//! `cpbp-bench planning` prints only the game physics' planning table, for comparing two
+//! builds run alternately.
 
 mod fidelity;
+mod planning;
+
+use planning::{planning_ms, planning_table};
 
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use cpbp_core::bike::{Controls, DriveInput, Placement};
-use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, PlanWait};
+use cpbp_core::control::PlanWait;
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -27,6 +32,10 @@ fn main() {
     );
     println!("ODE: {}", info.ode.raw);
     println!();
+    if std::env::args().nth(1).as_deref() == Some("planning") {
+        planning_table(PhysicsModel::default(), None);
+        return;
+    }
     println!("{:<58} {:>14}", "figure", "value");
     let row = |name: &str, value: String| println!("{name:<58} {value:>14}");
 
@@ -54,7 +63,7 @@ fn main() {
     row("snapshot of the bike world", format!("{snapshot:.2} µs"));
     row("restore of the bike world", format!("{restore:.2} µs"));
     for model in PhysicsModel::ALL {
-        planning_table(model, [bike_step, spheres]);
+        planning_table(model, Some([bike_step, spheres]));
     }
 
     planners_side_by_side();
@@ -84,51 +93,6 @@ fn main() {
     }
 }
 
-/// The combined planner's cost in `model`'s physics on flat ground at 15 km/h: ms per
-/// control step for N trajectories on 1 and 2 threads, the same rollouts stepped without
-/// the planner, the efficiency (the second over the first, both on 2 threads) and the
-/// largest real-time N.
-/// `references`: one classic bike step and one 15-sphere step (µs), for the cost of a
-/// planning step as a ratio.
-fn planning_table(model: PhysicsModel, [bike_step, spheres]: [f64; 2]) {
-    let flat = rolling_bike(Arc::new(Terrain::flat()), model);
-    let stepping = model.rollout_stepping();
-    let solver = model.rollout_solver();
-    println!();
-    println!(
-        "C-PBP, combined mode, {} physics: 1.2 s horizon (36 steps, {solver:?} {stepping}), 15 km/h:",
-        model.name()
-    );
-    println!(
-        "{:<14} {:>16} {:>16} {:>18} {:>12}",
-        "trajectories", "1 thread (ms)", "2 threads (ms)", "rollouts alone", "efficiency"
-    );
-    let (mut largest_real_time, mut one_thread_64) = (0, 0.0);
-    for n in [5, 10, 15, 32, 64, 128] {
-        let (one, _) = planning_ms(&flat, ControllerKind::COMBINED, n, 1);
-        if n == 64 {
-            one_thread_64 = one;
-        }
-        let (two, sequences) = planning_ms(&flat, ControllerKind::COMBINED, n, 2);
-        let alone = median(|| rollouts_alone_ms(&flat, &sequences, 2));
-        let efficiency = alone / two;
-        println!("{n:<14} {one:>16.1} {two:>16.1} {alone:>15.1} ms {efficiency:>12.2}");
-        if two <= 1000.0 / 30.0 {
-            largest_real_time = n;
-        }
-    }
-    println!(
-        "largest N planning within the 33 ms control period on 2 threads: {largest_real_time}"
-    );
-    let per_step = one_thread_64 * 1000.0 / (64 * 36) as f64;
-    println!(
-        "one planning step of one trajectory (N = 64, 1 thread): {per_step:.1} µs = {:.2} classic \
-         bike steps = {:.2} 15-sphere steps",
-        per_step / bike_step,
-        per_step / spheres
-    );
-}
-
 /// Every planning mode's cost per control step in the game's physics on 2 threads.
 fn planners_side_by_side() {
     let flat = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
@@ -154,42 +118,6 @@ fn planners_side_by_side() {
             .collect();
         println!("{n:<14} {}", cells.join(" "));
     }
-}
-
-/// Median milliseconds per control step of planning controller `kind` with `n` trajectories,
-/// rolling out in the simulation's physics model, and the last plan's final trajectories.
-fn planning_ms(
-    sim: &Simulation,
-    kind: ControllerKind,
-    n: usize,
-    threads: usize,
-) -> (f64, Vec<Vec<Controls>>) {
-    let model = sim.config().physics;
-    let spec = kind.planner().expect("a planning controller");
-    let config = OptimizerConfig {
-        particles: n,
-        threads,
-        ..OptimizerConfig::default()
-    }
-    .rolling_out_in(model);
-    let mut optimizer = BikeOptimizer::new(sim, spec, config);
-    let drive = DriveInput {
-        throttle: 0.6,
-        brake: 0.0,
-        max_speed: 15.0 / 3.6,
-    };
-    for _ in 0..3 {
-        optimizer.controls(sim, &Goal::riding(0.0, drive)); // warm-up: memory, thread pool
-    }
-    let mut samples: Vec<f64> = (0..9)
-        .map(|_| {
-            let start = Instant::now();
-            optimizer.controls(sim, &Goal::riding(0.0, drive));
-            start.elapsed().as_secs_f64() * 1000.0
-        })
-        .collect();
-    samples.sort_by(f64::total_cmp);
-    (samples[samples.len() / 2], optimizer.sequences())
 }
 
 /// Rides 6 s in real time with the planner on its own thread, waiting at most 10 ms at a
@@ -327,44 +255,6 @@ fn snapshot_costs(sim: &Simulation) -> (f64, f64) {
         })
     });
     (snapshot, restore)
-}
-
-/// Milliseconds to step a plan's final trajectories from the master's state in the
-/// model's rollout physics, one world each, split over `thread_count` threads: the
-/// planner's physics without the planner (no sampling, costs, resampling or restores).
-fn rollouts_alone_ms(sim: &Simulation, sequences: &[Vec<Controls>], thread_count: usize) -> f64 {
-    let model = sim.config().physics;
-    let state = sim.world().snapshot();
-    let mut worlds: Vec<World> = sequences
-        .iter()
-        .map(|_| {
-            let mut world = sim.new_world();
-            world.set_solver(model.rollout_solver());
-            world
-        })
-        .collect();
-    let (stepping, control_dt) = (model.rollout_stepping(), sim.config().control_dt);
-    let per_thread = sequences.len().div_ceil(thread_count);
-    let start = Instant::now();
-    std::thread::scope(|scope| {
-        for (worlds, sequences) in worlds
-            .chunks_mut(per_thread)
-            .zip(sequences.chunks(per_thread))
-        {
-            let (state, bike) = (&state, sim.bike());
-            scope.spawn(move || {
-                for (world, sequence) in worlds.iter_mut().zip(sequences) {
-                    world.restore(state).expect("same model");
-                    for (step, controls) in sequence.iter().enumerate() {
-                        bike.apply(world, controls);
-                        let (substeps, dt) = stepping.ode_steps_at(step, control_dt);
-                        (0..substeps).for_each(|_| world.step(dt));
-                    }
-                }
-            });
-        }
-    });
-    start.elapsed().as_secs_f64() * 1000.0
 }
 
 fn time_per_call(calls: usize, mut f: impl FnMut()) -> f64 {
