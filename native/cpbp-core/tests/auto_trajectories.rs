@@ -12,7 +12,7 @@ use std::time::{Duration, Instant};
 
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
-use cpbp_core::ride::{limits, ControllerKind, Intent, Ride, GAME_PLAN_WAIT};
+use cpbp_core::ride::{limits, AutoTrajectories, ControllerKind, Intent, Ride, GAME_PLAN_WAIT};
 
 /// What a spell of real-time riding showed: N at its end, and the late steps in its last
 /// `settled` steps.
@@ -50,6 +50,8 @@ fn ride_in_real_time(ride: &mut Ride, seconds: f64, settled: usize) -> Spell {
 const BUSY: Duration = Duration::from_millis(6);
 const IDLE: Duration = Duration::from_millis(4);
 const LCG: u64 = 6_364_136_223_846_793_005;
+/// Steps at the end of the loaded spell whose late plans are counted.
+const SETTLED_STEPS: usize = 60;
 
 /// Busy loops on every core until dropped.
 struct Load {
@@ -107,18 +109,24 @@ fn under_load_n_comes_down_until_plans_are_in_time_and_goes_back_up_after() {
 
     let loaded = {
         let _load = Load::on_every_core();
-        ride_in_real_time(&mut ride, 10.0, 60)
+        ride_in_real_time(&mut ride, 10.0, SETTLED_STEPS)
     };
+    // What the rule lets pass in that many steps: one short of lowering N in each window.
+    let windows = SETTLED_STEPS as u64 / u64::from(AutoTrajectories::WINDOW);
+    let tolerated_late = windows * u64::from(AutoTrajectories::LATE_STEPS - 1);
     assert!(
         loaded.trajectories < limits::AUTO_TRAJECTORIES.max as usize,
         "N stayed at {} under load",
         loaded.trajectories
     );
-    // At the fewest it may plan with, nothing more is the rule's to do: a machine loaded
-    // beyond this test's own load (a build alongside) leaves late plans even at N = 5.
+    // In time, as the rule counts it: a late step now and then is the scheduler's (busy
+    // loops hold a core for their slice whatever N is) and the rule lets one a window
+    // pass; more than that at the end means N did not come down far enough. At the fewest
+    // it may plan with, nothing more is the rule's to do: a machine loaded beyond this
+    // test's own load (a build alongside) leaves late plans even at N = 5.
     let fewest = limits::AUTO_TRAJECTORIES.min as usize;
     assert!(
-        loaded.late_at_the_end == 0 || loaded.trajectories == fewest,
+        loaded.late_at_the_end <= tolerated_late || loaded.trajectories == fewest,
         "{} plans late in the last 2 s under load at N = {}",
         loaded.late_at_the_end,
         loaded.trajectories
@@ -135,7 +143,7 @@ fn under_load_n_comes_down_until_plans_are_in_time_and_goes_back_up_after() {
     );
     assert_eq!(ride.sim().crashed(), None);
     eprintln!(
-        "auto N: {} under load (lowest {}), {} after it",
-        loaded.trajectories, loaded.lowest, unloaded.trajectories
+        "auto N: {} under load (lowest {}, {} late in the last 2 s), {} after it",
+        loaded.trajectories, loaded.lowest, loaded.late_at_the_end, unloaded.trajectories
     );
 }

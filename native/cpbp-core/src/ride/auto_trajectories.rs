@@ -4,8 +4,8 @@
 //! watches the planning thread's times and the hand-over's late steps:
 //!
 //! - down at once when plans run long (smoothed over a few plans, above `SLOW` of the
-//!   control period) or two hand-overs in a row-window were late, to what the measured
-//!   time per trajectory affords within `TARGET` of the period;
+//!   control period) or `LATE_STEPS` hand-overs within `WINDOW` steps were late, to what
+//!   the measured time per trajectory affords within `TARGET` of the period;
 //! - up only after a calm spell (no late step, plans below `FAST` of the period), by at
 //!   most a quarter; the spell it waits doubles each time going up made plans late again,
 //!   so a machine on the edge does not see-saw.
@@ -25,9 +25,6 @@ const SLOW: f64 = 0.9;
 const FAST: f64 = 0.55;
 /// Weight of the newest plan in the smoothed planning time.
 const SMOOTHING: f64 = 0.25;
-/// Late hand-overs among the last `WINDOW` steps at this N that lower it.
-const LATE_STEPS: u32 = 2;
-const WINDOW: u32 = 30;
 /// Plans at this N before its time counts as measured.
 const MEASURED_AFTER: usize = 3;
 /// Control steps of calm before N goes up (1 s at 30 steps/s), and the most it waits
@@ -54,6 +51,11 @@ pub struct AutoTrajectories {
 }
 
 impl AutoTrajectories {
+    /// Late hand-overs among the last `WINDOW` steps at this N that lower it: one alone
+    /// is let pass (a frame's stall, the scheduler's slice).
+    pub const LATE_STEPS: u32 = 2;
+    pub const WINDOW: u32 = 30;
+
     /// Starts from `start` (within the automatic range) for control steps of `period_s`.
     pub fn new(start: usize, period_s: f64) -> Self {
         Self {
@@ -90,11 +92,11 @@ impl AutoTrajectories {
     pub fn note_step(&mut self, late: bool) -> usize {
         self.late_bits = (self.late_bits << 1) | u32::from(late);
         self.steps_at_n += 1;
-        let late_steps = (self.late_bits & ((1 << WINDOW) - 1)).count_ones();
+        let late_steps = (self.late_bits & ((1 << Self::WINDOW) - 1)).count_ones();
         let measured = self
             .smoothed_ms
             .filter(|_| self.plans_at_n >= MEASURED_AFTER);
-        if late_steps >= LATE_STEPS || measured.is_some_and(|ms| ms > SLOW * self.period_ms) {
+        if late_steps >= Self::LATE_STEPS || measured.is_some_and(|ms| ms > SLOW * self.period_ms) {
             self.go_down(measured);
         } else if late_steps == 0
             && self.steps_at_n >= self.calm_needed
