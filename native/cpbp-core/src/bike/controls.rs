@@ -42,6 +42,14 @@ pub enum ForceClass {
 /// hip extensors reach 200–300 N·m each in adults).
 pub const MAX_TORQUE: [f64; FORCE_TUNINGS] = [60.0, 700.0, 600.0, 500.0, 200.0];
 
+/// The entries the player's throttle and brake set directly (`DriveInput::apply`): the
+/// rear wheel's velocity and force tuning. The planners and the learned controller decide
+/// every other entry.
+pub const DRIVE_ENTRIES: [usize; 2] = [
+    index::REAR_WHEEL,
+    index::FORCE + ForceClass::RearWheel as usize,
+];
+
 /// Lower and upper bound of every control entry.
 pub const LOWER: [f64; CONTROL_DIM] = [
     -4.0, -10.0, -3.0, -3.0, -3.0, -3.0, -3.0, -3.0, -3.0, -3.0, -3.0, -3.0, -3.0, //

@@ -17,8 +17,8 @@ mod suspension;
 mod wheelie_control;
 
 pub use controls::{
-    index, Controls, ForceClass, CONTROL_DIM, FORCE_TUNINGS, JOINT_TARGETS, LOWER, MAX_TORQUE,
-    UPPER,
+    index, Controls, ForceClass, CONTROL_DIM, DRIVE_ENTRIES, FORCE_TUNINGS, JOINT_TARGETS, LOWER,
+    MAX_TORQUE, UPPER,
 };
 pub use crash::{CrashCause, CrashMonitor};
 pub use drive::{DriveInput, TOP_SPEED_KMH};

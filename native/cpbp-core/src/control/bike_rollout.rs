@@ -11,8 +11,8 @@ use super::cpbp::{Priors, RolloutSystem};
 use super::lean::{current_lean_vector, desired_lean_vector, lean_cost, roll_lean_cost};
 use super::Goal;
 use crate::bike::{
-    index, rider_position_cost, Bike, Controls, ForceClass, CONTROL_DIM, FORCE_TUNINGS, LOWER,
-    POSE_GAIN, UPPER,
+    index, rider_position_cost, Bike, Controls, ForceClass, CONTROL_DIM, DRIVE_ENTRIES,
+    FORCE_TUNINGS, LOWER, POSE_GAIN, UPPER,
 };
 use crate::ode::{World, WorldState};
 use crate::physics::RolloutStepping;
@@ -209,8 +209,7 @@ pub fn bike_priors(mutation_scale: f64) -> Priors {
     }
     // Throttle and brake set the rear wheel: the planner leaves those entries alone.
     let mut planned = vec![true; CONTROL_DIM];
-    planned[index::REAR_WHEEL] = false;
-    planned[index::FORCE + ForceClass::RearWheel as usize] = false;
+    DRIVE_ENTRIES.iter().for_each(|&i| planned[i] = false);
     Priors {
         mean,
         sigma_static,

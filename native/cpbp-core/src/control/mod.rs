@@ -7,6 +7,7 @@ pub mod cpbp;
 pub mod fidelity;
 mod goal;
 mod lean;
+pub mod learned;
 mod optimizer;
 pub mod planner;
 pub mod sampling;

@@ -1,0 +1,42 @@
+//! The learned controller (thesis §6.3's future work): a network distilled from the
+//! planner's choices, cheap enough for any machine, alone (`learned`) or as the particle
+//! the planner follows (`guided`). This module holds what the game and the data
+//! generator share: the features the network sees and the network itself.
+
+mod features;
+mod network;
+#[cfg(test)]
+mod tests;
+
+pub use features::{features, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES};
+pub use network::{
+    output_entries, ModelError, NetworkParts, NonFiniteFeature, PolicyNetwork, MODEL_FORMAT,
+    MODEL_FORMAT_VERSION, OUTPUT_COUNT,
+};
+
+use glam::DVec3;
+
+use crate::bike::{Bike, Controls};
+use crate::control::Goal;
+use crate::ode::World;
+
+impl PolicyNetwork {
+    /// The controls the network chooses for the next step of `bike` towards `goal`, the
+    /// rear wheel's entries set by the player's throttle and brake as for every
+    /// controller. A non-finite feature (a state already broken) is reported instead.
+    pub fn controls(
+        &self,
+        bike: &Bike,
+        world: &World,
+        goal: &Goal,
+        up: DVec3,
+    ) -> Result<Controls, NonFiniteFeature> {
+        let outputs = self.evaluate(&features(bike, world, goal, up))?;
+        let mut controls = Controls::default();
+        for (&entry, &value) in output_entries().iter().zip(&outputs) {
+            controls.set(entry, value);
+        }
+        goal.drive.apply(bike.params().wheel_radius, &mut controls);
+        Ok(controls)
+    }
+}
