@@ -1,0 +1,312 @@
+//! One recorded ride: a seed draws the ground (flat, a slope or a bump field) and a script
+//! of what the player asks (speeds from walking pace to 40 km/h, turns, the rider's
+//! weight, hard stops, shoves); the planner rides it as the expert, and every control
+//! step is recorded as (features, the planner's choice). The controls applied may carry
+//! noise the labels do not (DART: the expert is shown the states its own mistakes lead
+//! to, so the learner learns to recover from them).
+
+use std::sync::Arc;
+
+use cpbp_core::bike::{DriveInput, Placement, RiderPosition};
+use cpbp_core::control::learned::{features, output_entries, FEATURE_COUNT, OUTPUT_COUNT};
+use cpbp_core::control::planner::COMBINED;
+use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, TurnIntent};
+use cpbp_core::physics::PhysicsModel;
+use cpbp_core::simulation::{Simulation, SimulationConfig};
+use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use glam::{DQuat, DVec3};
+use rand::{RngExt, SeedableRng};
+use rand_distr::StandardNormal;
+use rand_pcg::Pcg64;
+
+/// Control steps a second.
+const STEPS_PER_SECOND: f64 = 30.0;
+
+/// The independent random sequences an episode's seed starts: its script, its bumps and
+/// the noise on its controls (the planner has the seed itself).
+#[derive(Clone, Copy)]
+enum Stream {
+    Script = 1,
+    Bumps = 2,
+    Noise = 3,
+}
+
+fn stream(seed: u64, which: Stream) -> Pcg64 {
+    Pcg64::seed_from_u64(seed.wrapping_mul(4).wrapping_add(which as u64))
+}
+
+/// How the expert rides and how the episode is shaped.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ExpertSettings {
+    /// The planner's trajectories: large enough to be reliable, not real time.
+    pub trajectories: usize,
+    /// Length of an episode (s), unless the bike crashes first.
+    pub seconds: f64,
+    /// Spread of the noise added to the applied controls, as a share of each entry's
+    /// range (0: the expert's own controls).
+    pub noise: f64,
+}
+
+impl Default for ExpertSettings {
+    fn default() -> Self {
+        Self {
+            trajectories: 16,
+            seconds: 12.0,
+            noise: 0.03,
+        }
+    }
+}
+
+/// The ground an episode rides on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Ground {
+    Flat,
+    /// Tilted about the bike's first heading's lateral axis (rad; positive uphill).
+    Slope(f64),
+    /// A height map of bumps up to this height (m).
+    Bumps(f64),
+}
+
+impl Ground {
+    pub fn label(&self) -> String {
+        match self {
+            Self::Flat => "flat".into(),
+            Self::Slope(angle) => format!("slope {:+.1}°", angle.to_degrees()),
+            Self::Bumps(height) => format!("bumps {:.0} mm", height * 1000.0),
+        }
+    }
+}
+
+/// One stretch of the script: what the player asks from `start` on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    pub start: usize,
+    pub drive: DriveInput,
+    /// The turn stick in [−1, 1] (the game's lean for it at the current speed), or a lean
+    /// asked directly (rad), as the scripted rides ask.
+    pub stick: f64,
+    pub lean: Option<f64>,
+    pub rider: RiderPosition,
+    /// A sideways shove (N·s) at the segment's first step.
+    pub push: f64,
+}
+
+/// An episode's ground and script, drawn from its seed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Episode {
+    pub seed: u64,
+    pub ground: Ground,
+    pub heading: f64,
+    pub steps: usize,
+    pub segments: Vec<Segment>,
+}
+
+impl Episode {
+    pub fn draw(seed: u64, settings: &ExpertSettings) -> Self {
+        let mut rng = stream(seed, Stream::Script);
+        let ground = match rng.random::<f64>() {
+            p if p < 0.4 => Ground::Flat,
+            p if p < 0.7 => Ground::Slope(rng.random_range(-12f64..12.0).to_radians()),
+            _ => Ground::Bumps(rng.random_range(0.02..0.08)),
+        };
+        let steps = (settings.seconds * STEPS_PER_SECOND).round() as usize;
+        let mut segments = Vec::new();
+        let mut start = 0;
+        while start < steps {
+            segments.push(draw_segment(&mut rng, start));
+            start += rng.random_range(30..90);
+        }
+        Self {
+            seed,
+            ground,
+            heading: rng.random_range(0.0..std::f64::consts::TAU),
+            steps,
+            segments,
+        }
+    }
+
+    /// The simulation at the start: the bike at rest on the episode's ground.
+    pub fn simulation(&self) -> Simulation {
+        let heading = DQuat::from_rotation_y(self.heading);
+        let (terrain, rotation) = match self.ground {
+            Ground::Flat => (Terrain::flat(), heading),
+            Ground::Slope(angle) => {
+                let rotation = heading * DQuat::from_rotation_z(angle);
+                let plane = TerrainPiece::ground_through_origin("slope", rotation * DVec3::Y);
+                (Terrain::new(vec![plane]).expect("a plane"), rotation)
+            }
+            Ground::Bumps(height) => (bump_field(self.seed, height), heading),
+        };
+        let lift = match self.ground {
+            Ground::Bumps(height) => height + 0.02,
+            _ => 0.02,
+        };
+        let spawn = Placement {
+            position: rotation * DVec3::Y * lift,
+            rotation,
+        };
+        let config = SimulationConfig {
+            physics: PhysicsModel::Exact,
+            ..SimulationConfig::default()
+        };
+        Simulation::new(config, Arc::new(terrain), spawn)
+    }
+}
+
+fn draw_segment(rng: &mut Pcg64, start: usize) -> Segment {
+    let kmh = rng.random_range(0.0..40.0);
+    let drive = match rng.random::<f64>() {
+        p if p < 0.15 => DriveInput {
+            throttle: 0.0,
+            brake: 1.0,
+            max_speed: kmh / 3.6,
+        },
+        p if p < 0.25 => DriveInput {
+            throttle: 0.0,
+            brake: rng.random_range(0.2..0.8),
+            max_speed: kmh / 3.6,
+        },
+        p if p < 0.35 => DriveInput {
+            throttle: 0.0,
+            brake: 0.0,
+            max_speed: kmh / 3.6,
+        },
+        _ => DriveInput {
+            throttle: rng.random_range(0.4..1.0),
+            brake: 0.0,
+            max_speed: kmh / 3.6,
+        },
+    };
+    let turning = rng.random::<f64>() < 0.6;
+    let (stick, lean) = match (turning, rng.random::<f64>() < 0.3) {
+        (false, _) => (0.0, None),
+        (true, false) => (rng.random_range(-1.0..1.0), None),
+        (true, true) => (0.0, Some(rng.random_range(-20f64..20.0).to_radians())),
+    };
+    let rider = if rng.random::<f64>() < 0.25 {
+        RiderPosition {
+            forward: rng.random_range(-1.0..1.0),
+            right: rng.random_range(-1.0..1.0),
+        }
+    } else {
+        RiderPosition::NEUTRAL
+    };
+    let push = if rng.random::<f64>() < 0.1 {
+        rng.random_range(-150.0..150.0)
+    } else {
+        0.0
+    };
+    Segment {
+        start,
+        drive,
+        stick,
+        lean,
+        rider,
+        push,
+    }
+}
+
+/// Rolling bumps over a 320 m square (40 km/h for the longest episode stays on it), the same for every world of the episode.
+fn bump_field(seed: u64, height: f64) -> Terrain {
+    let mut rng = stream(seed, Stream::Bumps);
+    let waves: Vec<(f64, f64, f64)> = (0..4)
+        .map(|_| {
+            (
+                rng.random_range(0.3..1.2),
+                rng.random_range(0.3..1.2),
+                rng.random_range(0.0..std::f64::consts::TAU),
+            )
+        })
+        .collect();
+    let (size, spacing) = (321, 1.0);
+    let heights = (0..size * size)
+        .map(|i| {
+            let (x, z) = ((i % size) as f64, (i / size) as f64);
+            let sum: f64 = waves
+                .iter()
+                .map(|(a, b, p)| (a * x + b * z + p).sin())
+                .sum();
+            height * 0.5 * (1.0 + sum / waves.len() as f64)
+        })
+        .collect();
+    let piece = TerrainPiece {
+        source: "bump field".into(),
+        shape: TerrainShape::HeightMap {
+            width: size,
+            depth: size,
+            heights,
+            spacing: [spacing, spacing],
+        },
+        placement: Placement {
+            position: DVec3::ZERO,
+            rotation: DQuat::IDENTITY,
+        },
+    };
+    Terrain::new(vec![piece]).expect("a height map is valid terrain")
+}
+
+/// What an episode recorded, one row per control step the rider was on the bike.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Records {
+    pub features: Vec<[f32; FEATURE_COUNT]>,
+    pub labels: Vec<[f32; OUTPUT_COUNT]>,
+    /// Whether the ride ended in a crash (the rows up to it stay: they are the expert's).
+    pub crashed: bool,
+}
+
+/// Rides `episode` with the planner as the expert, recording every step.
+pub fn ride(episode: &Episode, settings: &ExpertSettings) -> Records {
+    let mut sim = episode.simulation();
+    let config = OptimizerConfig {
+        particles: settings.trajectories,
+        seed: episode.seed,
+        threads: 1,
+        ..OptimizerConfig::default().rolling_out_in(PhysicsModel::Exact)
+    };
+    let mut expert = BikeOptimizer::new(&sim, &COMBINED, config);
+    let mut noise = stream(episode.seed, Stream::Noise);
+    let (turn, entries) = (TurnIntent::default(), output_entries());
+    let mut records = Records::default();
+    let mut segment = episode.segments[0];
+    for step in 0..episode.steps {
+        if let Some(next) = episode.segments.iter().find(|s| s.start == step) {
+            segment = *next;
+            if segment.push != 0.0 {
+                let side = sim.bike().frame_rotation(sim.world()) * DVec3::Z;
+                sim.push(side * segment.push);
+            }
+        }
+        if !sim.rider_is_on() || sim.crashed().is_some() {
+            records.crashed = true;
+            break;
+        }
+        let (bike, world, up) = (sim.bike(), sim.world(), sim.up());
+        let speed = bike.forward_speed(world, up);
+        let lean = match segment.lean {
+            Some(lean) => lean.clamp(-turn.max_lean, turn.max_lean),
+            None => turn.lean_for(segment.stick, speed, sim.config().gravity.length()),
+        };
+        let goal = Goal {
+            lean,
+            drive: segment.drive,
+            rider: segment.rider,
+        };
+        let seen = features(bike, world, &goal, up);
+        let label = expert.controls(&sim, &goal);
+        let mut applied = label;
+        if settings.noise > 0.0 {
+            for &i in &entries {
+                let range = cpbp_core::bike::UPPER[i] - cpbp_core::bike::LOWER[i];
+                let kick: f64 = noise.sample(StandardNormal);
+                applied.set(i, label.get(i) + kick * settings.noise * range);
+            }
+            expert.note_applied(&applied);
+        }
+        records.features.push(seen.map(|x| x as f32));
+        records.labels.push(entries.map(|i| label.get(i) as f32));
+        sim.set_controls(applied);
+        sim.set_pitch_request(goal.pitch_request());
+        sim.step();
+    }
+    records
+}

@@ -1,0 +1,189 @@
+//! `cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] [--seconds S]
+//! [--noise X] [--jobs J]`: the planner rides the episodes of those seeds as the expert
+//! and each is saved as one shard in DIR (`episode-SEED.safetensors`). Episodes already
+//! saved are skipped, so a stopped run continues where it was; progress and an ETA are
+//! printed as episodes end.
+//!
+//! `cpbp-learn summary --out DIR`: what the saved episodes hold (rows, the speeds they
+//! cover, each output's mean and spread), every shard checked against this build's
+//! feature list.
+
+mod episode;
+mod shard;
+
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+use rayon::prelude::*;
+
+use cpbp_core::control::learned::{output_entries, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT};
+use episode::{Episode, ExpertSettings};
+
+const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
+[--seconds S] [--noise X] [--jobs J]\n       cpbp-learn summary --out DIR";
+
+struct Generate {
+    out: PathBuf,
+    seeds: std::ops::RangeInclusive<u64>,
+    settings: ExpertSettings,
+    jobs: usize,
+}
+
+fn main() {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    if arguments.is_empty() || arguments.iter().any(|a| a == "--help" || a == "-h") {
+        println!("usage: {USAGE}");
+        return;
+    }
+    let result = match arguments[0].as_str() {
+        "generate" => parse(&arguments[1..]).and_then(generate),
+        "summary" => match &arguments[1..] {
+            [flag, dir] if flag == "--out" => summary(&PathBuf::from(dir)),
+            _ => Err(format!("summary needs --out DIR\nusage: {USAGE}")),
+        },
+        other => Err(format!("unknown command '{other}'\nusage: {USAGE}")),
+    };
+    if let Err(message) = result {
+        eprintln!("cpbp-learn: {message}");
+        std::process::exit(2);
+    }
+}
+
+fn parse(arguments: &[String]) -> Result<Generate, String> {
+    let mut out = None;
+    let mut seeds = None;
+    let mut settings = ExpertSettings::default();
+    let mut jobs = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let mut it = arguments.iter();
+    while let Some(flag) = it.next() {
+        let value = it
+            .next()
+            .ok_or_else(|| format!("{flag} needs a value\nusage: {USAGE}"))?;
+        let number = |what: &str| -> Result<f64, String> {
+            value
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite() && *v >= 0.0)
+                .ok_or_else(|| format!("{what} must be a number ≥ 0, not '{value}'"))
+        };
+        match flag.as_str() {
+            "--out" => out = Some(PathBuf::from(value)),
+            "--episodes" => {
+                let (first, last) = value.split_once('-').unwrap_or((value, value));
+                let parse = |s: &str| s.parse::<u64>().map_err(|_| format!("bad seed '{s}'"));
+                let (first, last) = (parse(first)?, parse(last)?);
+                if first > last {
+                    return Err(format!("--episodes {value}: the first is after the last"));
+                }
+                seeds = Some(first..=last);
+            }
+            "--trajectories" => settings.trajectories = number("--trajectories")?.max(1.0) as usize,
+            "--seconds" => settings.seconds = number("--seconds")?.clamp(1.0, 600.0),
+            "--noise" => settings.noise = number("--noise")?.min(0.5),
+            "--jobs" => jobs = number("--jobs")?.max(1.0) as usize,
+            other => return Err(format!("unknown option '{other}'\nusage: {USAGE}")),
+        }
+    }
+    Ok(Generate {
+        out: out.ok_or("--out is required")?,
+        seeds: seeds.ok_or("--episodes is required")?,
+        settings,
+        jobs,
+    })
+}
+
+fn generate(run: Generate) -> Result<(), String> {
+    std::fs::create_dir_all(&run.out)
+        .map_err(|e| format!("cannot create {}: {e}", run.out.display()))?;
+    let missing: Vec<u64> = run
+        .seeds
+        .clone()
+        .filter(|&seed| !shard::shard_path(&run.out, seed).exists())
+        .collect();
+    let total = run.seeds.clone().count();
+    println!(
+        "{} of {total} episodes to ride into {} (expert: combined, N = {}, exact physics, \
+         noise {}; {} jobs)",
+        missing.len(),
+        run.out.display(),
+        run.settings.trajectories,
+        run.settings.noise,
+        run.jobs
+    );
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(run.jobs)
+        .build()
+        .map_err(|e| e.to_string())?;
+    let (started, done, rows) = (Instant::now(), AtomicUsize::new(0), AtomicUsize::new(0));
+    pool.install(|| {
+        missing.par_iter().try_for_each(|&seed| {
+            let episode = Episode::draw(seed, &run.settings);
+            let records = episode::ride(&episode, &run.settings);
+            shard::write(&run.out, &episode, &run.settings, &records)
+                .map_err(|e| format!("cannot save episode {seed}: {e}"))?;
+            let finished = done.fetch_add(1, Ordering::SeqCst) + 1;
+            let rows = rows.fetch_add(records.features.len(), Ordering::SeqCst)
+                + records.features.len();
+            let elapsed = started.elapsed().as_secs_f64();
+            let eta = elapsed / finished as f64 * (missing.len() - finished) as f64;
+            println!(
+                "[{finished}/{}] episode {seed} ({}, {} steps{}) · {rows} rows · elapsed {} · ETA {}",
+                missing.len(),
+                episode.ground.label(),
+                records.features.len(),
+                if records.crashed { ", crashed" } else { "" },
+                clock(elapsed),
+                clock(eta)
+            );
+            Ok(())
+        })
+    })
+}
+
+fn summary(dir: &std::path::Path) -> Result<(), String> {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| format!("cannot read {}: {e}", dir.display()))?
+        .filter_map(|entry| entry.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "safetensors"))
+        .collect();
+    paths.sort();
+    let (mut rows, mut speeds) = (0, (f32::INFINITY, f32::NEG_INFINITY));
+    let mut sums = [(0.0f64, 0.0f64); OUTPUT_COUNT];
+    for path in &paths {
+        let (features, labels, n) = shard::read(path)?;
+        rows += n;
+        let speed_at = FEATURE_NAMES
+            .iter()
+            .position(|n| *n == "speed")
+            .unwrap_or(0);
+        for speed in features.iter().skip(speed_at).step_by(FEATURE_COUNT) {
+            speeds = (speeds.0.min(*speed), speeds.1.max(*speed));
+        }
+        for row in labels.chunks_exact(OUTPUT_COUNT) {
+            for (sum, &value) in sums.iter_mut().zip(row) {
+                *sum = (sum.0 + f64::from(value), sum.1 + f64::from(value).powi(2));
+            }
+        }
+    }
+    println!(
+        "{} episodes, {rows} rows, speeds {:.1}…{:.1} km/h",
+        paths.len(),
+        speeds.0 * 3.6,
+        speeds.1 * 3.6
+    );
+    for (entry, (sum, squares)) in output_entries().iter().zip(sums) {
+        let mean = sum / rows.max(1) as f64;
+        let spread = (squares / rows.max(1) as f64 - mean * mean).max(0.0).sqrt();
+        println!("control u{entry:<2} mean {mean:+.3} spread {spread:.3}");
+    }
+    Ok(())
+}
+
+fn clock(seconds: f64) -> String {
+    let s = seconds.round() as u64;
+    format!("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
+}
+
+#[cfg(test)]
+mod tests;

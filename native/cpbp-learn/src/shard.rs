@@ -1,0 +1,113 @@
+//! An episode's records on disk: one safetensors file per episode (`features` and
+//! `labels`, float32, one row per control step) whose metadata says what made it, so a
+//! trainer can refuse data of another feature list. A file is written whole or not at
+//! all (written aside, synced, renamed), so a killed generator leaves no half file and
+//! its next run rides only the episodes missing.
+
+use std::collections::HashMap;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use cpbp_core::control::learned::{
+    output_entries, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT,
+};
+use safetensors::tensor::TensorView;
+use safetensors::{Dtype, SafeTensors};
+
+use crate::episode::{Episode, ExpertSettings, Records};
+
+/// The `format` every shard's metadata names.
+pub const SHARD_FORMAT: &str = "counter-steer-expert-data";
+
+/// Where episode `seed`'s records go in `dir`.
+pub fn shard_path(dir: &Path, seed: u64) -> PathBuf {
+    dir.join(format!("episode-{seed:07}.safetensors"))
+}
+
+fn flat<const N: usize>(rows: &[[f32; N]]) -> Vec<u8> {
+    rows.iter()
+        .flatten()
+        .flat_map(|v| v.to_le_bytes())
+        .collect()
+}
+
+/// Writes an episode's records.
+pub fn write(
+    dir: &Path,
+    episode: &Episode,
+    settings: &ExpertSettings,
+    records: &Records,
+) -> std::io::Result<()> {
+    let rows = records.features.len();
+    let (features, labels) = (flat(&records.features), flat(&records.labels));
+    let views = [
+        (
+            "features",
+            TensorView::new(Dtype::F32, vec![rows, FEATURE_COUNT], &features),
+        ),
+        (
+            "labels",
+            TensorView::new(Dtype::F32, vec![rows, OUTPUT_COUNT], &labels),
+        ),
+    ]
+    .map(|(name, view)| (name, view.expect("rows of fixed width")));
+    let outputs: Vec<String> = output_entries().iter().map(|i| format!("u{i}")).collect();
+    let meta = HashMap::from([
+        ("format".to_string(), SHARD_FORMAT.to_string()),
+        ("features_version".into(), FEATURES_VERSION.to_string()),
+        ("features".into(), FEATURE_NAMES.join(",")),
+        ("outputs".into(), outputs.join(",")),
+        ("seed".into(), episode.seed.to_string()),
+        ("ground".into(), episode.ground.label()),
+        (
+            "expert".into(),
+            format!("combined N={} exact", settings.trajectories),
+        ),
+        ("noise".into(), settings.noise.to_string()),
+        ("crashed".into(), records.crashed.to_string()),
+    ]);
+    let bytes = safetensors::serialize(views, Some(meta)).map_err(std::io::Error::other)?;
+    let path = shard_path(dir, episode.seed);
+    let aside = path.with_extension("partial");
+    let mut file = std::fs::File::create(&aside)?;
+    file.write_all(&bytes)?;
+    file.sync_all()?;
+    std::fs::rename(&aside, &path)
+}
+
+/// A shard's rows, checked against this build's feature list.
+pub fn read(path: &Path) -> Result<(Vec<f32>, Vec<f32>, usize), String> {
+    let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let fail = |why: String| format!("{}: {why}", path.display());
+    let (_, header) = SafeTensors::read_metadata(&bytes).map_err(|e| fail(e.to_string()))?;
+    let meta = header.metadata().clone().unwrap_or_default();
+    let field = |key: &str| meta.get(key).cloned().unwrap_or_default();
+    if field("format") != SHARD_FORMAT {
+        return Err(fail("not expert data".into()));
+    }
+    if field("features") != FEATURE_NAMES.join(",") {
+        return Err(fail(format!(
+            "made with feature list version {}, this build has {FEATURES_VERSION}: generate again",
+            field("features_version")
+        )));
+    }
+    let file = SafeTensors::deserialize(&bytes).map_err(|e| fail(e.to_string()))?;
+    let floats = |name: &str, width: usize| -> Result<(Vec<f32>, usize), String> {
+        let view = file.tensor(name).map_err(|e| fail(e.to_string()))?;
+        if view.dtype() != Dtype::F32 || view.shape().len() != 2 || view.shape()[1] != width {
+            return Err(fail(format!("'{name}' is not float32 rows of {width}")));
+        }
+        let values = view
+            .data()
+            .chunks_exact(4)
+            .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+            .collect();
+        Ok((values, view.shape()[0]))
+    };
+    let (features, rows) = floats("features", FEATURE_COUNT)?;
+    let (labels, label_rows) = floats("labels", OUTPUT_COUNT)?;
+    if rows != label_rows {
+        return Err(fail("features and labels differ in length".into()));
+    }
+    Ok((features, labels, rows))
+}
