@@ -9,7 +9,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use cpbp_core::control::learned::{
-    output_entries, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT,
+    f32_bytes, f32_values, output_names, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES,
+    OUTPUT_COUNT,
 };
 use safetensors::tensor::TensorView;
 use safetensors::{Dtype, SafeTensors};
@@ -24,13 +25,6 @@ pub fn shard_path(dir: &Path, seed: u64) -> PathBuf {
     dir.join(format!("episode-{seed:07}.safetensors"))
 }
 
-fn flat<const N: usize>(rows: &[[f32; N]]) -> Vec<u8> {
-    rows.iter()
-        .flatten()
-        .flat_map(|v| v.to_le_bytes())
-        .collect()
-}
-
 /// Writes an episode's records.
 pub fn write(
     dir: &Path,
@@ -39,7 +33,8 @@ pub fn write(
     records: &Records,
 ) -> std::io::Result<()> {
     let rows = records.features.len();
-    let (features, labels) = (flat(&records.features), flat(&records.labels));
+    let features = f32_bytes(records.features.as_flattened());
+    let labels = f32_bytes(records.labels.as_flattened());
     let views = [
         (
             "features",
@@ -51,12 +46,11 @@ pub fn write(
         ),
     ]
     .map(|(name, view)| (name, view.expect("rows of fixed width")));
-    let outputs: Vec<String> = output_entries().iter().map(|i| format!("u{i}")).collect();
     let meta = HashMap::from([
         ("format".to_string(), SHARD_FORMAT.to_string()),
         ("features_version".into(), FEATURES_VERSION.to_string()),
         ("features".into(), FEATURE_NAMES.join(",")),
-        ("outputs".into(), outputs.join(",")),
+        ("outputs".into(), output_names().join(",")),
         ("seed".into(), episode.seed.to_string()),
         ("ground".into(), episode.ground.label()),
         (
@@ -97,12 +91,7 @@ pub fn read(path: &Path) -> Result<(Vec<f32>, Vec<f32>, usize), String> {
         if view.dtype() != Dtype::F32 || view.shape().len() != 2 || view.shape()[1] != width {
             return Err(fail(format!("'{name}' is not float32 rows of {width}")));
         }
-        let values = view
-            .data()
-            .chunks_exact(4)
-            .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
-            .collect();
-        Ok((values, view.shape()[0]))
+        Ok((f32_values(view.data()), view.shape()[0]))
     };
     let (features, rows) = floats("features", FEATURE_COUNT)?;
     let (labels, label_rows) = floats("labels", OUTPUT_COUNT)?;

@@ -10,8 +10,8 @@ mod tests;
 
 pub use features::{features, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES};
 pub use network::{
-    output_entries, ModelError, NetworkParts, NonFiniteFeature, PolicyNetwork, MODEL_FORMAT,
-    MODEL_FORMAT_VERSION, OUTPUT_COUNT,
+    f32_bytes, f32_values, output_entries, output_names, ModelError, NetworkParts,
+    NonFiniteFeature, PolicyNetwork, MODEL_FORMAT, MODEL_FORMAT_VERSION, OUTPUT_COUNT,
 };
 
 use glam::DVec3;

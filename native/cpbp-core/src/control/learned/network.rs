@@ -175,11 +175,7 @@ impl PolicyNetwork {
             if view.dtype() != Dtype::F32 {
                 return Err(not_a_model(format!("'{name}' is not float32")));
             }
-            Ok(view
-                .data()
-                .chunks_exact(4)
-                .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
-                .collect())
+            Ok(f32_values(view.data()))
         };
         let count: usize = field("layers")
             .parse()
@@ -218,10 +214,7 @@ impl PolicyNetwork {
         }
         let bytes: Vec<(String, Vec<usize>, Vec<u8>)> = tensors
             .into_iter()
-            .map(|(name, shape, values)| {
-                let data = values.iter().flat_map(|v| v.to_le_bytes()).collect();
-                (name, shape, data)
-            })
+            .map(|(name, shape, values)| (name, shape, f32_bytes(values)))
             .collect();
         let views = bytes.iter().map(|(name, shape, data)| {
             let view = safetensors::tensor::TensorView::new(Dtype::F32, shape.clone(), data)
@@ -274,7 +267,21 @@ impl PolicyNetwork {
     }
 }
 
-/// Names of the outputs, for the file's metadata: the control entries' indices.
-fn output_names() -> Vec<String> {
+/// Names of the outputs, for the metadata of model and data files: the control entries'
+/// indices.
+pub fn output_names() -> Vec<String> {
     output_entries().iter().map(|i| format!("u{i}")).collect()
+}
+
+/// Float32 values as safetensors stores them (little-endian bytes).
+pub fn f32_bytes(values: &[f32]) -> Vec<u8> {
+    values.iter().flat_map(|v| v.to_le_bytes()).collect()
+}
+
+/// The float32 values of safetensors bytes.
+pub fn f32_values(bytes: &[u8]) -> Vec<f32> {
+    bytes
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        .collect()
 }
