@@ -209,6 +209,7 @@ impl Simulation {
         self.bike.reset(&mut self.world, &placement);
         self.world.reset_motors();
         self.world.reset_random_seed();
+        self.world.forget_contacts();
         self.controls = Controls::default();
         self.pitch_request = PitchRequest::default();
         self.crash.reset();

@@ -39,6 +39,12 @@ pub struct WorldState {
     pub motors: Vec<MotorState>,
     /// The world's QuickStep random seed (it reorders constraint rows each step).
     pub random_seed: u64,
+    /// Per body, whether it touched the terrain in the last step, and per foot, whether
+    /// it stood on it: what a step is asked before it runs (a wheelie holds only with the
+    /// rear wheel down), so without them a world restored from elsewhere would step on
+    /// its own history.
+    pub touching_static: Vec<bool>,
+    pub feet_touching: Vec<bool>,
 }
 
 /// Restoring a snapshot into a world of a different shape.

@@ -71,6 +71,31 @@ fn restoring_into_another_identically_built_world_matches() {
 }
 
 #[test]
+fn a_restored_world_reports_the_contacts_of_the_state_it_was_given() {
+    // What a step is asked before it runs (did this body touch the ground in the last
+    // step?) is part of the state: a world restored from elsewhere must not answer from
+    // its own history.
+    let mut original = tumbling_pile();
+    run(&mut original, 120);
+    let on_the_ground = original.snapshot();
+    let touching: Vec<bool> = (0..8)
+        .map(|i| original.body_touches_static(cpbp_ode::BodyId(i)))
+        .collect();
+    assert!(
+        touching.iter().any(|&t| t),
+        "the pile has settled onto the plane"
+    );
+
+    let mut fresh = tumbling_pile();
+    fresh.restore(&on_the_ground).unwrap();
+    let restored: Vec<bool> = (0..8)
+        .map(|i| fresh.body_touches_static(cpbp_ode::BodyId(i)))
+        .collect();
+    assert_eq!(restored, touching);
+    assert_eq!(fresh.snapshot(), on_the_ground);
+}
+
+#[test]
 fn rollouts_on_several_threads_match_the_single_threaded_result() {
     let (branch_point, original) = branch_point_and_original(&mut tumbling_pile());
 

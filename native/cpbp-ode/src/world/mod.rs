@@ -246,13 +246,19 @@ impl World {
             bodies,
             motors,
             random_seed: self.random_seed,
+            touching_static: self.touching_static.clone(),
+            feet_touching: self.feet.iter().map(|f| f.touching).collect(),
         }
     }
 
     /// Puts every body back into a snapshot's state, exactly (no renormalisation).
     pub fn restore(&mut self, state: &WorldState) -> Result<(), StateMismatch> {
         ensure_thread_data();
-        if state.bodies.len() != self.bodies.len() || state.motors.len() != self.joints.len() {
+        if state.bodies.len() != self.bodies.len()
+            || state.motors.len() != self.joints.len()
+            || state.touching_static.len() != self.bodies.len()
+            || state.feet_touching.len() != self.feet.len()
+        {
             return Err(StateMismatch {
                 expected_bodies: self.bodies.len(),
                 found_bodies: state.bodies.len(),
@@ -275,6 +281,10 @@ impl World {
             }
         }
         self.random_seed = state.random_seed;
+        self.touching_static.copy_from_slice(&state.touching_static);
+        for (foot, &touching) in self.feet.iter_mut().zip(&state.feet_touching) {
+            foot.touching = touching;
+        }
         Ok(())
     }
 
@@ -283,14 +293,21 @@ impl World {
         self.random_seed = 0;
     }
 
+    /// Forgets which bodies and feet touched the terrain in the last step, as a new world
+    /// starts: bodies placed anew have not touched anything yet, and a ride after a reset
+    /// must not step on the history of the ride before it.
+    pub fn forget_contacts(&mut self) {
+        self.touching_static.iter_mut().for_each(|t| *t = false);
+        self.feet.iter_mut().for_each(|f| f.touching = false);
+    }
+
     /// Advances the world by `dt` seconds: collision, contact joints, the solver.
     pub fn step(&mut self, dt: f64) {
         ensure_thread_data();
         self.update_springs(dt);
         self.add_explicit_gyroscopic_torques();
         self.canonicalise_geom_order();
-        self.touching_static.iter_mut().for_each(|t| *t = false);
-        self.feet.iter_mut().for_each(|f| f.touching = false);
+        self.forget_contacts();
         let mut context = CollideContext {
             world: self.world,
             contacts: self.contacts,
