@@ -1,6 +1,8 @@
 //! The C-PBP planner on a toy system with known dynamics: a point mass pushed towards a
 //! target along a line.
 
+use std::sync::{Arc, Mutex};
+
 use cpbp_core::control::cpbp::{Planner, PlannerConfig, Priors, RolloutSystem, WarmStart};
 
 const DT: f64 = 0.1;
@@ -186,10 +188,11 @@ fn each_warm_start_route_decides_what_particle_1_replays() {
     );
 }
 
-/// The point mass again, remembering the control it was given at the first planning step.
-#[derive(Clone, Copy, Debug, Default)]
+/// A system that notes every control given at the first planning step, in a list all its
+/// clones share (the planner may step several particles in one system).
+#[derive(Clone, Debug, Default)]
 struct FirstStepRecorder {
-    first: f64,
+    firsts: Arc<Mutex<Vec<f64>>>,
 }
 
 impl RolloutSystem for FirstStepRecorder {
@@ -203,7 +206,7 @@ impl RolloutSystem for FirstStepRecorder {
     /// descend from a cheap first step.
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         if step == 0 {
-            self.first = u[0];
+            self.firsts.lock().expect("not poisoned").push(u[0]);
             return Some((u[0] / 0.1).powi(2));
         }
         Some(0.0)
@@ -213,9 +216,11 @@ impl RolloutSystem for FirstStepRecorder {
 #[test]
 fn resampling_keeps_the_low_cost_lineages() {
     let mut planner = planner(5);
-    let mut systems = vec![FirstStepRecorder::default(); 16];
+    let recorder = FirstStepRecorder::default();
+    let mut systems = vec![recorder.clone(); 16];
     let result = planner.plan(&mut systems, &(), WarmStart::Refinement);
-    let sampled: Vec<f64> = systems.iter().map(|s| s.first).collect();
+    let sampled = recorder.firsts.lock().expect("not poisoned").clone();
+    assert_eq!(sampled.len(), 16, "one first step per particle");
     let survived: Vec<f64> = result.sequences.iter().map(|s| s[0]).collect();
     assert!(
         result.resamples > 0,

@@ -2,7 +2,10 @@
 //! particle.
 
 /// A simulated system the planner can branch: one instance per particle, all built alike.
-/// Instances are stepped on several threads at once, each by one thread at a time.
+/// Instances are stepped on several threads at once, each by one thread at a time. A
+/// thread may step several particles in one instance, restoring each particle's state
+/// before its step: whatever a step depends on must be in `State`, except for the
+/// particle that follows the system's `policy`, which keeps its own instance.
 pub trait RolloutSystem: Send {
     /// Everything needed to put an instance back into a state (a world snapshot).
     type State: Clone + Send + Sync;

@@ -1,6 +1,6 @@
-//! Advancing every particle one planning step: each restores its parent's state into its
-//! own world, takes a control (replayed, drawn from the priors, or its system's own
-//! policy) and steps, the particles split in runs over the rollout threads.
+//! Advancing every particle one planning step: each restores its parent's state, takes a
+//! control (replayed, drawn from the priors, or its system's own policy) and steps, the
+//! particles split in runs over the rollout threads.
 
 use rand::RngExt;
 use rand_distr::StandardNormal;
@@ -12,8 +12,8 @@ use super::super::rollout::RolloutSystem;
 use super::{Guide, Planner};
 
 impl Planner {
-    /// Every particle restores its parent's state into its own world, chooses a control,
-    /// steps and saves, independently of the others: run them across the worker threads.
+    /// Every particle restores its parent's state, chooses a control, steps and saves,
+    /// independently of the others: run them across the worker threads.
     pub(super) fn step_all<S: RolloutSystem>(
         &self,
         systems: &mut [S],
@@ -33,18 +33,45 @@ impl Planner {
                 .par_chunks_mut(run)
                 .zip(rngs[..n].par_chunks_mut(run))
                 .enumerate()
-                .flat_map_iter(|(c, (systems, rngs))| {
-                    (c * run..).zip(systems.iter_mut().zip(rngs.iter_mut()))
-                })
-                .map(|(i, (system, rng))| {
-                    let from = &particles.all[parents[i]];
-                    let parent = (&from.previous[..], &from.before_previous[..]);
-                    system.restore(&from.state);
-                    let control = self.choose_control(system, rng, parent, &guides[i], k);
-                    self.simulate(system, &from.state, control, parent, k)
+                .flat_map_iter(|(r, (systems, rngs))| {
+                    let first = r * run;
+                    self.step_run(systems, rngs, first, particles, parents, guides, k)
                 })
                 .collect()
         })
+    }
+
+    /// One thread's run of particles, from `first` on, stepped in one world that stays
+    /// warm in the thread's cache (restoring each particle's parent state into it, as
+    /// every step does anyway): with a world per particle, a thread stepping 64 particles
+    /// visited 64 cold worlds a step, 12 % of a plan at N = 128 on two threads. A policy
+    /// particle keeps its own system: its controller remembers between steps.
+    #[allow(clippy::too_many_arguments)]
+    fn step_run<S: RolloutSystem>(
+        &self,
+        systems: &mut [S],
+        rngs: &mut [Pcg64],
+        first: usize,
+        particles: &Particles<S::State>,
+        parents: &[usize],
+        guides: &[Guide],
+        k: usize,
+    ) -> Vec<Outcome<S::State>> {
+        let follows_policy = |j: usize| matches!(guides[first + j], Guide::Policy);
+        let shared = (0..systems.len())
+            .find(|&j| !follows_policy(j))
+            .unwrap_or(0);
+        (0..systems.len())
+            .map(|j| {
+                let system = &mut systems[if follows_policy(j) { j } else { shared }];
+                let from = &particles.all[parents[first + j]];
+                let parent = (&from.previous[..], &from.before_previous[..]);
+                system.restore(&from.state);
+                let guide = &guides[first + j];
+                let control = self.choose_control(system, &mut rngs[j], parent, guide, k);
+                self.simulate(system, &from.state, control, parent, k)
+            })
+            .collect()
     }
 
     /// A particle's control at step `k`: replayed exactly, or sampled around what it
