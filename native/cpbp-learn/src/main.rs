@@ -10,6 +10,7 @@
 
 mod episode;
 mod shard;
+mod train;
 
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -38,6 +39,7 @@ fn main() {
     }
     let result = match arguments[0].as_str() {
         "generate" => parse(&arguments[1..]).and_then(generate),
+        "train" => train_command(&arguments[1..]),
         "summary" => match &arguments[1..] {
             [flag, dir] if flag == "--out" => summary(&PathBuf::from(dir)),
             _ => Err(format!("summary needs --out DIR\nusage: {USAGE}")),
@@ -142,12 +144,7 @@ fn generate(run: Generate) -> Result<(), String> {
 }
 
 fn summary(dir: &std::path::Path) -> Result<(), String> {
-    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map_err(|e| format!("cannot read {}: {e}", dir.display()))?
-        .filter_map(|entry| entry.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "safetensors"))
-        .collect();
-    paths.sort();
+    let paths = shard::shard_paths(dir)?;
     let (mut rows, mut speeds) = (0, (f32::INFINITY, f32::NEG_INFINITY));
     let mut sums = [(0.0f64, 0.0f64); OUTPUT_COUNT];
     for path in &paths {
@@ -177,6 +174,68 @@ fn summary(dir: &std::path::Path) -> Result<(), String> {
         let spread = (squares / rows.max(1) as f64 - mean * mean).max(0.0).sqrt();
         println!("control u{entry:<2} mean {mean:+.3} spread {spread:.3}");
     }
+    Ok(())
+}
+
+/// `train --data DIR --model FILE [--epochs E] [--seed S]`: trains on every shard in DIR
+/// (seeds ending in 0 held out), prints each epoch's losses, writes the model aside and
+/// renames it into place.
+fn train_command(arguments: &[String]) -> Result<(), String> {
+    let (mut data, mut model, mut settings) = (None, None, train::TrainSettings::default());
+    for pair in arguments.chunks(2) {
+        let [flag, value] = pair else {
+            return Err(format!("{} needs a value", pair[0]));
+        };
+        let count = || {
+            value
+                .parse::<usize>()
+                .map_err(|_| format!("{flag}: bad number '{value}'"))
+        };
+        match flag.as_str() {
+            "--data" => data = Some(PathBuf::from(value)),
+            "--model" => model = Some(PathBuf::from(value)),
+            "--epochs" => settings.epochs = count()?,
+            "--seed" => settings.seed = count()? as u64,
+            other => return Err(format!("unknown option '{other}'")),
+        }
+    }
+    let (data, model) = (
+        data.ok_or("--data is required")?,
+        model.ok_or("--model is required")?,
+    );
+    let (mut fit, mut held_out) = (train::Dataset::default(), train::Dataset::default());
+    let mut episodes = 0;
+    for path in shard::shard_paths(&data)? {
+        let (features, labels, _) = shard::read(&path)?;
+        let seed = shard::seed_of(&path)
+            .ok_or_else(|| format!("{}: no seed in its name", path.display()))?;
+        let set = if seed % 10 == 0 {
+            &mut held_out
+        } else {
+            &mut fit
+        };
+        set.extend(&features, &labels);
+        episodes += 1;
+    }
+    println!(
+        "{episodes} episodes: {} rows to train on, {} held out",
+        fit.rows(),
+        held_out.rows()
+    );
+    let description = format!(
+        "cpbp-learn train: {} episodes from {}, hidden {:?}, {} epochs, batch {}, AdamW lr {}, seed {}",
+        episodes, data.display(), settings.hidden, settings.epochs, settings.batch, settings.learning_rate, settings.seed
+    );
+    let network = train::train(&fit, &held_out, &settings, &description, |epoch, loss| {
+        println!(
+            "epoch {epoch:>3}: train {:.4} · held out {:.4}",
+            loss.train, loss.validation
+        );
+    })?;
+    let aside = model.with_extension("partial");
+    std::fs::write(&aside, network.to_bytes()).map_err(|e| format!("{}: {e}", aside.display()))?;
+    std::fs::rename(&aside, &model).map_err(|e| format!("{}: {e}", model.display()))?;
+    println!("model written to {}", model.display());
     Ok(())
 }
 

@@ -100,3 +100,23 @@ pub fn read(path: &Path) -> Result<(Vec<f32>, Vec<f32>, usize), String> {
     }
     Ok((features, labels, rows))
 }
+
+/// The shards in `dir`, in seed order.
+pub fn shard_paths(dir: &Path) -> Result<Vec<PathBuf>, String> {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(|e| format!("cannot read {}: {e}", dir.display()))?
+        .filter_map(|entry| entry.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "safetensors"))
+        .collect();
+    paths.sort();
+    Ok(paths)
+}
+
+/// The episode seed a shard's name carries.
+pub fn seed_of(path: &Path) -> Option<u64> {
+    path.file_stem()?
+        .to_str()?
+        .strip_prefix("episode-")?
+        .parse()
+        .ok()
+}
