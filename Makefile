@@ -2,7 +2,7 @@
 # `make play` and `make test` work on a bare machine. See README.md.
 SHELL := bash
 .DEFAULT_GOAL := help
-.PHONY: help setup build play test bench experiment export export-check export-windows export-check-windows clean
+.PHONY: help setup build play test bench experiment train clean-learn export export-check export-windows export-check-windows clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-21s %s\n", $$1, $$2}'
@@ -29,6 +29,9 @@ bench: build ## Print the performance figures, planning and frame time (see docs
 experiment: build ## Reproduce the thesis's evaluation headless (docs/experiment.md; ARGS="--tries 50")
 	@tools/experiment all $(ARGS)
 
+train: build ## Train the learned controller from nothing and evaluate it (docs/learned-controller.md)
+	@tools/train.sh
+
 export: build ## Export the Linux build into build/linux/ (a portable engine: built once, ~1 h)
 	@PORTABLE_TEMPLATE=1 tools/export.sh
 
@@ -41,5 +44,8 @@ export-windows: build ## Export the Windows build into build/windows/ (cross-bui
 export-check-windows: build ## Export for Windows, then ride that build under Wine in a clean Debian 13 root
 	@tools/export-check.sh windows
 
-clean: ## Remove build products (not the provisioning cache)
+clean-learn: ## Remove the learned controller's training data and checkpoints (in the cache)
+	rm -rf "$${LEARN_DATA:-$${COUNTER_STEER_CACHE:-$${XDG_CACHE_HOME:-$$HOME/.cache}/counter-steer}/learn}"
+
+clean: ## Remove build products (not the provisioning cache, nor the training data)
 	rm -rf build native/target addons/cpbp/bin/*.so addons/cpbp/bin/*.dll .godot

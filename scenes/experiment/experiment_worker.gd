@@ -80,6 +80,7 @@ func _build(args: ExperimentArgs) -> bool:
 
 func _ride_attempts(args: ExperimentArgs) -> void:
 	_bike.trajectories = args.trajectories[0]
+	var plans := BikeSimulation.controller_plans(args.controller)
 	for attempt in range(args.first, args.first + args.count):
 		var bump_seed := args.base_seed + attempt
 		_bike.planner_seed = planner_seed_of(bump_seed)
@@ -94,7 +95,7 @@ func _ride_attempts(args: ExperimentArgs) -> void:
 					"speed_kmh": args.speed,
 					"controller": args.controller,
 					"physics": args.physics,
-					"trajectories": args.trajectories[0] if args.controller != "arcade" else 0,
+					"trajectories": args.trajectories[0] if plans else 0,
 					"attempt": attempt,
 					"seed": bump_seed,
 					"planner_seed": _bike.planner_seed,

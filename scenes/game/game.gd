@@ -232,8 +232,8 @@ func _on_crashed(cause: String) -> void:
 	_crash_cause = cause
 
 
-func _on_controller_failed(_reason: String) -> void:
-	_hud.announce("The planner stopped: arcade steers until you restart")
+func _on_controller_failed(reason: String) -> void:
+	_hud.announce(reason.left(1).to_upper() + reason.substr(1))
 
 
 func _apply_setting(key: StringName) -> void:

@@ -77,7 +77,7 @@ func _process(delta: float) -> void:
 	var controller := _game.controller_name()
 	var failure := bike.get_controller_failure()
 	if not failure.is_empty():
-		controller += "  ·  planner failed, arcade steers (%s)" % failure
+		controller += "  ·  %s" % failure
 	elif BikeSimulation.controller_plans(bike.controller):
 		controller += (
 			"  ·  %s%d trajectories  ·  planning %.1f ms  ·  %d late/s"

@@ -160,18 +160,21 @@ func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
 	Input.action_press(&"throttle", 0.5)
 	var seen: Array[String] = []
 	var view: TrajectoryView = _game.bike.get_node("TrajectoryView")
-	for i in 5:
+	for i in BikeSimulation.controller_names().size():
 		await SimulatedInput.tap_action(&"cycle_controller")
 		await wait_physics_frames(45)
 		seen.append(_game.bike.controller)
-		if _game.bike.controller != "arcade":
+		if BikeSimulation.controller_plans(_game.bike.controller):
 			var paths := _game.bike.get_trajectory_paths()
 			assert_eq(paths.size(), 5, "one path per trajectory")
 			await get_tree().process_frame
 			assert_eq(view.drawn_count(), paths.size(), "every trajectory is drawn")
 	assert_eq(
 		seen,
-		["sampling", "mppi", "optimizer", "combined", "arcade"] as Array[String],
+		(
+			["sampling", "mppi", "learned", "guided", "optimizer", "combined", "arcade"]
+			as Array[String]
+		),
 		"the registry's order, wrapping round",
 	)
 	await get_tree().process_frame

@@ -25,10 +25,16 @@ _NATIVE = json.loads(Path(__file__).with_name("controllers.json").read_text("utf
 REGISTRY = tuple(_NATIVE["controllers"])
 MIN_TRAJECTORIES, MAX_TRAJECTORIES = (int(n) for n in _NATIVE["trajectories"])
 PLANNERS = tuple(entry["name"] for entry in REGISTRY if entry["plans"])
+# The controllers players pick that drive by themselves, without trajectories or an N
+# (arcade, learned).
+DRIVERS = tuple(entry["name"] for entry in REGISTRY if entry["offered"] and not entry["plans"])
 # The thesis's planners, C-PBP alone and warm-started; the registry's other planners are
 # the baselines they are compared with.
 THESIS_PLANNERS = ("optimizer", "combined")
-BASELINES = tuple(kind for kind in PLANNERS if kind not in THESIS_PLANNERS)
+# Planners whose trajectory 1 follows a controller: each against combined at the same N.
+FOLLOWING_PLANNERS = ("guided",)
+BASELINES = tuple(kind for kind in PLANNERS
+                  if kind not in THESIS_PLANNERS + FOLLOWING_PLANNERS)
 # The game's physics models (cpbp_core::physics::PhysicsModel); rows without one are
 # classic, the model every row was ridden in before the exact model existed.
 PHYSICS = ("classic", "exact")
@@ -66,14 +72,14 @@ class Controller:
             raise ValueError(f"unknown physics '{physics}' in '{label}': use "
                              f"{' or '.join(PHYSICS)}")
         kind, _, count = name.partition("-")
-        if kind == "arcade" and not count:
-            return Controller("arcade", 0, physics)
+        if kind in DRIVERS and not count:
+            return Controller(kind, 0, physics)
         if kind in PLANNERS and count.isdigit() and (
                 MIN_TRAJECTORIES <= int(count) <= MAX_TRAJECTORIES):
             return Controller(kind, int(count), physics)
         planners = ", ".join(f"{p}-N" for p in PLANNERS)
         raise ValueError(
-            f"unknown controller '{label}': use arcade or {planners} "
+            f"unknown controller '{label}': use {' or '.join(DRIVERS)} or {planners} "
             f"(N in {MIN_TRAJECTORIES}–{MAX_TRAJECTORIES}), "
             "with :exact for the exact physics"
         )
@@ -100,7 +106,7 @@ def parse_controllers(text: str) -> list[Controller]:
 def display_order(controller: Controller) -> tuple[int, int, int]:
     """The thesis's order: arcade, then the optimizer, then combined (then the baselines),
     each by N, each physics model beside the classic one."""
-    return ((("arcade",) + PLANNERS).index(controller.kind), controller.trajectories,
+    return ((DRIVERS + PLANNERS).index(controller.kind), controller.trajectories,
             PHYSICS.index(controller.physics))
 
 

@@ -23,8 +23,10 @@ COMPARED = (
     "math_path",
 )
 # The project files a ride runs: the native sources, the scenes and scripts, and the
-# project settings (physics tick, autoloads). Documentation and tools do not ride.
-RIDE_PATHS = ("native", "scenes", "scripts", "addons/cpbp/cpbp.gdextension", "project.godot")
+# project settings (physics tick, autoloads) and the learned controller's model.
+# Documentation and tools do not ride.
+RIDE_PATHS = ("native", "scenes", "scripts", "addons/cpbp/cpbp.gdextension", "project.godot",
+              "models")
 NATIVE_LIBRARY = Path("addons/cpbp/bin/libcpbp.so")
 # Rows of results files made before fingerprints were recorded carry this name.
 UNRECORDED = "unrecorded"
@@ -46,7 +48,11 @@ def code_identity(root: Path) -> str:
     """Git's tree ids of the files a ride runs, plus a digest of any uncommitted change to
     them, so two checkouts agree exactly when the riding code does."""
     try:
-        trees = _git(root, "rev-parse", *(f"HEAD:{p}" for p in RIDE_PATHS)).split()
+        # A riding path the commit does not have yet (the model, before one is trained)
+        # is left out, so older commits keep the identity they had.
+        present = set(_git(root, "ls-tree", "--name-only", "HEAD", "--", *RIDE_PATHS).split())
+        trees = _git(root, "rev-parse",
+                     *(f"HEAD:{p}" for p in RIDE_PATHS if p in present)).split()
         changed = _git(root, "diff", "HEAD", "--binary", "--", *RIDE_PATHS)
         untracked = _git(root, "ls-files", "--others", "--exclude-standard", "--",
                          *RIDE_PATHS).split()

@@ -9,7 +9,8 @@ from collections import defaultdict
 from dataclasses import dataclass
 from pathlib import Path
 
-from .configs import BASELINES, PLANNERS, THESIS_PLANNERS, Config, Controller, display_order
+from .configs import (BASELINES, FOLLOWING_PLANNERS, PLANNERS, THESIS_PLANNERS, Config, Controller,
+                      display_order)
 from .results import Attempt
 from .stats import mcnemar_exact, mean, wilson_interval
 
@@ -130,16 +131,20 @@ def cost_table(summaries: dict[Config, Summary], attempts: list[Attempt]) -> str
 
 
 def paired_table(attempts: list[Attempt]) -> str:
-    """Each planner against arcade, combined against the optimizer and each baseline
+    """Each controller against arcade, combined against the optimizer, guided against
+    combined at the same N, and each baseline
     (sampling, MPPI) against both C-PBP planners at the same N (in the same physics), and
     each controller in the exact physics against itself in the classic, on the attempts
     both rode (the same bumps), with the exact McNemar test."""
     outcome = {(a.config, a.attempt): a.outcome == "goal" for a in attempts}
     configs = {a.config for a in attempts}
     controllers = sorted({c.controller for c in configs}, key=display_order)
-    pairs = [(c, Controller("arcade", 0, c.physics)) for c in controllers if c.plans]
+    pairs = [(c, Controller("arcade", 0, c.physics)) for c in controllers
+             if c.kind != "arcade"]
     pairs += [(c, Controller("optimizer", c.trajectories, c.physics)) for c in controllers
               if c.kind == "combined"]
+    pairs += [(c, Controller("combined", c.trajectories, c.physics)) for c in controllers
+              if c.kind in FOLLOWING_PLANNERS]
     pairs += [(c, Controller(cpbp, c.trajectories, c.physics)) for c in controllers
               if c.kind in BASELINES for cpbp in THESIS_PLANNERS]
     pairs += [(c, c.in_physics("classic")) for c in controllers if c.physics != "classic"]

@@ -48,7 +48,7 @@ def _parser() -> argparse.ArgumentParser:
                         "and the report (default docs/scenarios)")
     parser.add_argument("--controllers", default=",".join(PLANNERS),
                         help="planning controllers of the registry (default: all of them), or "
-                             "arcade (ridden once per seed, as N = 0), comma-separated")
+                             "arcade and learned (ridden once per seed, as N = 0), comma-separated")
     parser.add_argument("--counts", default="5,10", help="trajectory counts N")
     parser.add_argument("--seeds", default="0-9", help="FIRST-LAST: ride i for each")
     parser.add_argument("--scenarios", default="turn,slalom,push,walk")

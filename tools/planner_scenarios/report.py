@@ -24,7 +24,7 @@ METRICS = {
     "slope15": "stop on a 15° slope, stand, hill start: rolled back (m)",
     "downhill15": "stop facing down a 15° slope, stand, ride off: crept on the brake (m)",
 }
-ORDER = ("combined", "optimizer", "sampling", "mppi", "arcade")
+ORDER = ("combined", "guided", "optimizer", "sampling", "mppi", "learned", "arcade")
 REFERENCE = "combined"
 
 
@@ -89,6 +89,7 @@ def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
 
     styles = {"combined": ("tab:orange", "s"), "optimizer": ("tab:blue", "o"),
               "sampling": ("tab:green", "^"), "mppi": ("tab:purple", "D"),
+              "guided": ("tab:red", "v"), "learned": ("tab:brown", "X"),
               "arcade": ("black", "P")}
     # Rows of at most four panels, so the chart stays readable however many scenarios.
     columns = min(4, len(scenarios))
@@ -101,7 +102,7 @@ def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
     for ax, scenario in zip(axes.flat, scenarios):
         mine = [r for r in rows if r["scenario"] == scenario]
         controllers = sorted({r["controller"] for r in mine}, key=_order)
-        # N as categories, not a log axis: arcade rides as N = 0, and a scenario ridden at
+        # N as categories, not a log axis: arcade and learned ride as N = 0, and a scenario ridden at
         # one N alone still shows its controllers side by side.
         counts = sorted({r["trajectories"] for r in mine})
         for k, controller in enumerate(controllers):
@@ -114,7 +115,7 @@ def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
                 [counts.index(n) + spread for n in ns], [i.mean for i in intervals],
                 yerr=[[i.mean - i.low for i in intervals], [i.high - i.mean for i in intervals]],
                 color=colour, marker=marker, capsize=3, label=controller)
-        ax.set_xticks(range(len(counts)), ["arcade" if n == 0 else str(n) for n in counts])
+        ax.set_xticks(range(len(counts)), ["alone" if n == 0 else str(n) for n in counts])
         ax.set_xlim(-0.6, len(counts) - 0.4)
         ax.set_xlabel("trajectories N")
         ax.set_title(METRICS[scenario], fontsize=8.5, wrap=True)

@@ -10,7 +10,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use cpbp_core::bike::{Controls, CONTROL_DIM};
 use cpbp_core::control::cpbp::{PlanPhases, PlanResult};
-use cpbp_core::control::{BikePlanner, BikeRollout, OptimizerConfig, PlanWait, PlannerSpec};
+use cpbp_core::control::{
+    BikePlanner, BikeRollout, Follows, OptimizerConfig, PlanWait, PlannerSpec,
+};
 use cpbp_core::ode::WorldState;
 use cpbp_core::ride::{
     limits, Controller, ControllerEntry, ControllerKind, Drives, Intent, Ride, RideState,
@@ -34,6 +36,7 @@ static HANDS_OFF: ControllerEntry = ControllerEntry {
     name: "hands_off",
     label: "Hands off (a test's)",
     offered: false,
+    uses_network: false,
     drives: Drives::Itself(|| Box::new(HandsOff)),
 };
 
@@ -109,13 +112,14 @@ impl BikePlanner for StillBar {
 
 static STILL_BAR_PLANNER: PlannerSpec = PlannerSpec {
     build: |_config: &OptimizerConfig, steps| Box::new(StillBar { steps }),
-    follows_arcade: false,
+    follows: Follows::Nothing,
 };
 
 static STILL_BAR: ControllerEntry = ControllerEntry {
     name: "still_bar",
     label: "Still bar (a test's planner)",
     offered: false,
+    uses_network: false,
     drives: Drives::Plans(&STILL_BAR_PLANNER),
 };
 

@@ -166,7 +166,10 @@ fn a_dying_planning_thread_is_reported_the_bike_rides_on_and_a_new_ride_rebuilds
     assert_eq!(ride.failure(), None);
     ride.inject_fault("injected planner fault");
     common::ride(&mut ride, 3.0, 0.0);
-    assert_eq!(ride.failure(), Some("injected planner fault"));
+    assert_eq!(
+        ride.failure(),
+        Some("the planner stopped (injected planner fault); arcade steers")
+    );
     assert!(
         ride.plan().is_none(),
         "no plan drives: the arcade controller does"

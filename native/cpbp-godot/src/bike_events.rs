@@ -40,7 +40,16 @@ impl BikeSimulation {
         self.failure_reported = failure.is_some();
         if let Some(reason) = failure {
             let label = self.controller_kind().label();
-            godot_error!("BikeSimulation: the {label} controller's planning thread died ({reason}); the arcade controller drives until the ride restarts");
+            if self.ride.as_ref().is_some_and(Ride::controller_died) {
+                godot_error!(
+                    "BikeSimulation: the {label} controller cannot drive as itself: {reason}"
+                );
+            } else {
+                // Known and shown on the HUD (a missing model was warned of as it loaded).
+                godot_print!(
+                    "BikeSimulation: the {label} controller cannot drive as itself: {reason}"
+                );
+            }
             self.signals()
                 .controller_failed()
                 .emit(&GString::from(reason.as_str()));

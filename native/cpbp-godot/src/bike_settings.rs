@@ -63,6 +63,7 @@ impl BikeSimulation {
                     .clamp(self.mppi_temperature, baseline.temperature),
                 steering_only: self.baseline_steering_only,
             },
+            policy: crate::policy_model::policy_at(&self.policy_model),
             ..defaults
         }
         .rolling_out_in(physics);

@@ -17,7 +17,7 @@ use godot::prelude::*;
 use crate::bike_description::{params_of, BikeDescription};
 use crate::bike_queries::pose_of;
 use crate::controller_choice::ControllerChoice;
-use crate::convert::placement;
+use crate::convert::{finite_input, placement};
 use crate::physics_choice::BikePhysics;
 use crate::terrain_import;
 
@@ -128,11 +128,14 @@ pub struct BikeSimulation {
     #[init(val = BaselineSettings::default().steering_only)]
     pub(crate) baseline_steering_only: bool,
     /// The ride starts with the first throttle (and again after each reset): until then
-    /// `is_waiting_for_throttle` is true. A bike with feet stands on them meanwhile; one
-    /// without (the classic physics' rigid bike) is held still where it was placed, since
-    /// standing still no steering can balance it.
+    /// `is_waiting_for_throttle` is true. A bike with feet stands on them; one without
+    /// (classic physics) is held where it was placed: standing, no steering balances it.
     #[export]
     pub(crate) wait_for_throttle: bool,
+    /// The learned network's model file (the `learned` and `guided` controllers).
+    #[export(file = "*.safetensors")]
+    #[init(val = crate::policy_model::default_model_path())]
+    pub(crate) policy_model: GString,
     pub(crate) ride: Option<Ride>,
     /// The player's intent as set so far (also before the ride is built).
     pub(crate) intent: Intent,
@@ -210,8 +213,8 @@ impl BikeSimulation {
     /// The physics blew up and the bike was put back at its spawn point.
     #[signal]
     pub(crate) fn recovered(reason: GString);
-    /// The controller's planning thread died (`reason`, its panic message); the arcade
-    /// controller drives until the ride is placed anew.
+    /// The controller cannot drive as itself (`reason` says why and who drives instead:
+    /// a planning thread died, or the learned model is missing).
     #[signal]
     pub(crate) fn controller_failed(reason: GString);
 
@@ -384,15 +387,5 @@ impl BikeSimulation {
     pub(crate) fn remember_poses(&mut self) {
         let Some(sim) = self.sim() else { return };
         self.previous_poses = Part::ALL.iter().map(|p| pose_of(sim, *p)).collect();
-    }
-}
-
-/// A player input clamped to ±`bound`; a non-finite one counts as 0, with a warning.
-fn finite_input(value: f64, bound: f64, function: &str) -> f64 {
-    if value.is_finite() {
-        value.clamp(-bound, bound)
-    } else {
-        godot_warn!("BikeSimulation.{function}: non-finite input {value} treated as 0");
-        0.0
     }
 }

@@ -53,3 +53,13 @@ pub fn placement(t: &Transform3D) -> Option<Placement> {
         rotation: rotation * bike_to_node(),
     })
 }
+
+/// A player input clamped to ±`bound`; a non-finite one counts as 0, with a warning.
+pub(crate) fn finite_input(value: f64, bound: f64, function: &str) -> f64 {
+    if value.is_finite() {
+        value.clamp(-bound, bound)
+    } else {
+        godot_warn!("BikeSimulation.{function}: non-finite input {value} treated as 0");
+        0.0
+    }
+}

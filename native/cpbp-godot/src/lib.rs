@@ -15,6 +15,7 @@ mod native_info;
 mod ode_world;
 mod physics_choice;
 mod plan_handover;
+mod policy_model;
 mod terrain_check;
 mod terrain_import;
 

@@ -7,8 +7,10 @@
 
 use std::sync::Arc;
 
-use cpbp_core::bike::{DriveInput, Placement, RiderPosition};
-use cpbp_core::control::learned::{features, output_entries, FEATURE_COUNT, OUTPUT_COUNT};
+use cpbp_core::bike::{Controls, DriveInput, Placement, RiderPosition};
+use cpbp_core::control::learned::{
+    features, output_entries, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT,
+};
 use cpbp_core::control::planner::COMBINED;
 use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, TurnIntent};
 use cpbp_core::physics::PhysicsModel;
@@ -252,10 +254,18 @@ pub struct Records {
     pub labels: Vec<[f32; OUTPUT_COUNT]>,
     /// Whether the ride ended in a crash (the rows up to it stay: they are the expert's).
     pub crashed: bool,
+    /// Who chose the applied controls: the expert, or the learner (DAgger).
+    pub driver: String,
 }
 
-/// Rides `episode` with the planner as the expert, recording every step.
-pub fn ride(episode: &Episode, settings: &ExpertSettings) -> Records {
+/// Rides `episode`, recording every step as labelled by the planner as the expert. The
+/// expert drives, or with `learner` the network does and the expert labels the states
+/// the network leads to (DAgger: the learner is taught where its own mistakes take it).
+pub fn ride(
+    episode: &Episode,
+    settings: &ExpertSettings,
+    learner: Option<&PolicyNetwork>,
+) -> Records {
     let mut sim = episode.simulation();
     let config = OptimizerConfig {
         particles: settings.trajectories,
@@ -266,7 +276,13 @@ pub fn ride(episode: &Episode, settings: &ExpertSettings) -> Records {
     let mut expert = BikeOptimizer::new(&sim, &COMBINED, config);
     let mut noise = stream(episode.seed, Stream::Noise);
     let (turn, entries) = (TurnIntent::default(), output_entries());
-    let mut records = Records::default();
+    let mut records = Records {
+        driver: learner.map_or_else(
+            || "expert".to_string(),
+            |net| format!("learner ({})", net.parts().training),
+        ),
+        ..Records::default()
+    };
     let mut segment = episode.segments[0];
     for step in 0..episode.steps {
         if let Some(next) = episode.segments.iter().find(|s| s.start == step) {
@@ -293,13 +309,19 @@ pub fn ride(episode: &Episode, settings: &ExpertSettings) -> Records {
         };
         let seen = features(bike, world, &goal, up);
         let label = expert.controls(&sim, &goal);
-        let mut applied = label;
+        // A state the network cannot read (non-finite) is the expert's to drive.
+        let driven = learner
+            .and_then(|net| net.controls(bike, world, &goal, up).ok())
+            .map_or(label, |c| Controls::sanitized(c.values()).0);
+        let mut applied = driven;
         if settings.noise > 0.0 {
             for &i in &entries {
                 let range = cpbp_core::bike::UPPER[i] - cpbp_core::bike::LOWER[i];
                 let kick: f64 = noise.sample(StandardNormal);
-                applied.set(i, label.get(i) + kick * settings.noise * range);
+                applied.set(i, driven.get(i) + kick * settings.noise * range);
             }
+        }
+        if applied != label {
             expert.note_applied(&applied);
         }
         records.features.push(seen.map(|x| x as f32));

@@ -2,7 +2,8 @@
 //! [--noise X] [--jobs J]`: the planner rides the episodes of those seeds as the expert
 //! and each is saved as one shard in DIR (`episode-SEED.safetensors`). Episodes already
 //! saved are skipped, so a stopped run continues where it was; progress and an ETA are
-//! printed as episodes end.
+//! printed as episodes end. With `--learner MODEL` the network drives and the planner
+//! labels the states it leads to (a DAgger round).
 //!
 //! `cpbp-learn summary --out DIR`: what the saved episodes hold (rows, the speeds they
 //! cover, each output's mean and spread), every shard checked against this build's
@@ -18,17 +19,23 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
-use cpbp_core::control::learned::{output_entries, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT};
+use cpbp_core::control::learned::{
+    output_entries, PolicyNetwork, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT,
+};
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
-[--seconds S] [--noise X] [--jobs J]\n       cpbp-learn summary --out DIR";
+[--seconds S] [--noise X] [--jobs J] [--learner MODEL]\n       \
+cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S]\n       \
+cpbp-learn summary --out DIR";
 
 struct Generate {
     out: PathBuf,
     seeds: std::ops::RangeInclusive<u64>,
     settings: ExpertSettings,
     jobs: usize,
+    /// The network that drives while the expert labels (DAgger), if any.
+    learner: Option<PolicyNetwork>,
 }
 
 fn main() {
@@ -57,6 +64,7 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
     let mut seeds = None;
     let mut settings = ExpertSettings::default();
     let mut jobs = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let mut learner = None;
     let mut it = arguments.iter();
     while let Some(flag) = it.next() {
         let value = it
@@ -84,6 +92,11 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
             "--seconds" => settings.seconds = number("--seconds")?.clamp(1.0, 600.0),
             "--noise" => settings.noise = number("--noise")?.min(0.5),
             "--jobs" => jobs = number("--jobs")?.max(1.0) as usize,
+            "--learner" => {
+                let network = PolicyNetwork::load(std::path::Path::new(value))
+                    .map_err(|e| format!("--learner {value}: {e}"))?;
+                learner = Some(network);
+            }
             other => return Err(format!("unknown option '{other}'\nusage: {USAGE}")),
         }
     }
@@ -92,6 +105,7 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
         seeds: seeds.ok_or("--episodes is required")?,
         settings,
         jobs,
+        learner,
     })
 }
 
@@ -106,11 +120,16 @@ fn generate(run: Generate) -> Result<(), String> {
     let total = run.seeds.clone().count();
     println!(
         "{} of {total} episodes to ride into {} (expert: combined, N = {}, exact physics, \
-         noise {}; {} jobs)",
+         noise {}; {}; {} jobs)",
         missing.len(),
         run.out.display(),
         run.settings.trajectories,
         run.settings.noise,
+        if run.learner.is_some() {
+            "the learner drives"
+        } else {
+            "the expert drives"
+        },
         run.jobs
     );
     let pool = rayon::ThreadPoolBuilder::new()
@@ -121,7 +140,7 @@ fn generate(run: Generate) -> Result<(), String> {
     pool.install(|| {
         missing.par_iter().try_for_each(|&seed| {
             let episode = Episode::draw(seed, &run.settings);
-            let records = episode::ride(&episode, &run.settings);
+            let records = episode::ride(&episode, &run.settings, run.learner.as_ref());
             shard::write(&run.out, &episode, &run.settings, &records)
                 .map_err(|e| format!("cannot save episode {seed}: {e}"))?;
             let finished = done.fetch_add(1, Ordering::SeqCst) + 1;
@@ -148,7 +167,12 @@ fn summary(dir: &std::path::Path) -> Result<(), String> {
     let (mut rows, mut speeds) = (0, (f32::INFINITY, f32::NEG_INFINITY));
     let mut sums = [(0.0f64, 0.0f64); OUTPUT_COUNT];
     for path in &paths {
-        let (features, labels, n) = shard::read(path)?;
+        let shard::ShardRows {
+            features,
+            labels,
+            rows: n,
+            ..
+        } = shard::read(path)?;
         rows += n;
         let speed_at = FEATURE_NAMES
             .iter()
@@ -177,11 +201,16 @@ fn summary(dir: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
-/// `train --data DIR --model FILE [--epochs E] [--seed S]`: trains on every shard in DIR
-/// (seeds ending in 0 held out), prints each epoch's losses, writes the model aside and
-/// renames it into place.
+/// Control steps before a crash left out of training (one second).
+const FALL_STEPS: usize = 30;
+
+/// `train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S]`: trains
+/// on every shard in the folders (seeds ending in 0 held out; the last second before a
+/// crash left out), prints each epoch's losses (and saves them as CSV), writes the model
+/// aside and renames it into place.
 fn train_command(arguments: &[String]) -> Result<(), String> {
-    let (mut data, mut model, mut settings) = (None, None, train::TrainSettings::default());
+    let (mut data, mut model, mut settings) = (Vec::new(), None, train::TrainSettings::default());
+    let mut losses_path = None;
     for pair in arguments.chunks(2) {
         let [flag, value] = pair else {
             return Err(format!("{} needs a value", pair[0]));
@@ -192,46 +221,65 @@ fn train_command(arguments: &[String]) -> Result<(), String> {
                 .map_err(|_| format!("{flag}: bad number '{value}'"))
         };
         match flag.as_str() {
-            "--data" => data = Some(PathBuf::from(value)),
+            "--data" => data.extend(value.split(',').map(PathBuf::from)),
             "--model" => model = Some(PathBuf::from(value)),
+            "--losses" => losses_path = Some(PathBuf::from(value)),
             "--epochs" => settings.epochs = count()?,
             "--seed" => settings.seed = count()? as u64,
             other => return Err(format!("unknown option '{other}'")),
         }
     }
-    let (data, model) = (
-        data.ok_or("--data is required")?,
-        model.ok_or("--model is required")?,
-    );
+    let model = model.ok_or("--model is required")?;
+    if data.is_empty() {
+        return Err("--data is required".into());
+    }
     let (mut fit, mut held_out) = (train::Dataset::default(), train::Dataset::default());
     let mut episodes = 0;
-    for path in shard::shard_paths(&data)? {
-        let (features, labels, _) = shard::read(&path)?;
-        let seed = shard::seed_of(&path)
-            .ok_or_else(|| format!("{}: no seed in its name", path.display()))?;
-        let set = if seed % 10 == 0 {
-            &mut held_out
-        } else {
-            &mut fit
-        };
-        set.extend(&features, &labels);
-        episodes += 1;
+    for dir in &data {
+        for path in shard::shard_paths(dir)? {
+            let shard = shard::read(&path)?.without_the_fall(FALL_STEPS);
+            let seed = shard::seed_of(&path)
+                .ok_or_else(|| format!("{}: no seed in its name", path.display()))?;
+            let set = if seed % 10 == 0 {
+                &mut held_out
+            } else {
+                &mut fit
+            };
+            set.extend(&shard.features, &shard.labels);
+            episodes += 1;
+        }
     }
     println!(
         "{episodes} episodes: {} rows to train on, {} held out",
         fit.rows(),
         held_out.rows()
     );
+    let folders: Vec<String> = data
+        .iter()
+        .filter_map(|d| d.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
     let description = format!(
-        "cpbp-learn train: {} episodes from {}, hidden {:?}, {} epochs, batch {}, AdamW lr {}, seed {}",
-        episodes, data.display(), settings.hidden, settings.epochs, settings.batch, settings.learning_rate, settings.seed
+        "cpbp-learn train: {episodes} episodes ({}), {} rows, hidden {:?}, {} epochs, batch {}, \
+         AdamW lr {}, seed {}",
+        folders.join(" + "),
+        fit.rows(),
+        settings.hidden,
+        settings.epochs,
+        settings.batch,
+        settings.learning_rate,
+        settings.seed
     );
+    let mut losses = String::from("epoch,train,held_out\n");
     let network = train::train(&fit, &held_out, &settings, &description, |epoch, loss| {
         println!(
             "epoch {epoch:>3}: train {:.4} · held out {:.4}",
             loss.train, loss.validation
         );
+        losses += &format!("{epoch},{:.6},{:.6}\n", loss.train, loss.validation);
     })?;
+    if let Some(path) = losses_path {
+        std::fs::write(&path, losses).map_err(|e| format!("{}: {e}", path.display()))?;
+    }
     let aside = model.with_extension("partial");
     std::fs::write(&aside, network.to_bytes()).map_err(|e| format!("{}: {e}", aside.display()))?;
     std::fs::rename(&aside, &model).map_err(|e| format!("{}: {e}", model.display()))?;

@@ -58,6 +58,7 @@ pub fn write(
             format!("combined N={} exact", settings.trajectories),
         ),
         ("noise".into(), settings.noise.to_string()),
+        ("driver".into(), records.driver.clone()),
         ("crashed".into(), records.crashed.to_string()),
     ]);
     let bytes = safetensors::serialize(views, Some(meta)).map_err(std::io::Error::other)?;
@@ -69,8 +70,30 @@ pub fn write(
     std::fs::rename(&aside, &path)
 }
 
+/// An episode's rows as read back.
+pub struct ShardRows {
+    pub features: Vec<f32>,
+    pub labels: Vec<f32>,
+    pub rows: usize,
+    /// Whether the episode ended in a crash.
+    pub crashed: bool,
+}
+
+impl ShardRows {
+    /// Leaves out the last `steps` rows of an episode that crashed: by then the fall
+    /// could not be stopped, and what the expert did is no lesson.
+    pub fn without_the_fall(mut self, steps: usize) -> Self {
+        if self.crashed {
+            self.rows = self.rows.saturating_sub(steps);
+            self.features.truncate(self.rows * FEATURE_COUNT);
+            self.labels.truncate(self.rows * OUTPUT_COUNT);
+        }
+        self
+    }
+}
+
 /// A shard's rows, checked against this build's feature list.
-pub fn read(path: &Path) -> Result<(Vec<f32>, Vec<f32>, usize), String> {
+pub fn read(path: &Path) -> Result<ShardRows, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let fail = |why: String| format!("{}: {why}", path.display());
     let (_, header) = SafeTensors::read_metadata(&bytes).map_err(|e| fail(e.to_string()))?;
@@ -98,16 +121,29 @@ pub fn read(path: &Path) -> Result<(Vec<f32>, Vec<f32>, usize), String> {
     if rows != label_rows {
         return Err(fail("features and labels differ in length".into()));
     }
-    Ok((features, labels, rows))
+    Ok(ShardRows {
+        features,
+        labels,
+        rows,
+        crashed: field("crashed") == "true",
+    })
 }
 
-/// The shards in `dir`, in seed order.
+/// The shards in `dir` and the folders in it (one a DAgger round), in path order.
 pub fn shard_paths(dir: &Path) -> Result<Vec<PathBuf>, String> {
-    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map_err(|e| format!("cannot read {}: {e}", dir.display()))?
-        .filter_map(|entry| entry.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "safetensors"))
-        .collect();
+    let mut paths = Vec::new();
+    for entry in
+        std::fs::read_dir(dir).map_err(|e| format!("cannot read {}: {e}", dir.display()))?
+    {
+        let path = entry
+            .map_err(|e| format!("cannot read {}: {e}", dir.display()))?
+            .path();
+        if path.is_dir() {
+            paths.extend(shard_paths(&path)?);
+        } else if path.extension().is_some_and(|x| x == "safetensors") {
+            paths.push(path);
+        }
+    }
     paths.sort();
     Ok(paths)
 }

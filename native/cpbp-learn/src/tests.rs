@@ -1,10 +1,15 @@
 //! The generator's contract: an episode is a function of its seed, a shard holds exactly
 //! what was ridden, and data of another feature list is refused.
 
+use std::time::Instant;
+
+use candle_core::{Device, Tensor};
+
 use super::episode::{ride, Episode, ExpertSettings, Ground};
 use super::shard;
+use super::train::{train, Dataset, Layers, TrainSettings};
 use cpbp_core::bike::{LOWER, UPPER};
-use cpbp_core::control::learned::{output_entries, OUTPUT_COUNT};
+use cpbp_core::control::learned::{output_entries, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT};
 
 fn short() -> ExpertSettings {
     ExpertSettings {
@@ -34,10 +39,10 @@ fn an_episode_is_drawn_from_its_seed_alone() {
 fn a_ridden_episode_repeats_and_reads_back_from_its_shard() {
     let settings = short();
     let episode = Episode::draw(3, &settings);
-    let records = ride(&episode, &settings);
+    let records = ride(&episode, &settings, None);
     assert_eq!(records.features.len(), 30);
     assert_eq!(
-        ride(&episode, &settings),
+        ride(&episode, &settings, None),
         records,
         "the same seed rides the same"
     );
@@ -51,7 +56,13 @@ fn a_ridden_episode_repeats_and_reads_back_from_its_shard() {
     std::fs::create_dir_all(&dir).unwrap();
     shard::write(&dir, &episode, &settings, &records).unwrap();
     let path = shard::shard_path(&dir, 3);
-    let (features, labels, rows) = shard::read(&path).unwrap();
+    let shard::ShardRows {
+        features,
+        labels,
+        rows,
+        crashed,
+    } = shard::read(&path).unwrap();
+    assert_eq!(crashed, records.crashed);
     assert_eq!(rows, 30);
     assert_eq!(
         &features[..records.features[0].len()],
@@ -66,4 +77,85 @@ fn a_ridden_episode_repeats_and_reads_back_from_its_shard() {
     std::fs::write(&path, b"garbage").unwrap();
     assert!(shard::read(&path).is_err());
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Rides a few short episodes as the expert and trains on them: the whole pipeline,
+/// small (make test holds it under two minutes).
+fn tiny_run() -> (PolicyNetwork, Dataset) {
+    let settings = short();
+    let mut data = Dataset::default();
+    for seed in 1..=3 {
+        let records = ride(&Episode::draw(seed, &settings), &settings, None);
+        data.extend(
+            records.features.as_flattened(),
+            records.labels.as_flattened(),
+        );
+    }
+    let training = TrainSettings {
+        hidden: vec![16, 16],
+        epochs: 3,
+        batch: 32,
+        ..TrainSettings::default()
+    };
+    let network = train(
+        &data,
+        &Dataset::default(),
+        &training,
+        "a test's",
+        |_, loss| {
+            assert!(loss.train.is_finite());
+        },
+    )
+    .expect("it trains");
+    (network, data)
+}
+
+#[test]
+fn a_tiny_generation_and_training_run_completes_and_repeats() {
+    let started = Instant::now();
+    let (network, data) = tiny_run();
+    let (again, data_again) = tiny_run();
+    assert_eq!(data.features, data_again.features);
+    // Parts, not bytes: the file's metadata is a map whose order safetensors leaves free.
+    assert_eq!(
+        network.parts(),
+        again.parts(),
+        "the same seed trains the same"
+    );
+    let back = PolicyNetwork::parse(&network.to_bytes()).expect("the model reads back");
+    assert_eq!(back.parts().layers, network.parts().layers);
+    assert!(started.elapsed().as_secs() < 120, "{:?}", started.elapsed());
+}
+
+#[test]
+fn the_game_computes_what_training_computed() {
+    let (network, data) = tiny_run();
+    let parts = network.parts();
+    let device = Device::Cpu;
+    let layers = Layers::from_parts(parts, &device).unwrap();
+    for row in data.features.chunks_exact(FEATURE_COUNT).step_by(7) {
+        let normalised: Vec<f32> = row
+            .iter()
+            .enumerate()
+            .map(|(i, x)| (x - parts.input_mean[i]) / parts.input_std[i])
+            .collect();
+        let input = Tensor::from_slice(&normalised, (1, FEATURE_COUNT), &device).unwrap();
+        let trained: Vec<f32> = layers
+            .forward(&input)
+            .unwrap()
+            .flatten_all()
+            .unwrap()
+            .to_vec1()
+            .unwrap();
+        let features: [f64; FEATURE_COUNT] = std::array::from_fn(|i| f64::from(row[i]));
+        let game = network.evaluate(&features).unwrap();
+        for o in 0..OUTPUT_COUNT {
+            let expected = parts.output_mean[o] + trained[o] * parts.output_std[o];
+            assert!(
+                (f64::from(expected) - game[o]).abs() <= 1e-5,
+                "output {o}: training {expected}, game {}",
+                game[o]
+            );
+        }
+    }
 }

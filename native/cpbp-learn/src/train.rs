@@ -90,7 +90,7 @@ fn normalised(values: &[f32], mean: &[f32], spread: &[f32]) -> Vec<f32> {
 }
 
 /// The network's weights as candle variables.
-struct Layers {
+pub(crate) struct Layers {
     vars: Vec<(Var, Var)>,
 }
 
@@ -114,7 +114,24 @@ impl Layers {
         Ok(Self { vars })
     }
 
-    fn forward(&self, input: &Tensor) -> candle_core::Result<Tensor> {
+    /// The layers of a trained network, as candle variables again.
+    #[cfg(test)]
+    pub(crate) fn from_parts(parts: &NetworkParts, device: &Device) -> candle_core::Result<Self> {
+        let vars = parts
+            .layers
+            .iter()
+            .map(|(weight, bias)| {
+                let shape = (bias.len(), weight.len() / bias.len());
+                Ok((
+                    Var::from_tensor(&Tensor::from_slice(weight, shape, device)?)?,
+                    Var::from_tensor(&Tensor::from_slice(bias, bias.len(), device)?)?,
+                ))
+            })
+            .collect::<candle_core::Result<_>>()?;
+        Ok(Self { vars })
+    }
+
+    pub(crate) fn forward(&self, input: &Tensor) -> candle_core::Result<Tensor> {
         let last = self.vars.len() - 1;
         let mut x = input.clone();
         for (i, (weight, bias)) in self.vars.iter().enumerate() {

@@ -4,8 +4,9 @@ import json
 import unittest
 from pathlib import Path
 
-from cpbp_experiment.configs import (BASELINES, MAX_TRAJECTORIES, MIN_TRAJECTORIES, PLANNERS,
-                                     REGISTRY, THESIS_PLANNERS, Controller)
+from cpbp_experiment.configs import (BASELINES, FOLLOWING_PLANNERS, MAX_TRAJECTORIES,
+                                     MIN_TRAJECTORIES, PLANNERS, REGISTRY, THESIS_PLANNERS,
+                                     Controller)
 
 
 class RegistryTest(unittest.TestCase):
@@ -15,7 +16,8 @@ class RegistryTest(unittest.TestCase):
         self.assertEqual([e["name"] for e in copy if e["plans"]], list(PLANNERS))
         self.assertEqual(len(REGISTRY), len(copy))
         self.assertTrue(set(THESIS_PLANNERS) <= set(PLANNERS))
-        self.assertEqual(set(BASELINES), set(PLANNERS) - set(THESIS_PLANNERS))
+        self.assertEqual(set(BASELINES),
+                         set(PLANNERS) - set(THESIS_PLANNERS) - set(FOLLOWING_PLANNERS))
 
     def test_every_planner_parses_with_a_count_and_the_arcade_without(self):
         for kind in PLANNERS:

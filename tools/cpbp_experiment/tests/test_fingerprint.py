@@ -63,7 +63,8 @@ class FingerprintTest(unittest.TestCase):
                            capture_output=True)
         git("init", "-q")
         for path in ("native/a.rs", "scenes/a.gd", "scripts/b.gd",
-                     "addons/cpbp/cpbp.gdextension", "project.godot", "docs/x.md"):
+                     "addons/cpbp/cpbp.gdextension", "project.godot", "models/m.safetensors",
+                     "docs/x.md"):
             (self.root / path).parent.mkdir(parents=True, exist_ok=True)
             (self.root / path).write_text("1\n")
         git("add", ".")

@@ -4,11 +4,14 @@
 //! error when the player holds the rider's weight somewhere. In a wheelie the lean is
 //! measured against the lifted support point, so the balance point costs nothing.
 
+use std::sync::Arc;
+
 use glam::DVec3;
 
 use super::arcade::ArcadeController;
 use super::cpbp::{Priors, RolloutSystem};
 use super::lean::{current_lean_vector, desired_lean_vector, lean_cost, roll_lean_cost};
+use super::learned::PolicyNetwork;
 use super::Goal;
 use crate::bike::{
     index, rider_position_cost, Bike, Controls, ForceClass, CONTROL_DIM, DRIVE_ENTRIES,
@@ -53,9 +56,18 @@ pub struct BikeRollout {
     /// directly, not through the planner.
     pub goal: Goal,
     pub tolerances: CostTolerances,
-    /// The arcade controller this particle follows (combined mode's particle 1), with
-    /// its memory as it was on the master at the start of the plan.
-    pub policy: Option<ArcadeController>,
+    /// The controller this particle follows (combined and guided modes' particle 1).
+    pub policy: Option<RolloutPolicy>,
+}
+
+/// A controller a particle follows live.
+#[derive(Clone)]
+pub enum RolloutPolicy {
+    /// The arcade controller, with its memory as it was on the master at the start of
+    /// the plan.
+    Arcade(ArcadeController),
+    /// The learned network (it remembers nothing).
+    Network(Arc<PolicyNetwork>),
 }
 
 impl BikeRollout {
@@ -146,14 +158,20 @@ impl RolloutSystem for BikeRollout {
     }
 
     fn policy(&mut self, _step: usize) -> Option<Vec<f64>> {
-        let controller = self.policy.as_mut()?;
-        let controls = controller.controls(
-            &self.bike,
-            &self.world,
-            &self.goal,
-            self.gravity,
-            self.step_dt,
-        );
+        let controls = match self.policy.as_mut()? {
+            RolloutPolicy::Arcade(controller) => controller.controls(
+                &self.bike,
+                &self.world,
+                &self.goal,
+                self.gravity,
+                self.step_dt,
+            ),
+            // A state the network cannot read (non-finite) is one the particle's cost
+            // already condemns: the prior's mean steps it on.
+            RolloutPolicy::Network(network) => network
+                .controls(&self.bike, &self.world, &self.goal, self.up)
+                .ok()?,
+        };
         Some(controls.values().to_vec())
     }
 

@@ -14,10 +14,10 @@ pub mod sampling;
 
 pub use anytime::{AnytimeOptimizer, HandoverStats, Plan, PlanWait};
 pub use arcade::{eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
-pub use bike_rollout::{bike_priors, BikeRollout, CostTolerances};
+pub use bike_rollout::{bike_priors, BikeRollout, CostTolerances, RolloutPolicy};
 pub use goal::Goal;
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };
 pub use optimizer::{BaselineSettings, BikeOptimizer, OptimizerConfig};
-pub use planner::{BikePlanner, PlannerSpec};
+pub use planner::{BikePlanner, Follows, PlannerSpec};

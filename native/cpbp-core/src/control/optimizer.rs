@@ -4,9 +4,10 @@
 //! in step with the master for the planners whose trajectory 1 follows it.
 
 use super::arcade::ArcadeController;
-use super::bike_rollout::{BikeRollout, CostTolerances};
+use super::bike_rollout::{BikeRollout, CostTolerances, RolloutPolicy};
 use super::cpbp::{PlanPhases, PlanResult, DEFAULT_SEED};
-use super::planner::{BikePlanner, PlannerSpec};
+use super::learned::LoadedPolicy;
+use super::planner::{BikePlanner, Follows, PlannerSpec};
 use super::Goal;
 use crate::bike::Controls;
 use crate::ode::Solver;
@@ -69,6 +70,9 @@ pub struct OptimizerConfig {
     pub threads: usize,
     /// Settings of the baseline planners (ignored by C-PBP).
     pub baseline: BaselineSettings,
+    /// The network the guided planner's trajectory 1 follows (and the learned
+    /// controller drives with).
+    pub policy: LoadedPolicy,
 }
 
 impl Default for OptimizerConfig {
@@ -84,6 +88,7 @@ impl Default for OptimizerConfig {
             seed: DEFAULT_SEED,
             threads: 0,
             baseline: BaselineSettings::default(),
+            policy: LoadedPolicy::default(),
         }
     }
 }
@@ -218,9 +223,16 @@ impl BikeOptimizer {
             rollout.tolerances = self.config.tolerances;
         }
         // Combined mode: particle 1 rides with the arcade controller, starting from the
-        // master's controller memory (taken before this step updates it).
-        if let (true, Some(rollout)) = (self.spec.follows_arcade, self.rollouts.get_mut(1)) {
-            rollout.policy = Some(self.arcade);
+        // master's controller memory (taken before this step updates it); guided mode:
+        // with the network (the arcade controller while there is none).
+        let network = self.config.policy.network().cloned();
+        let followed = match (self.spec.follows, network) {
+            (Follows::Nothing, _) => None,
+            (Follows::Network, Some(network)) => Some(RolloutPolicy::Network(network)),
+            (Follows::Arcade | Follows::Network, _) => Some(RolloutPolicy::Arcade(self.arcade)),
+        };
+        if let (Some(policy), Some(rollout)) = (followed, self.rollouts.get_mut(1)) {
+            rollout.policy = Some(policy);
         }
         // Keep the arcade controller's memory in step with the master.
         self.arcade.controls_of(sim, goal);

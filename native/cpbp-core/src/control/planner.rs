@@ -35,27 +35,45 @@ pub trait BikePlanner: Send {
 pub struct PlannerSpec {
     /// A new planner with `config`'s settings, planning `steps` control steps ahead.
     pub build: fn(config: &OptimizerConfig, steps: usize) -> Box<dyn BikePlanner>,
-    /// Whether trajectory 1 rides with the arcade controller, live (combined mode).
-    pub follows_arcade: bool,
+    /// The controller trajectory 1 rides with, live (combined and guided modes).
+    pub follows: Follows,
+}
+
+/// Which controller a planner's trajectory 1 follows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Follows {
+    /// None: C-PBP replays its last refinement there, the baselines their nominal plan.
+    Nothing,
+    /// The arcade controller (combined mode).
+    Arcade,
+    /// The learned network (guided mode); the arcade controller while there is none.
+    Network,
 }
 
 /// C-PBP alone; trajectory 1 replays the last plan's local refinement (thesis §4.3).
 pub static OPTIMIZER: PlannerSpec = PlannerSpec {
     build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Refinement)),
-    follows_arcade: false,
+    follows: Follows::Nothing,
 };
 
 /// C-PBP warm-started with the arcade controller's trajectory (thesis §4.3.2).
 pub static COMBINED: PlannerSpec = PlannerSpec {
-    build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Arcade)),
-    follows_arcade: true,
+    build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Policy)),
+    follows: Follows::Arcade,
+};
+
+/// C-PBP warm-started with the learned network's trajectory (issue 34): the network
+/// proposes, the planner checks and refines, so a few trajectories should do.
+pub static GUIDED: PlannerSpec = PlannerSpec {
+    build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Policy)),
+    follows: Follows::Network,
 };
 
 /// MuJoCo MPC's predictive sampling: the cheapest of a nominal plan and its perturbations
 /// becomes the plan.
 pub static SAMPLING: PlannerSpec = PlannerSpec {
     build: |config, steps| Box::new(sampling(config, steps, SamplingUpdate::Best)),
-    follows_arcade: false,
+    follows: Follows::Nothing,
 };
 
 /// MPPI: the cost-weighted average of the perturbations becomes the plan.
@@ -68,14 +86,15 @@ pub static MPPI: PlannerSpec = PlannerSpec {
             SamplingUpdate::Weighted { temperature },
         ))
     },
-    follows_arcade: false,
+    follows: Follows::Nothing,
 };
 
 /// What C-PBP's trajectory 1 replays.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum WarmRoute {
     Refinement,
-    Arcade,
+    /// The followed controller's (arcade or the network).
+    Policy,
 }
 
 /// C-PBP with the warm start its mode takes.
@@ -116,7 +135,7 @@ impl BikePlanner for Cpbp {
     fn plan(&mut self, rollouts: &mut [BikeRollout], start: &WorldState) -> PlanResult {
         let warm = match self.warm {
             WarmRoute::Refinement => WarmStart::Refinement,
-            WarmRoute::Arcade => WarmStart::Policy,
+            WarmRoute::Policy => WarmStart::Policy,
         };
         self.planner.plan(rollouts, start, warm)
     }

@@ -68,10 +68,14 @@ pub trait Controller: Send {
     fn handover(&self) -> Option<HandoverStats> {
         None
     }
-    /// Why it no longer drives as itself (a planner whose thread died: the arcade
-    /// controller drives in its place), if so.
+    /// What keeps it from driving as itself, as the HUD says it (a planner whose thread
+    /// died, the learned controller without a model: who drives instead), if anything.
     fn failure(&self) -> Option<&str> {
         None
+    }
+    /// Whether it must be built anew before the next ride (its planning thread died).
+    fn died(&self) -> bool {
+        false
     }
     /// Fails as a dying planning thread would (tests of the fallback and its report);
     /// nothing for controllers without one.

@@ -4,7 +4,10 @@
 use super::auto_trajectories::AutoTrajectories;
 use super::controller::{Controller, Intent, PlannerSettings, RideState};
 use crate::bike::{manual_controls, Controls};
-use crate::control::{AnytimeOptimizer, ArcadeController, HandoverStats, Plan, PlannerSpec};
+use crate::control::learned::{LoadedPolicy, NonFiniteFeature, FEATURE_NAMES};
+use crate::control::{
+    AnytimeOptimizer, ArcadeController, Follows, HandoverStats, Plan, PlannerSpec,
+};
 use crate::simulation::Simulation;
 
 /// The arcade controller (thesis §4.3.2) on the master.
@@ -24,6 +27,65 @@ impl Controller for ArcadeDriver {
 
     fn reset(&mut self) {
         self.0.reset();
+    }
+}
+
+/// The learned network (issue 34) on the master. The arcade controller keeps its memory
+/// in step on every step and drives instead while there is no usable model, or at a step
+/// whose state the network cannot read.
+#[derive(Default)]
+pub struct LearnedDriver {
+    arcade: ArcadeController,
+    /// Why the arcade controller drove the last step, if it did.
+    problem: Option<String>,
+}
+
+impl LearnedDriver {
+    pub fn boxed() -> Box<dyn Controller> {
+        Box::<Self>::default()
+    }
+
+    fn note(&mut self, problem: Option<String>) {
+        if self.problem != problem {
+            self.problem = problem;
+        }
+    }
+}
+
+impl Controller for LearnedDriver {
+    fn controls(&mut self, state: &RideState<'_>, _intent: &Intent) -> Controls {
+        let arcade = self.arcade.controls_of(state.sim, &state.goal);
+        let policy = &state.planner.optimizer.policy;
+        let Some(network) = policy.network() else {
+            let why = policy.problem().unwrap_or("no learned model");
+            if self.problem.is_none() {
+                self.note(Some(format!("{why}; arcade steers")));
+            }
+            return arcade;
+        };
+        let sim = state.sim;
+        match network.controls(sim.bike(), sim.world(), &state.goal, sim.up()) {
+            Ok(controls) => {
+                self.note(None);
+                Controls::sanitized(controls.values()).0
+            }
+            Err(NonFiniteFeature(i)) => {
+                self.note(Some(format!(
+                    "the network cannot read the state ({} is not a number); arcade steers",
+                    FEATURE_NAMES[i]
+                )));
+                arcade
+            }
+        }
+    }
+
+    fn reset(&mut self) {
+        self.arcade.reset();
+        self.problem = None;
+    }
+
+    fn failure(&self) -> Option<&str> {
+        self.problem.as_deref()
     }
 }
 
@@ -58,6 +120,10 @@ pub struct PlannerDriver {
     /// The step of the last plan whose time `auto` was told.
     timed_plan: Option<u64>,
     trajectories: usize,
+    /// Whether trajectory 1 follows the learned network (guided mode).
+    follows_network: bool,
+    /// What keeps it from planning as itself, as the HUD says it.
+    failure: Option<String>,
 }
 
 impl PlannerDriver {
@@ -67,6 +133,8 @@ impl PlannerDriver {
             auto: None,
             timed_plan: None,
             trajectories: planner.optimizer.particles,
+            follows_network: spec.follows == Follows::Network,
+            failure: None,
         }
     }
 
@@ -83,6 +151,20 @@ impl PlannerDriver {
             slot => *slot = Some((start, AutoTrajectories::new(start, period_s))),
         }
         self.auto.as_ref().map(|(_, auto)| auto.trajectories())
+    }
+
+    /// Keeps the HUD's sentence on what stops the planner being itself up to date.
+    fn note_failure(&mut self, policy: &LoadedPolicy) {
+        let failure = match (self.anytime.failure(), policy.problem()) {
+            (Some(died), _) => Some(format!("the planner stopped ({died}); arcade steers")),
+            (None, Some(why)) if self.follows_network => {
+                Some(format!("{why}; the arcade controller guides the planner"))
+            }
+            _ => None,
+        };
+        if self.failure != failure {
+            self.failure = failure;
+        }
     }
 
     /// Tells the automatic N how the step went: the newest plan's time, and whether the
@@ -115,6 +197,7 @@ impl Controller for PlannerDriver {
         let late_before = self.anytime.stats.late;
         let controls = self.anytime.controls(state.sim, &state.goal, &config);
         self.note_step(self.anytime.stats.late > late_before);
+        self.note_failure(&config.policy);
         controls
     }
 
@@ -135,7 +218,11 @@ impl Controller for PlannerDriver {
     }
 
     fn failure(&self) -> Option<&str> {
-        self.anytime.failure()
+        self.failure.as_deref()
+    }
+
+    fn died(&self) -> bool {
+        self.anytime.failure().is_some()
     }
 
     fn inject_fault(&mut self, message: &str) {

@@ -163,11 +163,17 @@ impl Ride {
         self.built_controller(self.kind)?.handover()
     }
 
-    /// Why the active controller no longer drives as itself (its planning thread died and
-    /// the arcade controller drives in its place), if so. Placing the ride anew builds it
-    /// again.
+    /// What keeps the active controller from driving as itself (its planning thread died,
+    /// or there is no learned model) and who drives instead, if anything. Placing the
+    /// ride anew builds a planner whose thread died again.
     pub fn failure(&self) -> Option<&str> {
         self.built_controller(self.kind)?.failure()
+    }
+
+    /// Whether the active controller's planning thread died (a fault, not a missing
+    /// model).
+    pub fn controller_died(&self) -> bool {
+        self.built_controller(self.kind).is_some_and(|c| c.died())
     }
 
     /// Makes the active controller fail as a dying planning thread would (tests).
@@ -207,8 +213,7 @@ impl Ride {
     pub fn reset_to(&mut self, placement: Placement) {
         self.sim.reset_to(placement);
         // A controller whose planning thread died starts afresh with the new ride.
-        self.built
-            .retain(|(_, controller)| controller.failure().is_none());
+        self.built.retain(|(_, controller)| !controller.died());
         self.forget_plans();
         self.started = false;
         self.steps = 0;

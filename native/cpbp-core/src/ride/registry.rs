@@ -9,7 +9,7 @@ use std::fmt;
 use std::hash::{Hash, Hasher};
 
 use super::controller::{Controller, PlannerSettings};
-use super::drivers::{ArcadeDriver, ManualDriver, PlannerDriver};
+use super::drivers::{ArcadeDriver, LearnedDriver, ManualDriver, PlannerDriver};
 use crate::control::{planner, PlannerSpec};
 use crate::simulation::Simulation;
 
@@ -22,6 +22,8 @@ pub struct ControllerEntry {
     pub label: &'static str,
     /// Whether players pick it (menus, the game's cycle); manual is for tests and tools.
     pub offered: bool,
+    /// Whether it drives with the learned network (and needs its model file).
+    pub uses_network: bool,
     pub drives: Drives,
 }
 
@@ -45,6 +47,7 @@ impl ControllerKind {
         name: "optimizer",
         label: "Optimizer (C-PBP)",
         offered: true,
+        uses_network: false,
         drives: Drives::Plans(&planner::OPTIMIZER),
     });
     /// C-PBP warm-started with the arcade controller's trajectory.
@@ -52,6 +55,7 @@ impl ControllerKind {
         name: "combined",
         label: "Combined (C-PBP + arcade)",
         offered: true,
+        uses_network: false,
         drives: Drives::Plans(&planner::COMBINED),
     });
     /// The PD controller on the steering of the thesis (§4.3.2).
@@ -59,6 +63,7 @@ impl ControllerKind {
         name: "arcade",
         label: "Arcade (PD)",
         offered: true,
+        uses_network: false,
         drives: Drives::Itself(ArcadeDriver::boxed),
     });
     /// MuJoCo MPC's predictive sampling (a baseline planner).
@@ -66,6 +71,7 @@ impl ControllerKind {
         name: "sampling",
         label: "Predictive sampling (baseline)",
         offered: true,
+        uses_network: false,
         drives: Drives::Plans(&planner::SAMPLING),
     });
     /// MPPI (a baseline planner).
@@ -73,13 +79,33 @@ impl ControllerKind {
         name: "mppi",
         label: "MPPI (baseline)",
         offered: true,
+        uses_network: false,
         drives: Drives::Plans(&planner::MPPI),
+    });
+    /// The network distilled from the planner (issue 34): the planner's skill at the
+    /// cost of a few matrix products.
+    pub const LEARNED: Self = Self(&ControllerEntry {
+        name: "learned",
+        label: "Learned (network)",
+        offered: true,
+        uses_network: true,
+        drives: Drives::Itself(LearnedDriver::boxed),
+    });
+    /// C-PBP whose trajectory 1 follows the learned network: the network proposes, a
+    /// few trajectories check and refine.
+    pub const GUIDED: Self = Self(&ControllerEntry {
+        name: "guided",
+        label: "Guided (C-PBP + network)",
+        offered: true,
+        uses_network: true,
+        drives: Drives::Plans(&planner::GUIDED),
     });
     /// Nobody balances: the bar follows the steering rate input (for inspecting physics).
     pub const MANUAL: Self = Self(&ControllerEntry {
         name: "manual",
         label: "Manual (nobody balances)",
         offered: false,
+        uses_network: false,
         drives: Drives::Itself(ManualDriver::boxed),
     });
 
@@ -90,6 +116,8 @@ impl ControllerKind {
         Self::ARCADE,
         Self::SAMPLING,
         Self::MPPI,
+        Self::LEARNED,
+        Self::GUIDED,
         Self::MANUAL,
     ];
 
@@ -116,6 +144,11 @@ impl ControllerKind {
     /// Whether players pick it (menus, the game's cycle); manual is for tests and tools.
     pub fn offered(self) -> bool {
         self.0.offered
+    }
+
+    /// Whether it drives with the learned network (and needs its model file).
+    pub fn uses_network(self) -> bool {
+        self.0.uses_network
     }
 
     /// Whether it plans with trajectories (and so has plans to draw and time).

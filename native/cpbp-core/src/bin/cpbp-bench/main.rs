@@ -4,6 +4,7 @@
 //! builds run alternately.
 
 mod fidelity;
+mod learned;
 mod planning;
 
 use planning::{planning_ms, planning_table};
@@ -62,6 +63,8 @@ fn main() {
     let (snapshot, restore) = snapshot_costs(&flat);
     row("snapshot of the bike world", format!("{snapshot:.2} µs"));
     row("restore of the bike world", format!("{restore:.2} µs"));
+    let game_flat = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
+    learned::inference_cost(&game_flat, row);
     for model in PhysicsModel::ALL {
         planning_table(model, Some([bike_step, spheres]));
     }

@@ -150,6 +150,7 @@ pub fn planning_ms(
     let config = OptimizerConfig {
         particles: n,
         threads,
+        policy: super::learned::project_policy(),
         ..OptimizerConfig::default()
     }
     .rolling_out_in(model);

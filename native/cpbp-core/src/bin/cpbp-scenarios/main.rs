@@ -11,14 +11,17 @@
 //! `reversals` (25 km/h, ±15° every 2 s for 12 s; the settled error: RMS over the second
 //! second of each gate after the first, once the lean has swung over), `push` (15 km/h, a
 //! sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h); the
-//! stops and hill starts of `stops.rs`. `arcade` rides too, once per seed, as N = 0.
+//! stops and hill starts of `stops.rs`. `arcade` and `learned` ride too, once per seed, as
+//! N = 0; `learned` and `guided` with the network in `--model` (the project's by default).
 
 mod stops;
 
 use std::collections::HashSet;
-use std::sync::Arc;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, OnceLock};
 
 use cpbp_core::bike::Placement;
+use cpbp_core::control::learned::{LoadedPolicy, MODEL_PATH};
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -41,7 +44,12 @@ struct Args {
     physics: PhysicsModel,
     /// Rows already saved ("scenario,controller,N,seed,physics"): not ridden again.
     skip: HashSet<String>,
+    /// The learned network's model file (learned, guided).
+    model: PathBuf,
 }
+
+/// The network the learned and guided controllers ride with, loaded once.
+static POLICY: OnceLock<LoadedPolicy> = OnceLock::new();
 
 /// Who rides a scenario: the controller, its trajectory count N (0 for arcade), the seed
 /// (heading, planner and the scenario's draw) and the physics.
@@ -61,8 +69,9 @@ pub(crate) struct Outcome {
 }
 
 const USAGE: &str = "cpbp-scenarios [--controllers K,K…] [--counts N,N…] [--seeds FIRST-LAST] \
-[--scenarios S,S…] [--physics classic|exact] [--skip FILE]";
-const FLAGS: [&str; 6] = [
+[--scenarios S,S…] [--physics classic|exact] [--skip FILE] [--model FILE]";
+const FLAGS: [&str; 7] = [
+    "--model",
     "--controllers",
     "--counts",
     "--seeds",
@@ -84,6 +93,14 @@ fn main() {
             std::process::exit(2);
         }
     };
+    if args.controllers.iter().any(|k| k.uses_network()) {
+        let policy = LoadedPolicy::load(&args.model);
+        if let Some(why) = policy.problem() {
+            eprintln!("cpbp-scenarios: {why}");
+            std::process::exit(2);
+        }
+        POLICY.get_or_init(|| policy);
+    }
     println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms");
     for &scenario in &args.scenarios {
         for &kind in &args.controllers {
@@ -144,8 +161,8 @@ fn parse(arguments: Vec<String>) -> Result<Args, String> {
         .split(',')
         .map(|name| {
             ControllerKind::from_name(name)
-                .filter(|k| k.plans() || *k == ControllerKind::ARCADE)
-                .ok_or(format!("not a planning controller or arcade: {name}"))
+                .filter(|k| k.offered())
+                .ok_or(format!("not a controller players pick: {name}"))
         })
         .collect::<Result<_, _>>()?;
     let counts = value("--counts")?
@@ -198,6 +215,14 @@ fn parse(arguments: Vec<String>) -> Result<Args, String> {
         scenarios,
         physics,
         skip,
+        model: value("--model")?.map_or_else(
+            || {
+                Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("../..")
+                    .join(MODEL_PATH)
+            },
+            PathBuf::from,
+        ),
     })
 }
 
@@ -333,6 +358,7 @@ pub(crate) fn new_ride(rider: Rider, kmh: f64, slope: f64) -> Ride {
     let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);
     ride.planner.optimizer.particles = n;
     ride.planner.optimizer.seed = seed;
+    ride.planner.optimizer.policy = POLICY.get().cloned().unwrap_or_default();
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(kmh));
     ride

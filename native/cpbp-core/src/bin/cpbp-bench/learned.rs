@@ -1,0 +1,67 @@
+//! The learned controller's cost (issue 34): one control step's features and network
+//! against a plan's, with the project's model as `make train` left it.
+
+use std::path::Path;
+use std::sync::OnceLock;
+
+use cpbp_core::bike::DriveInput;
+use cpbp_core::control::learned::{LoadedPolicy, MODEL_PATH};
+use cpbp_core::control::Goal;
+use cpbp_core::ride::ControllerKind;
+use cpbp_core::simulation::Simulation;
+
+use super::planning::planning_ms;
+use super::{median, time_per_call};
+
+/// The project's model, loaded once (the guided planner's rows use it too).
+pub fn project_policy() -> LoadedPolicy {
+    static POLICY: OnceLock<LoadedPolicy> = OnceLock::new();
+    POLICY
+        .get_or_init(|| {
+            LoadedPolicy::load(
+                &Path::new(env!("CARGO_MANIFEST_DIR"))
+                    .join("../..")
+                    .join(MODEL_PATH),
+            )
+        })
+        .clone()
+}
+
+/// Prints the network's cost per control step and what the planners cost against it.
+pub fn inference_cost(sim: &Simulation, row: impl Fn(&str, String)) {
+    let policy = project_policy();
+    let Some(network) = policy.network() else {
+        row(
+            "learned controller: one control step",
+            format!("none: {}", policy.problem().unwrap_or_default()),
+        );
+        return;
+    };
+    let goal = Goal::riding(
+        0.0,
+        DriveInput {
+            throttle: 0.6,
+            brake: 0.0,
+            max_speed: 15.0 / 3.6,
+        },
+    );
+    let step_us = median(|| {
+        time_per_call(20_000, || {
+            std::hint::black_box(network.controls(sim.bike(), sim.world(), &goal, sim.up())).ok();
+        })
+    });
+    row(
+        "learned controller: features + network, one control step",
+        format!("{step_us:.2} µs"),
+    );
+    for (kind, n) in [(ControllerKind::COMBINED, 15), (ControllerKind::GUIDED, 5)] {
+        let plan_ms = planning_ms(sim, kind, n, 2).0;
+        row(
+            &format!(
+                "  {} N = {n} (2 threads) ÷ learned, per control step",
+                kind.name()
+            ),
+            format!("{:.0}×", plan_ms * 1000.0 / step_us),
+        );
+    }
+}

@@ -1,0 +1,85 @@
+//! The policy network as the controllers hold it: loaded once, shared by the ride and
+//! every rollout world, or the reason there is none (the `learned` and `guided`
+//! controllers then say so and drive as arcade and combined do).
+
+use std::fmt;
+use std::path::Path;
+use std::sync::Arc;
+
+use super::{ModelError, PolicyNetwork};
+
+/// Where the model lives in the project (`res://` in the game; from the repository's
+/// root for the tools). `make train` writes it there.
+pub const MODEL_PATH: &str = "models/policy.safetensors";
+
+/// A loaded network, or why none could be.
+#[derive(Clone)]
+pub struct LoadedPolicy(Result<Arc<PolicyNetwork>, Arc<str>>);
+
+impl LoadedPolicy {
+    /// A network ready to drive.
+    pub fn ready(network: PolicyNetwork) -> Self {
+        Self(Ok(Arc::new(network)))
+    }
+
+    /// No network, for `why`.
+    pub fn missing(why: impl Into<String>) -> Self {
+        Self(Err(why.into().into()))
+    }
+
+    /// The model file's bytes (`source` names it in the reason when they are refused).
+    pub fn parse(bytes: &[u8], source: &str) -> Self {
+        match PolicyNetwork::parse(bytes) {
+            Ok(network) => Self::ready(network),
+            Err(e) => Self::refused(source, &e),
+        }
+    }
+
+    /// The model file at `path`.
+    pub fn load(path: &Path) -> Self {
+        match PolicyNetwork::load(path) {
+            Ok(network) => Self::ready(network),
+            Err(e) => Self::refused(&path.display().to_string(), &e),
+        }
+    }
+
+    fn refused(source: &str, error: &ModelError) -> Self {
+        Self::missing(format!("the learned model {source} is unusable: {error}"))
+    }
+
+    /// The network, if there is one.
+    pub fn network(&self) -> Option<&Arc<PolicyNetwork>> {
+        self.0.as_ref().ok()
+    }
+
+    /// Why there is no network, if there is none.
+    pub fn problem(&self) -> Option<&str> {
+        self.0.as_ref().err().map(|why| &**why)
+    }
+}
+
+impl Default for LoadedPolicy {
+    fn default() -> Self {
+        Self::missing("no learned model was loaded")
+    }
+}
+
+/// The same network (not an equal copy), or the same reason.
+impl PartialEq for LoadedPolicy {
+    fn eq(&self, other: &Self) -> bool {
+        match (&self.0, &other.0) {
+            (Ok(a), Ok(b)) => Arc::ptr_eq(a, b),
+            (Err(a), Err(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
+impl fmt::Debug for LoadedPolicy {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.0 {
+            Ok(network) => write!(f, "LoadedPolicy({})", network.parts().training),
+            Err(why) => write!(f, "LoadedPolicy(none: {why})"),
+        }
+    }
+}

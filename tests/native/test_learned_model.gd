@@ -1,0 +1,66 @@
+extends TestCase
+## The learned and guided controllers in the node: the project's model drives, and a
+## missing or corrupt model file is reported (once, with the reason) while the arcade
+## controller steers and nothing crashes.
+
+const CORRUPT := "user://corrupt_policy.safetensors"
+
+var _level: Node3D
+var _bike: BikeSimulation
+
+
+func before_each() -> void:
+	_level = FlatLevel.create()
+	add_child(_level)
+	_bike = BikeSimulation.new()
+	_bike.transform = Transform3D(Basis(), Vector3(0, 0.02, 0))
+	_level.add_child(_bike)
+	await wait_physics_frames(1)
+	_bike.set_physics_process(false)
+
+
+func after_each() -> void:
+	_level.queue_free()
+
+
+func _ride_reporting(model: String, controller: String, steps: int) -> Array[String]:
+	var reasons: Array[String] = []
+	_bike.controller_failed.connect(func(reason: String) -> void: reasons.append(reason))
+	_bike.policy_model = model
+	_bike.controller = controller
+	_bike.trajectories = 4
+	_bike.wait_for_every_plan = true
+	_bike.set_drive(1.0, 0.0)
+	_bike.advance(steps)
+	return reasons
+
+
+func test_the_project_ships_a_model_and_the_learned_controller_rides_with_it() -> void:
+	assert_true(FileAccess.file_exists(_bike.policy_model), "the model `make train` wrote")
+	var reasons := _ride_reporting(_bike.policy_model, "learned", 90)
+	assert_eq(reasons, [] as Array[String])
+	assert_eq(_bike.get_controller_failure(), "", "the network drives")
+	assert_false(_bike.is_crashed())
+	assert_gt(_bike.get_speed(), 2.0, "and rides off")
+
+
+func test_without_a_model_learned_says_why_and_arcade_steers() -> void:
+	var reasons := _ride_reporting("res://no/such/policy.safetensors", "learned", 90)
+	assert_eq(reasons.size(), 1, "reported once: %s" % [reasons])
+	assert_has(_bike.get_controller_failure(), "is missing")
+	assert_has(_bike.get_controller_failure(), "arcade steers")
+	assert_false(_bike.is_crashed(), "the arcade controller kept it up")
+	assert_gt(_bike.get_speed(), 2.0)
+
+
+func test_a_corrupt_model_is_refused_and_guided_plans_with_arcade() -> void:
+	var file := FileAccess.open(CORRUPT, FileAccess.WRITE)
+	file.store_string("not a model at all")
+	file.close()
+	var reasons := _ride_reporting(CORRUPT, "guided", 30)
+	DirAccess.remove_absolute(CORRUPT)
+	assert_eq(reasons.size(), 1, "reported once: %s" % [reasons])
+	assert_has(_bike.get_controller_failure(), "unusable")
+	assert_has(_bike.get_controller_failure(), "the arcade controller guides")
+	assert_gt(_bike.get_trajectory_paths().size(), 0, "the planner still plans")
+	assert_false(_bike.is_crashed())

@@ -1,0 +1,188 @@
+"""The learned controller's report (docs/learned/training.md and losses.png): how the
+network was trained (data, rounds, losses, wall time) and how it and the guided planner
+ride beside arcade and combined on the same seeds (the test-level experiment's rows and
+the scenario tool's, when they have been ridden). `make train` writes it."""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import struct
+import sys
+from collections import defaultdict
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from cpbp_experiment.stats import mcnemar_exact, wilson_interval  # noqa: E402
+from planner_scenarios.report import METRICS  # noqa: E402
+from planner_scenarios.stats import paired_difference, t_interval  # noqa: E402
+
+# (controller, N) in the exact physics, as the experiment's rows name them.
+RIDERS = (("arcade", 0), ("learned", 0), ("guided", 5), ("combined", 5), ("combined", 15))
+# Pairs compared on the same attempts: the issue's targets.
+PAIRS = ((("learned", 0), ("arcade", 0)), (("guided", 5), ("combined", 15)),
+         (("guided", 5), ("combined", 5)))
+SCENARIOS = ("turn", "slalom", "push", "walk", "stop40", "slope10")
+
+
+def model_metadata(path: Path) -> dict:
+    data = path.read_bytes()
+    (length,) = struct.unpack("<Q", data[:8])
+    return json.loads(data[8:8 + length]).get("__metadata__", {})
+
+
+def losses(data: Path, rounds: int) -> dict[int, list[tuple[int, float, float]]]:
+    curves = {}
+    for r in range(rounds + 1):
+        path = data / f"round-{r}.losses.csv"
+        if path.exists():
+            with path.open() as f:
+                curves[r] = [(int(row["epoch"]), float(row["train"]), float(row["held_out"]))
+                             for row in csv.DictReader(f)]
+    return curves
+
+
+def loss_chart(curves: dict, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 4), dpi=110)
+    for r, curve in curves.items():
+        epochs = [c[0] for c in curve]
+        line, = ax.plot(epochs, [c[1] for c in curve], label=f"round {r}: training")
+        ax.plot(epochs, [c[2] for c in curve], "--", color=line.get_color(),
+                label=f"round {r}: held-out episodes")
+    ax.set_yscale("log")
+    ax.set_xlabel("epoch")
+    ax.set_ylabel("mean squared error (normalised controls)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def experiment_tables(results: Path) -> list[str]:
+    if not results.exists():
+        return ["The test-level experiment has not been ridden yet (`make train` does)."]
+    goal = {}
+    with results.open() as f:
+        for row in csv.DictReader(f):
+            if row.get("physics") != "exact":
+                continue
+            key = (row["controller"], int(row["trajectories"]))
+            goal[(key, int(row["speed_kmh"]), int(row["attempt"]))] = row["outcome"] == "goal"
+    speeds = sorted({s for (_, s, _) in goal})
+    lines = ["| speed | " + " | ".join(f"{c}{f'-{n}' if n else ''}" for c, n in RIDERS) + " |",
+             "|---|" + "---|" * len(RIDERS)]
+    for speed in speeds:
+        cells = []
+        for rider in RIDERS:
+            outcomes = [v for (k, s, _), v in goal.items() if k == rider and s == speed]
+            if not outcomes:
+                cells.append("–")
+                continue
+            low, high = wilson_interval(sum(outcomes), len(outcomes))
+            cells.append(f"{sum(outcomes)}/{len(outcomes)} ({low:.0%}–{high:.0%})")
+        lines.append(f"| {speed} km/h | " + " | ".join(cells) + " |")
+    lines += ["", "| speed | A | B | pairs | only A | only B | McNemar p |", "|---|---|---|---|---|---|---|"]
+    for a, b in PAIRS:
+        for speed in speeds:
+            attempts = {at for (k, s, at) in goal if k == a and s == speed}
+            attempts &= {at for (k, s, at) in goal if k == b and s == speed}
+            if not attempts:
+                continue
+            only_a = sum(goal[(a, speed, t)] and not goal[(b, speed, t)] for t in attempts)
+            only_b = sum(goal[(b, speed, t)] and not goal[(a, speed, t)] for t in attempts)
+            name = lambda r: f"{r[0]}{f'-{r[1]}' if r[1] else ''}"  # noqa: E731
+            lines.append(f"| {speed} km/h | {name(a)} | {name(b)} | {len(attempts)} | {only_a} | "
+                         f"{only_b} | {mcnemar_exact(only_a, only_b):.3f} |")
+    return lines
+
+
+def scenario_tables(path: Path) -> list[str]:
+    if not path.exists():
+        return ["The scenarios have not been ridden yet (`make train` does)."]
+    rows: dict[tuple, dict[int, dict]] = defaultdict(dict)
+    with path.open() as f:
+        for row in csv.DictReader(f):
+            if row["physics"] == "exact":
+                key = (row["scenario"], row["controller"], int(row["trajectories"]))
+                rows[key][int(row["seed"])] = {"fell": row["fell"] == "True",
+                                               "metric": float(row["metric"])}
+    lines = ["| scenario | rider | rides | falls | mean (95 % CI) | paired difference |",
+             "|---|---|---|---|---|---|"]
+    for scenario in SCENARIOS:
+        for a, b in PAIRS[:2]:
+            for rider, reference in ((a, None), (b, a)):
+                mine = rows.get((scenario, *rider), {})
+                if not mine:
+                    continue
+                up = {s: r["metric"] for s, r in mine.items() if not r["fell"]}
+                difference = "–"
+                if reference is not None:
+                    theirs = rows.get((scenario, *reference), {})
+                    ref_up = {s: r["metric"] for s, r in theirs.items() if not r["fell"]}
+                    difference = (f"{reference[0]} − this: "
+                                  f"{paired_difference(ref_up, up).text(2)}")
+                name = f"{rider[0]}{f'-{rider[1]}' if rider[1] else ''}"
+                lines.append(f"| {scenario} | {name} | {len(mine)} | "
+                             f"{sum(r['fell'] for r in mine.values())} | "
+                             f"{t_interval(list(up.values())).text(2)} | {difference} |")
+    lines += ["", "Metrics: " + "; ".join(f"{s}: {METRICS[s]}" for s in SCENARIOS if s in METRICS)]
+    return lines
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--data", type=Path, required=True)
+    parser.add_argument("--rounds", type=int, required=True)
+    parser.add_argument("--model", type=Path, required=True)
+    parser.add_argument("--out", type=Path, required=True)
+    parser.add_argument("--minutes", type=int, required=True)
+    args = parser.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    curves = losses(args.data, args.rounds)
+    if curves:
+        loss_chart(curves, args.out / "losses.png")
+    meta = model_metadata(args.model)
+    last = {r: c[-1] for r, c in curves.items() if c}
+    lines = [
+        "# The learned controller: training and evaluation",
+        "",
+        f"Written by `make train` ({args.minutes} min on this machine for the run that made "
+        "the committed model; see docs/learned-controller.md for what the network sees).",
+        "",
+        f"- Model: `{args.model}` ({args.model.stat().st_size / 1024:.0f} KiB), "
+        f"format {meta.get('format')} v{meta.get('format_version')}, "
+        f"feature list v{meta.get('features_version')}, {meta.get('layers')} layers, "
+        f"{meta.get('activation')}.",
+        f"- Training run: {meta.get('training')}.",
+        "",
+        "## Losses",
+        "",
+        "![losses](losses.png)",
+        "",
+        "| round | epochs | training loss | held-out loss |",
+        "|---|---|---|---|",
+        *[f"| {r} | {c[0] + 1} | {c[1]:.4f} | {c[2]:.4f} |" for r, c in last.items()],
+        "",
+        "## The test level (exact physics, the experiment's attempts; 95 % Wilson intervals)",
+        "",
+        *experiment_tables(Path("docs/experiment/results.csv")),
+        "",
+        "## Scenarios (exact physics, seeds 0–9)",
+        "",
+        *scenario_tables(Path("docs/scenarios/scenarios.csv")),
+        "",
+    ]
+    (args.out / "training.md").write_text("\n".join(lines))
+    print(f"learned report: {args.out / 'training.md'}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
