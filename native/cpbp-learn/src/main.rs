@@ -26,7 +26,8 @@ use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
 [--seconds S] [--noise X] [--jobs J] [--learner MODEL]\n       \
-cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S]\n       \
+cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S] \
+[--hidden W,W…] [--weight-decay D]\n       \
 cpbp-learn summary --out DIR";
 
 struct Generate {
@@ -226,6 +227,20 @@ fn train_command(arguments: &[String]) -> Result<(), String> {
             "--losses" => losses_path = Some(PathBuf::from(value)),
             "--epochs" => settings.epochs = count()?,
             "--seed" => settings.seed = count()? as u64,
+            "--hidden" => {
+                settings.hidden = value
+                    .split(',')
+                    .map(|w| w.parse::<usize>().ok().filter(|&w| w > 0))
+                    .collect::<Option<_>>()
+                    .ok_or_else(|| format!("--hidden is widths like 128,128, not '{value}'"))?;
+            }
+            "--weight-decay" => {
+                settings.weight_decay = value
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|w| w.is_finite() && *w >= 0.0)
+                    .ok_or_else(|| format!("--weight-decay must be a number ≥ 0, not '{value}'"))?;
+            }
             other => return Err(format!("unknown option '{other}'")),
         }
     }
