@@ -9,6 +9,7 @@
 #  5. Unless EVALUATE=0: learned and guided ride the test-level experiment and the
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
 #     are written again (docs/experiment, docs/scenarios).
+# EPOCHS and SEED override the trainer's defaults (cpbp-learn train --help).
 # Every step resumes: episodes already saved are not ridden again, a finished round's
 # model is kept, and the experiment and scenario runs resume. Data and checkpoints live
 # in the cache (LEARN_DATA), never in git; `make clean` leaves them, `make clean-learn`
@@ -16,11 +17,9 @@
 source "$(dirname "$0")/common.sh"
 cd "$PROJECT_ROOT"
 
-EPISODES="${EPISODES:-200}"
+EPISODES="${EPISODES:-150}"
 ROUNDS="${ROUNDS:-1}"
-DAGGER_EPISODES="${DAGGER_EPISODES:-60}"
-EPOCHS="${EPOCHS:-60}"
-SEED="${SEED:-1}"
+DAGGER_EPISODES="${DAGGER_EPISODES:-40}"
 EVALUATE="${EVALUATE:-1}"
 LEARN_DATA="${LEARN_DATA:-$CACHE_ROOT/learn}"
 MODEL=models/policy.safetensors
@@ -36,7 +35,7 @@ train_round() {
   local model="$LEARN_DATA/round-$1.safetensors"
   [ -f "$model" ] && { echo "round $1's network is already trained: $model"; return; }
   "$learn" train --data "$2" --model "$model" --losses "$LEARN_DATA/round-$1.losses.csv" \
-    --epochs "$EPOCHS" --seed "$SEED"
+    ${EPOCHS:+--epochs "$EPOCHS"} ${SEED:+--seed "$SEED"}
 }
 
 "$learn" generate --out "$LEARN_DATA/expert" --episodes "1-$EPISODES"

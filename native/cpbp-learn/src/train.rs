@@ -26,7 +26,7 @@ impl Default for TrainSettings {
     fn default() -> Self {
         Self {
             hidden: vec![128, 128],
-            epochs: 60,
+            epochs: 40,
             batch: 256,
             learning_rate: 1e-3,
             weight_decay: 1e-4,
@@ -89,6 +89,9 @@ fn normalised(values: &[f32], mean: &[f32], spread: &[f32]) -> Vec<f32> {
         .collect()
 }
 
+/// Each layer's weights and biases as plain numbers (the model file's layout).
+type Weights = Vec<(Vec<f32>, Vec<f32>)>;
+
 /// The network's weights as candle variables.
 pub(crate) struct Layers {
     vars: Vec<(Var, Var)>,
@@ -145,6 +148,20 @@ impl Layers {
         Ok(x)
     }
 
+    /// Each layer's weights (row-major, rows are outputs) and biases, as the model file
+    /// stores them.
+    fn weights(&self) -> candle_core::Result<Weights> {
+        self.vars
+            .iter()
+            .map(|(weight, bias)| {
+                Ok((
+                    weight.as_tensor().flatten_all()?.to_vec1::<f32>()?,
+                    bias.as_tensor().to_vec1::<f32>()?,
+                ))
+            })
+            .collect()
+    }
+
     fn all(&self) -> Vec<Var> {
         self.vars
             .iter()
@@ -161,7 +178,8 @@ fn loss(layers: &Layers, x: &[f32], y: &[f32], device: &Device) -> candle_core::
     (layers.forward(&x)? - y)?.sqr()?.mean_all()
 }
 
-/// Trains on `train`, reporting each epoch's losses to `report`; returns the network.
+/// Trains on `train`, reporting each epoch's losses to `report`; returns the network of
+/// the epoch that did best on `validation` (the last epoch's when there is none).
 pub fn train(
     train: &Dataset,
     validation: &Dataset,
@@ -194,6 +212,7 @@ pub fn train(
     let mut optimizer = AdamW::new(layers.all(), params).map_err(fail)?;
     let mut order: Vec<usize> = (0..train.rows()).collect();
     let (mut bx, mut by) = (Vec::new(), Vec::new());
+    let mut best: Option<(usize, f64, Weights)> = None;
     for epoch in 0..settings.epochs {
         order.shuffle(&mut rng);
         let (mut total, mut batches) = (0.0, 0);
@@ -222,23 +241,26 @@ pub fn train(
                 validation,
             },
         );
+        // Early stopping: the weights of the epoch that did best on the held-out
+        // episodes are the ones kept.
+        if validation.is_finite() && best.as_ref().is_none_or(|(_, loss, _)| validation < *loss) {
+            best = Some((epoch, validation, layers.weights().map_err(fail)?));
+        }
     }
-    let mut parts_layers = Vec::new();
-    for (weight, bias) in &layers.vars {
-        let w = weight
-            .as_tensor()
-            .flatten_all()
-            .and_then(|t| t.to_vec1::<f32>());
-        let b = bias.as_tensor().to_vec1::<f32>();
-        parts_layers.push((w.map_err(fail)?, b.map_err(fail)?));
-    }
+    let (best_epoch, parts_layers) = match best {
+        Some((epoch, _, weights)) => (epoch, weights),
+        None => (
+            settings.epochs.saturating_sub(1),
+            layers.weights().map_err(fail)?,
+        ),
+    };
     PolicyNetwork::new(NetworkParts {
         input_mean: in_mean,
         input_std: in_std,
         layers: parts_layers,
         output_mean: out_mean,
         output_std: out_std,
-        training: description.to_string(),
+        training: format!("{description}, weights of epoch {best_epoch}"),
     })
     .map_err(|e| e.to_string())
 }

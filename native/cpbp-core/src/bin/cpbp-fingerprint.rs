@@ -2,11 +2,13 @@
 //! change a single plan: `cpbp-fingerprint` rides 3 s with every planning controller in
 //! both physics models, waiting for every plan, and prints one hash per ride over every
 //! plan it made (chosen sequence, costs, resampling counts, drawn paths) and its final
-//! state. Run it before and after a change; the lines must be identical. Hashes are of
+//! state (guided with the project's model, `models/policy.safetensors`, as it is). Run it
+//! before and after a change; the lines must be identical. Hashes are of
 //! the exact bits, so they hold on one platform (compare like with like: the experiment's
 //! platform fingerprint says which).
 
 use cpbp_core::bike::Placement;
+use cpbp_core::control::learned::project_policy;
 use cpbp_core::control::{Plan, PlanWait};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -51,6 +53,7 @@ fn fingerprint(physics: PhysicsModel, kind: ControllerKind, particles: usize) ->
     let mut ride = Ride::new(sim, kind);
     ride.planner.optimizer.particles = particles;
     ride.planner.optimizer.threads = 2;
+    ride.planner.optimizer.policy = project_policy();
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(10.0));
     let mut hash = Fnv::default();

@@ -1,31 +1,14 @@
 //! The learned controller's cost (issue 34): one control step's features and network
 //! against a plan's, with the project's model as `make train` left it.
 
-use std::path::Path;
-use std::sync::OnceLock;
-
 use cpbp_core::bike::DriveInput;
-use cpbp_core::control::learned::{LoadedPolicy, MODEL_PATH};
+use cpbp_core::control::learned::project_policy;
 use cpbp_core::control::Goal;
 use cpbp_core::ride::ControllerKind;
 use cpbp_core::simulation::Simulation;
 
 use super::planning::planning_ms;
 use super::{median, time_per_call};
-
-/// The project's model, loaded once (the guided planner's rows use it too).
-pub fn project_policy() -> LoadedPolicy {
-    static POLICY: OnceLock<LoadedPolicy> = OnceLock::new();
-    POLICY
-        .get_or_init(|| {
-            LoadedPolicy::load(
-                &Path::new(env!("CARGO_MANIFEST_DIR"))
-                    .join("../..")
-                    .join(MODEL_PATH),
-            )
-        })
-        .clone()
-}
 
 /// Prints the network's cost per control step and what the planners cost against it.
 pub fn inference_cost(sim: &Simulation, row: impl Fn(&str, String)) {

@@ -150,7 +150,7 @@ pub fn planning_ms(
     let config = OptimizerConfig {
         particles: n,
         threads,
-        policy: super::learned::project_policy(),
+        policy: cpbp_core::control::learned::project_policy(),
         ..OptimizerConfig::default()
     }
     .rolling_out_in(model);

@@ -17,11 +17,11 @@
 mod stops;
 
 use std::collections::HashSet;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::{Arc, OnceLock};
 
 use cpbp_core::bike::Placement;
-use cpbp_core::control::learned::{LoadedPolicy, MODEL_PATH};
+use cpbp_core::control::learned::{project_model, LoadedPolicy};
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -215,14 +215,7 @@ fn parse(arguments: Vec<String>) -> Result<Args, String> {
         scenarios,
         physics,
         skip,
-        model: value("--model")?.map_or_else(
-            || {
-                Path::new(env!("CARGO_MANIFEST_DIR"))
-                    .join("../..")
-                    .join(MODEL_PATH)
-            },
-            PathBuf::from,
-        ),
+        model: value("--model")?.map_or_else(project_model, PathBuf::from),
     })
 }
 

@@ -14,7 +14,7 @@ pub use network::{
     f32_bytes, f32_values, output_entries, output_names, ModelError, NetworkParts,
     NonFiniteFeature, PolicyNetwork, MODEL_FORMAT, MODEL_FORMAT_VERSION, OUTPUT_COUNT,
 };
-pub use shared::{LoadedPolicy, MODEL_PATH};
+pub use shared::{project_model, project_policy, LoadedPolicy, MODEL_PATH};
 
 use glam::DVec3;
 

@@ -3,14 +3,30 @@
 //! controllers then say so and drive as arcade and combined do).
 
 use std::fmt;
-use std::path::Path;
-use std::sync::Arc;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, OnceLock};
 
 use super::{ModelError, PolicyNetwork};
 
 /// Where the model lives in the project (`res://` in the game; from the repository's
 /// root for the tools). `make train` writes it there.
 pub const MODEL_PATH: &str = "models/policy.safetensors";
+
+/// The model file in this source tree: what the headless tools (the scenario tool, the
+/// benchmarks, the fingerprint) ride with; the game reads `res://` + [`MODEL_PATH`].
+pub fn project_model() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(MODEL_PATH)
+}
+
+/// The network in [`project_model`], loaded on the first call and shared after.
+pub fn project_policy() -> LoadedPolicy {
+    static POLICY: OnceLock<LoadedPolicy> = OnceLock::new();
+    POLICY
+        .get_or_init(|| LoadedPolicy::load(&project_model()))
+        .clone()
+}
 
 /// A loaded network, or why none could be.
 #[derive(Clone)]
