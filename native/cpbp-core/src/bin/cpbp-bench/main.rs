@@ -1,7 +1,7 @@
 //! `make bench`: prints the performance figures recorded in docs/benchmarks.md.
 //! Timings are medians of several runs so one noisy run does not move them.
 //! `cpbp-bench planning` prints only the game physics' planning table, for comparing two
-//! builds run alternately.
+//! builds run alternately; `cpbp-bench learned` only the learned controller's cost.
 
 mod fidelity;
 mod learned;
@@ -33,12 +33,16 @@ fn main() {
     );
     println!("ODE: {}", info.ode.raw);
     println!();
-    if std::env::args().nth(1).as_deref() == Some("planning") {
-        planning_table(PhysicsModel::default(), None);
-        return;
+    let row = |name: &str, value: String| println!("{name:<58} {value:>14}");
+    match std::env::args().nth(1).as_deref() {
+        Some("planning") => return planning_table(PhysicsModel::default(), None),
+        Some("learned") => {
+            let sim = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
+            return learned::inference_cost(&sim, row);
+        }
+        _ => {}
     }
     println!("{:<58} {:>14}", "figure", "value");
-    let row = |name: &str, value: String| println!("{name:<58} {value:>14}");
 
     let mut spheres = 0.0;
     for bodies in [1, 15] {
