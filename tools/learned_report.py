@@ -111,7 +111,7 @@ def scenario_tables(path: Path) -> list[str]:
         for row in csv.DictReader(f):
             if row["physics"] == "exact":
                 key = (row["scenario"], row["controller"], int(row["trajectories"]))
-                rows[key][int(row["seed"])] = {"fell": row["fell"] == "True",
+                rows[key][int(row["seed"])] = {"fell": row["fell"].lower() == "true",
                                                "metric": float(row["metric"])}
     lines = ["| scenario | rider | rides | falls | mean (95 % CI) | paired difference |",
              "|---|---|---|---|---|---|"]
@@ -153,8 +153,9 @@ def main() -> int:
     lines = [
         "# The learned controller: training and evaluation",
         "",
-        f"Written by `make train` ({args.minutes} min on this machine for the run that made "
-        "the committed model; see docs/learned-controller.md for what the network sees).",
+        f"Written by `make train`, whose last invocation took {args.minutes} min on this "
+        "machine (a resumed run counts only what it did itself; docs/learned-controller.md "
+        "itemises the run that made the committed model and says what the network sees).",
         "",
         f"- Model: `{args.model}` ({args.model.stat().st_size / 1024:.0f} KiB), "
         f"format {meta.get('format')} v{meta.get('format_version')}, "

@@ -68,7 +68,9 @@ if [ "$EVALUATE" != 0 ]; then
   scenarios=turn,slalom,push,walk,stop40,slope10
   tools/planner-scenarios run --out docs/scenarios --controllers learned,arcade --counts 5 \
     --scenarios "$scenarios"
-  tools/planner-scenarios run --out docs/scenarios --controllers guided,combined --counts 5,15 \
+  tools/planner-scenarios run --out docs/scenarios --controllers guided --counts 5 \
+    --scenarios "$scenarios"
+  tools/planner-scenarios run --out docs/scenarios --controllers combined --counts 5,15 \
     --scenarios "$scenarios"
   tools/planner-scenarios report --out docs/scenarios
   report
