@@ -45,9 +45,15 @@ impl LearnedDriver {
         Box::<Self>::default()
     }
 
-    fn note(&mut self, problem: Option<String>) {
-        if self.problem != problem {
-            self.problem = problem;
+    /// Records why arcade drives, formatting the sentence only when the reason changes
+    /// (this runs every control step).
+    fn note(&mut self, reason: &str, sentence: impl FnOnce() -> String) {
+        if !self
+            .problem
+            .as_deref()
+            .is_some_and(|p| p.starts_with(reason))
+        {
+            self.problem = Some(sentence());
         }
     }
 }
@@ -58,22 +64,23 @@ impl Controller for LearnedDriver {
         let policy = &state.planner.optimizer.policy;
         let Some(network) = policy.network() else {
             let why = policy.problem().unwrap_or("no learned model");
-            if self.problem.is_none() {
-                self.note(Some(format!("{why}; arcade steers")));
-            }
+            self.note(why, || format!("{why}; arcade steers"));
             return arcade;
         };
         let sim = state.sim;
         match network.controls(sim.bike(), sim.world(), &state.goal, sim.up()) {
             Ok(controls) => {
-                self.note(None);
+                self.problem = None;
                 Controls::sanitized(controls.values()).0
             }
             Err(NonFiniteFeature(i)) => {
-                self.note(Some(format!(
-                    "the network cannot read the state ({} is not a number); arcade steers",
-                    FEATURE_NAMES[i]
-                )));
+                let reason = "the network cannot read the state";
+                self.note(reason, || {
+                    format!(
+                        "{reason} ({} is not a number); arcade steers",
+                        FEATURE_NAMES[i]
+                    )
+                });
                 arcade
             }
         }
@@ -122,8 +129,10 @@ pub struct PlannerDriver {
     trajectories: usize,
     /// Whether trajectory 1 follows the learned network (guided mode).
     follows_network: bool,
-    /// What keeps it from planning as itself, as the HUD says it.
+    /// What keeps it from planning as itself, as the HUD says it, and whether that is a
+    /// dead thread and a missing model.
     failure: Option<String>,
+    failure_state: (bool, bool),
 }
 
 impl PlannerDriver {
@@ -135,6 +144,7 @@ impl PlannerDriver {
             trajectories: planner.optimizer.particles,
             follows_network: spec.follows == Follows::Network,
             failure: None,
+            failure_state: (false, false),
         }
     }
 
@@ -153,18 +163,21 @@ impl PlannerDriver {
         self.auto.as_ref().map(|(_, auto)| auto.trajectories())
     }
 
-    /// Keeps the HUD's sentence on what stops the planner being itself up to date.
+    /// Keeps the HUD's sentence on what stops the planner being itself up to date; the
+    /// sentence is formatted only when that changes (this runs every control step).
     fn note_failure(&mut self, policy: &LoadedPolicy) {
-        let failure = match (self.anytime.failure(), policy.problem()) {
-            (Some(died), _) => Some(format!("the planner stopped ({died}); arcade steers")),
-            (None, Some(why)) if self.follows_network => {
-                Some(format!("{why}; the arcade controller guides the planner"))
-            }
-            _ => None,
-        };
-        if self.failure != failure {
-            self.failure = failure;
+        let died = self.anytime.failure();
+        let missing = policy.problem().filter(|_| self.follows_network);
+        let state = (died.is_some(), missing.is_some());
+        if state == self.failure_state {
+            return;
         }
+        self.failure_state = state;
+        self.failure = match (died, missing) {
+            (Some(died), _) => Some(format!("the planner stopped ({died}); arcade steers")),
+            (None, Some(why)) => Some(format!("{why}; the arcade controller guides the planner")),
+            (None, None) => None,
+        };
     }
 
     /// Tells the automatic N how the step went: the newest plan's time, and whether the
