@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
 # `make train`: the learned controller from nothing (docs/learned-controller.md).
-#  1. The planner rides EPISODES seeded episodes as the expert (cpbp-learn generate).
+#  1. The planner rides EPISODES seeded episodes as the expert (cpbp-learn generate), and
+#     LOG_EPISODES of the test level's ride (straight over logs).
 #  2. A network is trained on them (cpbp-learn train, candle).
-#  3. DAgger, ROUNDS times: the latest network rides DAGGER_EPISODES new episodes while
-#     the planner labels the states it visits, and a network is trained on everything.
+#  3. DAgger, ROUNDS times: the latest network rides DAGGER_EPISODES new episodes and
+#     DAGGER_LOG_EPISODES over logs while the planner labels the states it visits, and a
+#     network is trained on everything so far.
 #  4. The last network becomes the project's model (models/policy.safetensors) and the
 #     training report is written (docs/learned/training.md, losses.png).
 #  5. Unless EVALUATE=0: learned and guided ride the test-level experiment and the
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
 #     are written again (docs/experiment, docs/scenarios).
+# Seeds: round R (0 = the expert's) rides mixed episodes from R*100000 + 1 and log
+# episodes from R*100000 + 50001, so no two episodes of a run share a seed.
 # EPOCHS and SEED override the trainer's defaults (cpbp-learn train --help).
 # Every step resumes: episodes already saved are not ridden again, a finished round's
 # model is kept, and the experiment and scenario runs resume. Data and checkpoints live
@@ -18,8 +22,10 @@ source "$(dirname "$0")/common.sh"
 cd "$PROJECT_ROOT"
 
 EPISODES="${EPISODES:-150}"
-ROUNDS="${ROUNDS:-1}"
+LOG_EPISODES="${LOG_EPISODES:-60}"
+ROUNDS="${ROUNDS:-2}"
 DAGGER_EPISODES="${DAGGER_EPISODES:-40}"
+DAGGER_LOG_EPISODES="${DAGGER_LOG_EPISODES:-20}"
 EVALUATE="${EVALUATE:-1}"
 LEARN_DATA="${LEARN_DATA:-$CACHE_ROOT/learn}"
 MODEL=models/policy.safetensors
@@ -38,15 +44,23 @@ train_round() {
     ${EPOCHS:+--epochs "$EPOCHS"} ${SEED:+--seed "$SEED"}
 }
 
-"$learn" generate --out "$LEARN_DATA/expert" --episodes "1-$EPISODES"
-folders="$LEARN_DATA/expert"
+# Rides round $1's episodes into $2 (mixed) and $2-logs: $3 and $4 of them; $5 is the
+# learner for DAgger (none for the expert's round).
+ride_round() {
+  local base=$(($1 * 100000)) learner=()
+  [ -n "${5:-}" ] && learner=(--learner "$5")
+  "$learn" generate --out "$2" --episodes "$((base + 1))-$((base + $3))" "${learner[@]}"
+  "$learn" generate --out "$2-logs" --family logs \
+    --episodes "$((base + 50001))-$((base + 50000 + $4))" "${learner[@]}"
+}
+
+ride_round 0 "$LEARN_DATA/expert" "$EPISODES" "$LOG_EPISODES"
+folders="$LEARN_DATA/expert,$LEARN_DATA/expert-logs"
 train_round 0 "$folders"
 for round in $(seq 1 "$ROUNDS"); do
-  first=$((round * 100000 + 1))
-  "$learn" generate --out "$LEARN_DATA/dagger-$round" \
-    --episodes "$first-$((first + DAGGER_EPISODES - 1))" \
-    --learner "$LEARN_DATA/round-$((round - 1)).safetensors"
-  folders="$folders,$LEARN_DATA/dagger-$round"
+  ride_round "$round" "$LEARN_DATA/dagger-$round" "$DAGGER_EPISODES" "$DAGGER_LOG_EPISODES" \
+    "$LEARN_DATA/round-$((round - 1)).safetensors"
+  folders="$folders,$LEARN_DATA/dagger-$round,$LEARN_DATA/dagger-$round-logs"
   train_round "$round" "$folders"
 done
 
@@ -62,6 +76,8 @@ report
 
 if [ "$EVALUATE" != 0 ]; then
   tools/build.sh
+  # Rows of learned and guided ridden with an earlier model step aside (superseded/).
+  .venv/bin/python tools/learned_evaluation.py --model "$MODEL"
   tools/experiment run --out docs/experiment --tries 30 --allow-mixed \
     --controllers arcade:exact,learned:exact,guided-5:exact,combined-5:exact,combined-15:exact
   tools/experiment report --out docs/experiment

@@ -15,11 +15,13 @@ use cpbp_core::control::planner::COMBINED;
 use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, TurnIntent};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
+
+use crate::grounds::{bump_field, log_field};
 
 /// Control steps a second.
 const STEPS_PER_SECOND: f64 = 30.0;
@@ -27,13 +29,13 @@ const STEPS_PER_SECOND: f64 = 30.0;
 /// The independent random sequences an episode's seed starts: its script, its bumps and
 /// the noise on its controls (the planner has the seed itself).
 #[derive(Clone, Copy)]
-enum Stream {
+pub enum Stream {
     Script = 1,
     Bumps = 2,
     Noise = 3,
 }
 
-fn stream(seed: u64, which: Stream) -> Pcg64 {
+pub fn stream(seed: u64, which: Stream) -> Pcg64 {
     Pcg64::seed_from_u64(seed.wrapping_mul(4).wrapping_add(which as u64))
 }
 
@@ -47,6 +49,8 @@ pub struct ExpertSettings {
     /// Spread of the noise added to the applied controls, as a share of each entry's
     /// range (0: the expert's own controls).
     pub noise: f64,
+    /// What kind of episode each seed draws.
+    pub family: Family,
 }
 
 impl Default for ExpertSettings {
@@ -55,6 +59,7 @@ impl Default for ExpertSettings {
             trajectories: 16,
             seconds: 12.0,
             noise: 0.03,
+            family: Family::Mixed,
         }
     }
 }
@@ -67,6 +72,33 @@ pub enum Ground {
     Slope(f64),
     /// A height map of bumps up to this height (m).
     Bumps(f64),
+    /// Flat ground with this many logs across the way ahead (the test level's).
+    Logs(usize),
+}
+
+/// The kind of episode a seed draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Family {
+    /// Every ground and request: speeds, turns, stops, the rider's weight, shoves.
+    #[default]
+    Mixed,
+    /// The test level's ride: straight over logs at one speed (6–25 km/h), no turn asked.
+    Logs,
+}
+
+impl Family {
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Mixed => "mixed",
+            Self::Logs => "logs",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        [Self::Mixed, Self::Logs]
+            .into_iter()
+            .find(|f| f.name() == name)
+    }
 }
 
 impl Ground {
@@ -75,6 +107,7 @@ impl Ground {
             Self::Flat => "flat".into(),
             Self::Slope(angle) => format!("slope {:+.1}°", angle.to_degrees()),
             Self::Bumps(height) => format!("bumps {:.0} mm", height * 1000.0),
+            Self::Logs(count) => format!("{count} logs"),
         }
     }
 }
@@ -105,6 +138,9 @@ pub struct Episode {
 
 impl Episode {
     pub fn draw(seed: u64, settings: &ExpertSettings) -> Self {
+        if settings.family == Family::Logs {
+            return Self::draw_logs(seed, settings);
+        }
         let mut rng = stream(seed, Stream::Script);
         let ground = match rng.random::<f64>() {
             p if p < 0.4 => Ground::Flat,
@@ -127,6 +163,31 @@ impl Episode {
         }
     }
 
+    /// The test level's ride: full throttle towards one speed, straight, over logs.
+    fn draw_logs(seed: u64, settings: &ExpertSettings) -> Self {
+        let mut rng = stream(seed, Stream::Script);
+        let kmh = rng.random_range(6.0..25.0);
+        let segment = Segment {
+            start: 0,
+            drive: DriveInput {
+                throttle: 1.0,
+                brake: 0.0,
+                max_speed: kmh / 3.6,
+            },
+            stick: 0.0,
+            lean: None,
+            rider: RiderPosition::NEUTRAL,
+            push: 0.0,
+        };
+        Self {
+            seed,
+            ground: Ground::Logs(rng.random_range(30..70)),
+            heading: rng.random_range(0.0..std::f64::consts::TAU),
+            steps: (settings.seconds * STEPS_PER_SECOND).round() as usize,
+            segments: vec![segment],
+        }
+    }
+
     /// The simulation at the start: the bike at rest on the episode's ground.
     pub fn simulation(&self) -> Simulation {
         let heading = DQuat::from_rotation_y(self.heading);
@@ -138,6 +199,7 @@ impl Episode {
                 (Terrain::new(vec![plane]).expect("a plane"), rotation)
             }
             Ground::Bumps(height) => (bump_field(self.seed, height), heading),
+            Ground::Logs(count) => (log_field(self.seed, heading, count), heading),
         };
         let lift = match self.ground {
             Ground::Bumps(height) => height + 0.02,
@@ -206,45 +268,6 @@ fn draw_segment(rng: &mut Pcg64, start: usize) -> Segment {
         rider,
         push,
     }
-}
-
-/// Rolling bumps over a 320 m square (40 km/h for the longest episode stays on it), the same for every world of the episode.
-fn bump_field(seed: u64, height: f64) -> Terrain {
-    let mut rng = stream(seed, Stream::Bumps);
-    let waves: Vec<(f64, f64, f64)> = (0..4)
-        .map(|_| {
-            (
-                rng.random_range(0.3..1.2),
-                rng.random_range(0.3..1.2),
-                rng.random_range(0.0..std::f64::consts::TAU),
-            )
-        })
-        .collect();
-    let (size, spacing) = (321, 1.0);
-    let heights = (0..size * size)
-        .map(|i| {
-            let (x, z) = ((i % size) as f64, (i / size) as f64);
-            let sum: f64 = waves
-                .iter()
-                .map(|(a, b, p)| (a * x + b * z + p).sin())
-                .sum();
-            height * 0.5 * (1.0 + sum / waves.len() as f64)
-        })
-        .collect();
-    let piece = TerrainPiece {
-        source: "bump field".into(),
-        shape: TerrainShape::HeightMap {
-            width: size,
-            depth: size,
-            heights,
-            spacing: [spacing, spacing],
-        },
-        placement: Placement {
-            position: DVec3::ZERO,
-            rotation: DQuat::IDENTITY,
-        },
-    };
-    Terrain::new(vec![piece]).expect("a height map is valid terrain")
 }
 
 /// What an episode recorded, one row per control step the rider was on the bike.

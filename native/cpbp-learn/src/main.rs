@@ -10,6 +10,7 @@
 //! feature list.
 
 mod episode;
+mod grounds;
 mod shard;
 mod train;
 
@@ -25,7 +26,7 @@ use cpbp_core::control::learned::{
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
-[--seconds S] [--noise X] [--jobs J] [--learner MODEL]\n       \
+[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs]\n       \
 cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S] \
 [--hidden W,W…] [--weight-decay D]\n       \
 cpbp-learn summary --out DIR";
@@ -92,6 +93,10 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
             "--trajectories" => settings.trajectories = number("--trajectories")?.max(1.0) as usize,
             "--seconds" => settings.seconds = number("--seconds")?.clamp(1.0, 600.0),
             "--noise" => settings.noise = number("--noise")?.min(0.5),
+            "--family" => {
+                settings.family = episode::Family::from_name(value)
+                    .ok_or_else(|| format!("--family is mixed or logs, not '{value}'"))?;
+            }
             "--jobs" => jobs = number("--jobs")?.max(1.0) as usize,
             "--learner" => {
                 let network = PolicyNetwork::load(std::path::Path::new(value))

@@ -58,6 +58,7 @@ pub fn write(
             format!("combined N={} exact", settings.trajectories),
         ),
         ("noise".into(), settings.noise.to_string()),
+        ("family".into(), settings.family.name().to_string()),
         ("driver".into(), records.driver.clone()),
         ("crashed".into(), records.crashed.to_string()),
     ]);

@@ -5,7 +5,7 @@ use std::time::Instant;
 
 use candle_core::{Device, Tensor};
 
-use super::episode::{ride, Episode, ExpertSettings, Ground};
+use super::episode::{ride, Episode, ExpertSettings, Family, Ground};
 use super::shard;
 use super::train::{train, Dataset, Layers, TrainSettings};
 use cpbp_core::bike::{LOWER, UPPER};
@@ -16,6 +16,7 @@ fn short() -> ExpertSettings {
         trajectories: 4,
         seconds: 1.0,
         noise: 0.05,
+        family: Family::Mixed,
     }
 }
 
@@ -33,6 +34,38 @@ fn an_episode_is_drawn_from_its_seed_alone() {
     assert!(grounds.contains(&Ground::Flat));
     assert!(grounds.iter().any(|g| matches!(g, Ground::Slope(_))));
     assert!(grounds.iter().any(|g| matches!(g, Ground::Bumps(_))));
+}
+
+#[test]
+fn a_log_episode_rides_straight_at_one_speed_over_the_test_levels_logs() {
+    let settings = ExpertSettings {
+        family: Family::Logs,
+        ..ExpertSettings::default()
+    };
+    let episode = Episode::draw(200_001, &settings);
+    assert_eq!(episode, Episode::draw(200_001, &settings));
+    let Ground::Logs(count) = episode.ground else {
+        panic!("not a log field: {:?}", episode.ground);
+    };
+    assert_eq!(episode.segments.len(), 1, "one request for the whole ride");
+    let segment = episode.segments[0];
+    assert_eq!(
+        (segment.stick, segment.lean, segment.push),
+        (0.0, None, 0.0)
+    );
+    assert!((6.0..25.0).contains(&(segment.drive.max_speed * 3.6)));
+    let heading = glam::DQuat::from_rotation_y(episode.heading);
+    let terrain = super::grounds::log_field(episode.seed, heading, count);
+    assert_eq!(terrain.len(), count + 1, "the logs and the ground");
+    assert!(
+        episode.simulation().crashed().is_none(),
+        "it starts upright, clear of logs"
+    );
+    // The mixed family's draws are the ones the committed data was made from.
+    assert_ne!(
+        Episode::draw(7, &ExpertSettings::default()).ground,
+        episode.ground
+    );
 }
 
 #[test]
