@@ -68,6 +68,9 @@ step "experiment quick run" env PYTHONPATH=tools .venv/bin/python -m unittest -v
 # An attempt repeats exactly (fresh or after other rides, 1 or 2 threads); platforms do not
 # mix unasked; verify catches a tampered row.
 step "experiment reproducibility" env PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_reproducible
+# On a Dask cluster of two workers: the driver, then a worker process killed part-way;
+# nothing lost or doubled, and the rows equal the local pool's.
+step "experiment on a Dask cluster" env PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_cluster
 screenshots() {
   local game=res://scenes/game/game.tscn levels=res://scenes/levels
   tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/start-menu.png \

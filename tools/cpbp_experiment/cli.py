@@ -99,6 +99,11 @@ def _parser() -> argparse.ArgumentParser:
                         help="trajectory counts of the timing study")
     parser.add_argument("--steps", type=_whole(10, 100_000), default=150,
                         help="control steps timed per trajectory count (default 150)")
+    parser.add_argument("--cluster", nargs="?", const="", default=None, metavar="ADDRESS",
+                        help="run: ride on a Dask cluster: ADDRESS of its scheduler (e.g. "
+                        "tcp://host:8786), 'local' for one started here with --jobs "
+                        "workers, or nothing for Dask's own DASK_SCHEDULER_ADDRESS "
+                        "(docs/experiment.md, \"On several machines\")")
     parser.add_argument("--allow-mixed", action="store_true",
                         help="append to results made on another platform (the report "
                         "notes the mix)")
@@ -128,7 +133,7 @@ def current_platform(out: Path, record: bool = True) -> tuple[Platform, dict]:
     worker = worker_platform(out / WORKER_LOG)
     description = fingerprint(PROJECT_ROOT, worker)
     name = PlatformStore(out / PLATFORMS).add(description) if record else identity(description)
-    return Platform(name, worker), description
+    return Platform(name, worker, description), description
 
 
 def run(args: argparse.Namespace, out: Path) -> None:
@@ -148,6 +153,9 @@ def run(args: argparse.Namespace, out: Path) -> None:
     blocks = plan_blocks(configs, args.tries, done)
     total = len(configs) * args.tries
     missing = sum(b.count for b in blocks)
+    if args.cluster is not None:
+        run_on_cluster(args, blocks, results, platform, done, total, missing)
+        return
     threads = args.threads if args.threads is not None else (1 if args.jobs > 1 else 0)
     print(f"experiment: {len(configs)} configurations × {args.tries} tries; {total - missing} "
           f"already in {results.path}, {missing} to run with {args.jobs} workers "
@@ -155,6 +163,36 @@ def run(args: argparse.Namespace, out: Path) -> None:
     progress = Progress(total=total, jobs=args.jobs, done_before=total - missing)
     run_blocks(blocks, results, progress, args.seed, args.jobs, threads, out / WORKER_LOG,
                platform)
+
+
+def run_on_cluster(args: argparse.Namespace, blocks, results: ResultsFile, platform: Platform,
+                   done: set, total: int, missing: int) -> None:
+    """The run's blocks as tasks of a Dask cluster (tools/cpbp_experiment/cluster.py)."""
+    from . import cluster
+
+    address = args.cluster or cluster.default_address()
+    if not address:
+        raise ValueError("--cluster needs a scheduler's address, 'local', or Dask's "
+                         "DASK_SCHEDULER_ADDRESS")
+    client, local = cluster.connect(address, args.jobs)
+    try:
+        slots = cluster.cluster_size(client)
+        # One planning thread per task unless asked: a worker thread is a core.
+        threads = args.threads if args.threads is not None else 1
+        print(f"experiment: {total - missing} of {total} attempts already in {results.path}, "
+              f"{missing} to ride on the Dask cluster at {client.scheduler.address} "
+              f"({slots} worker threads, {threads} planning thread(s) each)",
+              file=sys.stderr, flush=True)
+        progress = Progress(total=total, jobs=slots, done_before=total - missing)
+        repeated = cluster.run_blocks_on_cluster(blocks, results, progress, args.seed,
+                                                 threads, platform, done, client)
+        if repeated:
+            print(f"experiment: {repeated} attempts ridden again after a lost worker were "
+                  "saved once", file=sys.stderr)
+    finally:
+        client.close()
+        if local is not None:
+            local.close()
 
 
 def check_rows(args: argparse.Namespace, out: Path) -> int:
@@ -232,8 +270,9 @@ def write_report(out: Path) -> None:
             "## Paired comparisons", "",
             "Attempt *i* of every controller meets the same bumps, so the attempts pair up. "
             "*only A*: A reached the goal and B did not. The exact two-sided McNemar test "
-            "asks whether such a split could be chance; **bold** is p < 0.05, not "
-            "corrected for the number of comparisons.", "",
+            "asks whether such a split could be chance; *Holm p* is its p-value adjusted "
+            "by Holm's step-down method for every test in the table, and **bold** rejects "
+            "\"no difference\" at a family-wise error rate of 5 %.", "",
             report.paired_table(attempts), "",
             "## Cost of an attempt (one planning thread per worker)", "",
             report.cost_table(summaries, attempts), "",

@@ -12,7 +12,7 @@ from pathlib import Path
 from .configs import (BASELINES, FOLLOWING_PLANNERS, PLANNERS, THESIS_PLANNERS, Config, Controller,
                       display_order)
 from .results import Attempt
-from .stats import mcnemar_exact, mean, wilson_interval
+from .stats import holm, mcnemar_exact, mean, wilson_interval
 
 # The game steps its controller at 30 Hz: a plan must take at most 33 ms to keep up.
 CONTROL_RATE_HZ = 30.0
@@ -135,7 +135,8 @@ def paired_table(attempts: list[Attempt]) -> str:
     combined at the same N, and each baseline
     (sampling, MPPI) against both C-PBP planners at the same N (in the same physics), and
     each controller in the exact physics against itself in the classic, on the attempts
-    both rode (the same bumps), with the exact McNemar test."""
+    both rode (the same bumps), with the exact McNemar test and Holm's correction across
+    every test in the table."""
     outcome = {(a.config, a.attempt): a.outcome == "goal" for a in attempts}
     configs = {a.config for a in attempts}
     controllers = sorted({c.controller for c in configs}, key=display_order)
@@ -148,10 +149,7 @@ def paired_table(attempts: list[Attempt]) -> str:
     pairs += [(c, Controller(cpbp, c.trajectories, c.physics)) for c in controllers
               if c.kind in BASELINES for cpbp in THESIS_PLANNERS]
     pairs += [(c, c.in_physics("classic")) for c in controllers if c.physics != "classic"]
-    lines = [
-        "| speed | A | B | pairs | both goal | only A | only B | neither | McNemar p |",
-        "|---|---|---|---|---|---|---|---|---|",
-    ]
+    rows, p_values = [], []
     for speed in sorted({c.speed_kmh for c in configs}):
         for first, second in pairs:
             a_config, b_config = Config(speed, first), Config(speed, second)
@@ -164,12 +162,18 @@ def paired_table(attempts: list[Attempt]) -> str:
             both = sum(x and y for x, y in zip(a_goal, b_goal))
             only_a = sum(x and not y for x, y in zip(a_goal, b_goal))
             only_b = sum(y and not x for x, y in zip(a_goal, b_goal))
-            p = mcnemar_exact(only_a, only_b)
-            lines.append(
-                f"| {speed} km/h | {first.label} | {second.label} | {len(shared)} | {both} | "
-                f"{only_a} | {only_b} | {len(shared) - both - only_a - only_b} | "
-                + (f"**{p:.2g}**" if p < 0.05 else f"{p:.2g}") + " |"
-            )
+            p_values.append(mcnemar_exact(only_a, only_b))
+            rows.append(f"| {speed} km/h | {first.label} | {second.label} | {len(shared)} | "
+                        f"{both} | {only_a} | {only_b} | "
+                        f"{len(shared) - both - only_a - only_b} | {p_values[-1]:.2g} |")
+    reject, adjusted = holm(p_values)
+    lines = [
+        "| speed | A | B | pairs | both goal | only A | only B | neither | McNemar p | "
+        "Holm p |",
+        "|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for row, significant, p in zip(rows, reject, adjusted):
+        lines.append(row + (f" **{p:.2g}** |" if significant else f" {p:.2g} |"))
     return "\n".join(lines)
 
 

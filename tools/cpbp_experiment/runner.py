@@ -91,11 +91,12 @@ def godot_command(arguments: list[str]) -> list[str]:
 
 
 @functools.cache
-def worker_environment() -> dict[str, str]:
+def worker_environment(scratch_name: str = "experiment") -> dict[str, str]:
     """The environment of every worker: a Godot data home of its own (build/scratch/
-    experiment, emptied once per driver, as tools/common.sh's use_scratch_user_data does for
-    the other checks), so workers never write into the player's user:// folder."""
-    scratch = PROJECT_ROOT / "build" / "scratch" / "experiment"
+    SCRATCH_NAME, emptied once per driver, as tools/common.sh's use_scratch_user_data does
+    for the other checks), so workers never write into the player's user:// folder. Each
+    process that starts workers (the driver, or a cluster worker) names its own."""
+    scratch = PROJECT_ROOT / "build" / "scratch" / scratch_name
     shutil.rmtree(scratch, ignore_errors=True)
     homes = {"XDG_DATA_HOME": scratch / "data", "XDG_CONFIG_HOME": scratch / "config"}
     for home in homes.values():
@@ -110,7 +111,8 @@ def _die_with_parent() -> None:
     libc.prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
 
 
-def start_worker(arguments: list[str], log: Path) -> subprocess.Popen:
+def start_worker(arguments: list[str], log: Path,
+                 scratch: str = "experiment") -> subprocess.Popen:
     log.parent.mkdir(parents=True, exist_ok=True)
     with open(log, "a", encoding="utf-8") as stderr:
         return subprocess.Popen(
@@ -118,7 +120,7 @@ def start_worker(arguments: list[str], log: Path) -> subprocess.Popen:
             stdout=subprocess.PIPE,
             stderr=stderr,
             text=True,
-            env=worker_environment(),
+            env=worker_environment(scratch),
             preexec_fn=_die_with_parent,
         )
 
@@ -216,10 +218,12 @@ def worker_platform(log: Path) -> dict:
 
 @dataclass(frozen=True)
 class Platform:
-    """The run's platform: its identity for the rows, and what every worker must report."""
+    """The run's platform: its identity for the rows, what every worker must report, and
+    the whole fingerprint (to say what differs on a cluster node that is not the same)."""
 
     identity: str
     worker: dict
+    description: dict = field(default_factory=dict)
 
 
 def run_blocks(

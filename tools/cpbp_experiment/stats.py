@@ -1,14 +1,20 @@
-"""Confidence intervals for success rates."""
+"""The experiment's statistics, from statsmodels: Wilson intervals for success rates, the
+exact McNemar test for paired attempts and Holm's correction across the paired tests.
+The functions keep the project's argument checks and names; statsmodels does the maths."""
 
 from __future__ import annotations
 
 import math
 
-# The 97.5 % quantile of the standard normal distribution: a two-sided 95 % interval.
-Z_95 = 1.959963984540054
+from statsmodels.stats.contingency_tables import mcnemar
+from statsmodels.stats.multitest import multipletests
+from statsmodels.stats.proportion import proportion_confint
+
+# The family-wise error rate the paired comparisons are held to.
+ALPHA = 0.05
 
 
-def wilson_interval(successes: int, trials: int, z: float = Z_95) -> tuple[float, float]:
+def wilson_interval(successes: int, trials: int, alpha: float = ALPHA) -> tuple[float, float]:
     """The Wilson score interval for a binomial proportion (Wilson 1927).
 
     Unlike the textbook normal ("Wald") interval it stays inside [0, 1] and keeps close
@@ -18,12 +24,10 @@ def wilson_interval(successes: int, trials: int, z: float = Z_95) -> tuple[float
         raise ValueError("an interval needs at least one trial")
     if not 0 <= successes <= trials:
         raise ValueError(f"{successes} successes out of {trials} trials")
-    p = successes / trials
-    z2 = z * z
-    centre = (p + z2 / (2 * trials)) / (1 + z2 / trials)
-    half = z / (1 + z2 / trials) * math.sqrt(p * (1 - p) / trials + z2 / (4 * trials * trials))
+    low, high = proportion_confint(successes, trials, alpha=alpha, method="wilson")
     # At 0 and 100 % the bound through p is exact in theory; rounding may miss it.
-    return max(0.0, min(p, centre - half)), min(1.0, max(p, centre + half))
+    p = successes / trials
+    return max(0.0, min(p, float(low))), min(1.0, max(p, float(high)))
 
 
 def mean(values: list[float]) -> float:
@@ -37,8 +41,19 @@ def mcnemar_exact(only_first: int, only_second: int) -> float:
     attempts pair up and this is sharper than comparing two intervals."""
     if only_first < 0 or only_second < 0:
         raise ValueError("pair counts cannot be negative")
-    discordant = only_first + only_second
-    if discordant == 0:
+    if only_first + only_second == 0:
         return 1.0
-    tail = sum(math.comb(discordant, k) for k in range(min(only_first, only_second) + 1))
-    return min(1.0, 2.0 * tail / 2.0**discordant)
+    # Only the discordant cells enter the exact test; the concordant ones are set to 0.
+    table = [[0, only_first], [only_second, 0]]
+    return min(1.0, float(mcnemar(table, exact=True).pvalue))
+
+
+def holm(p_values: list[float], alpha: float = ALPHA) -> tuple[list[bool], list[float]]:
+    """Holm's step-down correction (Holm 1979) of a family of tests: which reject at a
+    family-wise error rate of `alpha`, and the adjusted p-values."""
+    if not p_values:
+        return [], []
+    if any(not 0.0 <= p <= 1.0 for p in p_values):
+        raise ValueError(f"p-values must lie within 0 and 1: {p_values}")
+    reject, adjusted, _, _ = multipletests(p_values, alpha=alpha, method="holm")
+    return [bool(r) for r in reject], [float(p) for p in adjusted]

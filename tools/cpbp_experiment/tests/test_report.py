@@ -43,15 +43,16 @@ class ReportTest(unittest.TestCase):
         paired = report.paired_table(self.attempts)
         # Attempts 0–147 of both at 10 km/h: combined reached the goal on 0–14, arcade
         # on 0–80, so arcade alone on 15–80 and neither on 81–147.
-        self.assertIn("| 10 km/h | combined-5 | arcade | 148 | 15 | 0 | 66 | 67 | **", paired)
+        self.assertIn("| 10 km/h | combined-5 | arcade | 148 | 15 | 0 | 66 | 67 | 2.7e-20 | **",
+                      paired)
         self.assertNotIn("25 km/h", paired, "no arcade attempts at 25 km/h to pair with")
 
     def test_a_controller_in_the_exact_physics_pairs_with_itself_in_the_classic(self):
         exact = COMBINED.in_physics("exact")
         paired = report.paired_table(self.attempts + attempts(Config(25, exact), 20, 9))
         # Attempts 0–28 at 25 km/h: classic reached the goal on all, exact on 0–19.
-        self.assertIn("| 25 km/h | combined-5:exact | combined-5 | 29 | 20 | 0 | 9 | 0 | **",
-                      paired)
+        self.assertIn("| 25 km/h | combined-5:exact | combined-5 | 29 | 20 | 0 | 9 | 0 | 0.0039 | "
+                      "**", paired)
         self.assertNotIn("| 25 km/h | combined-5:exact | arcade", paired,
                          "no exact arcade attempts to pair with")
 
@@ -59,8 +60,21 @@ class ReportTest(unittest.TestCase):
         mppi = Controller("mppi", 5)
         paired = report.paired_table(self.attempts + attempts(Config(25, mppi), 25, 4))
         # Attempts 0–28 at 25 km/h: combined-5 reached the goal on all, MPPI on 0–24.
-        self.assertIn("| 25 km/h | mppi-5 | combined-5 | 29 | 25 | 0 | 4 | 0 | 0.12 |", paired)
+        self.assertIn("| 25 km/h | mppi-5 | combined-5 | 29 | 25 | 0 | 4 | 0 | 0.12 | 0.12 |",
+                      paired)
         self.assertNotIn("| 25 km/h | mppi-5 | optimizer-5", paired, "no optimizer rows")
+
+    def test_holm_holds_the_family_of_paired_tests_to_five_percent(self):
+        # Six attempts of arcade alone against combined-5 (p = 2/64 = 0.031) is
+        # significant on its own; two such tests are not once corrected (2 · 0.031).
+        one = attempts(Config(20, ARCADE), 6, 0) + attempts(Config(20, COMBINED), 0, 6)
+        self.assertIn("| 6 | 0 | 0 | 6 | 0 | 0.031 | **0.031** |", report.paired_table(one))
+        two = one + attempts(Config(15, ARCADE), 6, 0) + attempts(Config(15, COMBINED), 0, 6)
+        paired = report.paired_table(two)
+        self.assertIn("| 15 km/h | combined-5 | arcade | 6 | 0 | 0 | 6 | 0 | 0.031 | 0.062 |",
+                      paired)
+        self.assertIn("| 20 km/h | combined-5 | arcade | 6 | 0 | 0 | 6 | 0 | 0.031 | 0.062 |",
+                      paired)
 
     def test_controller_labels_name_the_physics_and_parse_back(self):
         for label in ("arcade", "arcade:exact", "combined-15:exact", "optimizer-5",

@@ -1,6 +1,6 @@
 import unittest
 
-from cpbp_experiment.stats import mcnemar_exact, wilson_interval
+from cpbp_experiment.stats import holm, mcnemar_exact, wilson_interval
 
 
 class WilsonIntervalTest(unittest.TestCase):
@@ -55,6 +55,26 @@ class McNemarTest(unittest.TestCase):
     def test_an_even_split_or_no_discordant_pair_shows_nothing(self):
         self.assertEqual(mcnemar_exact(0, 0), 1.0)
         self.assertEqual(mcnemar_exact(5, 5), 1.0)
+
+
+class HolmTest(unittest.TestCase):
+    def test_the_worked_example(self):
+        # Four hypotheses with p = 0.01, 0.04, 0.03, 0.005 at α = 0.05 (the worked example
+        # of Holm's method in its Wikipedia article): sorted, 0.005 ≤ 0.05/4 and 0.01 ≤
+        # 0.05/3 reject, 0.03 > 0.05/2 stops, so H1 and H4 are rejected and H2, H3 not.
+        reject, adjusted = holm([0.01, 0.04, 0.03, 0.005])
+        self.assertEqual(reject, [True, False, False, True])
+        # Adjusted: 4·0.005, 3·0.01, then max(2·0.03, earlier) and max(1·0.04, 0.06).
+        for got, want in zip(adjusted, [0.03, 0.06, 0.06, 0.02]):
+            self.assertAlmostEqual(got, want)
+
+    def test_one_test_is_left_alone_and_nothing_is_nothing(self):
+        self.assertEqual(holm([0.04]), ([True], [0.04]))
+        self.assertEqual(holm([]), ([], []))
+
+    def test_refuses_impossible_p_values(self):
+        with self.assertRaises(ValueError):
+            holm([0.5, 1.5])
 
 
 if __name__ == "__main__":
