@@ -26,7 +26,7 @@ bench: build ## Print the performance figures, planning and frame time (see docs
 	@tools/cargo run --release --quiet -p cpbp-core --bin cpbp-bench
 	@tools/frame-time.sh
 
-experiment: build ## Reproduce the thesis's evaluation headless (docs/experiment.md; ARGS="--tries 50")
+experiment: build ## The thesis's evaluation on the game's physics, headless (docs/experiment.md; ARGS="--out docs/experiment")
 	@tools/experiment all $(ARGS)
 
 train: build ## Train the learned controller from nothing and evaluate it (docs/learned-controller.md)

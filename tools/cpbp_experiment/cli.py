@@ -11,7 +11,8 @@ from pathlib import Path
 from . import report
 from .compare import compare
 from .configs import (THESIS_CONTROLLERS, THESIS_PLANNERS, THESIS_SPEEDS, TIMING_COUNTS, Config,
-                      parse_attempts, parse_controllers, parse_counts, parse_speeds)
+                      display_order, parse_attempts, parse_controllers, parse_counts,
+                      parse_speeds, protocol_tries)
 from .fingerprint import FingerprintError, PlatformStore, fingerprint, identity, refusal
 from .results import ResultsError, ResultsFile, check_seed
 from .runner import (PROJECT_ROOT, Platform, Progress, WorkerError, cpu_description,
@@ -25,6 +26,10 @@ SUCCESS_CHART = "success.png"
 PLANNING_CHART = "planning.png"
 WORKER_LOG = "workers.log"
 PLATFORMS = "platforms.json"
+# Attempts per named configuration, as the thesis rode.
+DEFAULT_TRIES = 500
+# The planning-time study runs in the physics the game rides.
+TIMING_PHYSICS = "exact"
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -33,10 +38,8 @@ def main(argv: list[str] | None = None) -> int:
     named = args.speeds is not None or args.controllers is not None
     # compare filters by what was named, each on its own.
     args.named_speeds, args.named_controllers = args.speeds, args.controllers
-    args.speeds = args.speeds or list(THESIS_SPEEDS)
-    args.controllers = args.controllers or parse_controllers(",".join(THESIS_CONTROLLERS))
-    args.chosen_configs = ({Config(s, c) for s in args.speeds for c in args.controllers}
-                           if named else None)
+    args.planned = planned_tries(args.speeds, args.controllers, args.tries)
+    args.chosen_configs = set(args.planned) if named else None
     out = Path(args.out)
     try:
         if args.command in ("timing", "all") and (args.command == "timing" or
@@ -63,6 +66,19 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
+def planned_tries(speeds: list[int] | None, controllers: list | None,
+                  tries: int | None) -> dict[Config, int]:
+    """What a run rides: the game protocol (configs.GAME_PROTOCOL, every count raised to
+    --tries) unless --speeds or --controllers name configurations, which then ride --tries
+    each (500, as the thesis, by default); a missing one of the two is the thesis's."""
+    if speeds is None and controllers is None:
+        return protocol_tries(tries or 0)
+    speeds = speeds or list(THESIS_SPEEDS)
+    controllers = controllers or parse_controllers(
+        ",".join(f"{label}:exact" for label in THESIS_CONTROLLERS))
+    return {Config(s, c): tries or DEFAULT_TRIES for s in speeds for c in controllers}
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="tools/experiment",
@@ -78,16 +94,20 @@ def _parser() -> argparse.ArgumentParser:
                         "this machine's fingerprint")
     parser.add_argument("--out", default="build/experiment",
                         help="directory of results.csv, timing.csv and the report")
-    parser.add_argument("--tries", type=_whole(1, 100_000), default=500,
-                        help="attempts per configuration (default 500, as the thesis)")
+    parser.add_argument("--tries", type=_whole(1, 100_000), default=None,
+                        help="attempts per configuration: with --speeds or --controllers "
+                        f"each rides this many (default {DEFAULT_TRIES}, as the thesis); "
+                        "without them, the game protocol's counts are raised to at least "
+                        "this")
     parser.add_argument("--speeds", type=parse_speeds,
-                        default=None, help="km/h, comma-separated "
-                        "(default 10,15,20,25)")
+                        default=None, help="km/h, comma-separated (default: the game "
+                        "protocol's, or 10,15,20,25 with --controllers)")
     parser.add_argument("--controllers", type=parse_controllers,
                         default=None,
-                        help="comma-separated: arcade, optimizer-N, combined-N, sampling-N, "
-                        "mppi-N, each with :exact for the exact physics model (default "
-                        "arcade and both C-PBP planners with N = 5, 10, 15, classic)")
+                        help="comma-separated: arcade, learned, optimizer-N, combined-N, "
+                        "guided-N, sampling-N, mppi-N, each with :exact for the exact physics "
+                        "model (default: the game protocol's, or with --speeds arcade and "
+                        "both C-PBP planners with N = 5, 10, 15, exact)")
     parser.add_argument("--seed", type=_whole(0, 1_000_000_000), default=1000,
                         help="attempt i meets the bumps of seed SEED + i (default 1000)")
     parser.add_argument("--jobs", type=_whole(1, 256), default=os.cpu_count() or 1,
@@ -148,16 +168,18 @@ def run(args: argparse.Namespace, out: Path) -> None:
         raise ResultsError(mix)
     if results.legacy:
         results.upgrade(saved)
-    configs = [Config(s, c) for s in args.speeds for c in args.controllers]
+    configs = sorted(args.planned, key=lambda c: (display_order(c.controller), c.speed_kmh))
     done = {a.key for a in saved}
-    blocks = plan_blocks(configs, args.tries, done)
-    total = len(configs) * args.tries
+    blocks = plan_blocks(configs, args.planned, done)
+    total = sum(args.planned.values())
     missing = sum(b.count for b in blocks)
     if args.cluster is not None:
         run_on_cluster(args, blocks, results, platform, done, total, missing)
         return
     threads = args.threads if args.threads is not None else (1 if args.jobs > 1 else 0)
-    print(f"experiment: {len(configs)} configurations × {args.tries} tries; {total - missing} "
+    counts = sorted(set(args.planned.values()))
+    each = f"{counts[0]}" if len(counts) == 1 else f"{counts[0]}–{counts[-1]}"
+    print(f"experiment: {len(configs)} configurations × {each} tries; {total - missing} "
           f"already in {results.path}, {missing} to run with {args.jobs} workers "
           f"({threads or 'all'} planning thread(s) each)", file=sys.stderr, flush=True)
     progress = Progress(total=total, jobs=args.jobs, done_before=total - missing)
@@ -248,7 +270,7 @@ def timing(args: argparse.Namespace, out: Path) -> None:
     rows = []
     for kind in THESIS_PLANNERS:
         for row in measure_planning(kind, args.counts, args.steps, 15, args.seed,
-                                    out / WORKER_LOG):
+                                    out / WORKER_LOG, TIMING_PHYSICS):
             rows.append(row)
     report.write_timing(rows, out / TIMING)
     (out / "machine.txt").write_text(f"{cpu_description()}, measured {date.today()}\n")

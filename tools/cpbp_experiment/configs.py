@@ -38,6 +38,17 @@ BASELINES = tuple(kind for kind in PLANNERS
 # The game's physics models (cpbp_core::physics::PhysicsModel); rows without one are
 # classic, the model every row was ridden in before the exact model existed.
 PHYSICS = ("classic", "exact")
+# The evaluation on the game's physics (docs/results.md): every thesis configuration with
+# 200 tries and arcade with 500, the baselines and the network's controllers with 100, and
+# 5 and 30 km/h beside the thesis's speeds for arcade, combined-5, learned and guided-5.
+# (controllers, speeds, tries); a configuration named twice takes the larger count.
+GAME_PROTOCOL = (
+    ("arcade:exact", (5, 10, 15, 20, 25, 30), 500),
+    (",".join(f"{p}-{n}:exact" for p in THESIS_PLANNERS for n in (5, 10, 15)), THESIS_SPEEDS,
+     200),
+    ("sampling-10:exact,mppi-10:exact,learned:exact,guided-5:exact", THESIS_SPEEDS, 100),
+    ("combined-5:exact,learned:exact,guided-5:exact", (5, 30), 100),
+)
 # Trajectory counts of the planning-time study (Figure 5.2 and beyond).
 TIMING_COUNTS = (5, 6, 8, 10, 15, 20, 32, 64, 128)
 
@@ -93,6 +104,17 @@ class Config:
     @property
     def label(self) -> str:
         return f"{self.controller.label} @ {self.speed_kmh} km/h"
+
+
+def protocol_tries(at_least: int = 0) -> dict["Config", int]:
+    """The game protocol's configurations and their tries, each raised to `at_least`."""
+    tries: dict[Config, int] = {}
+    for controllers, speeds, count in GAME_PROTOCOL:
+        for controller in parse_controllers(controllers):
+            for speed in speeds:
+                config = Config(speed, controller)
+                tries[config] = max(tries.get(config, 0), count, at_least)
+    return tries
 
 
 def parse_speeds(text: str) -> list[int]:

@@ -20,7 +20,7 @@ REAL_TIME_MS = 1000.0 / CONTROL_RATE_HZ
 # What the thesis measured on its 4-core laptop (§5.2): frames per second by N, capped at 31 by its 32 ms step.
 THESIS_FPS = {5: 31.0, 10: 15.0, 15: 11.0}
 TIMING_FIELDS = ("controller", "trajectories", "threads", "samples", "mean_ms", "median_ms",
-                 "p95_ms")
+                 "p95_ms", "physics")
 
 
 @dataclass
@@ -273,7 +273,9 @@ def read_timing(path: Path) -> list[dict]:
     with open(path, encoding="utf-8") as f:
         return [
             {**row, "trajectories": int(row["trajectories"]), "mean_ms": float(row["mean_ms"]),
-             "median_ms": float(row["median_ms"]), "p95_ms": float(row["p95_ms"])}
+             "median_ms": float(row["median_ms"]), "p95_ms": float(row["p95_ms"]),
+             # Studies made before the column existed ran the classic model.
+             "physics": row.get("physics") or "classic"}
             for row in csv.DictReader(f)
         ]
 

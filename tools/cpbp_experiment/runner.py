@@ -49,18 +49,21 @@ class Block:
         return range(self.first, self.first + self.count)
 
 
-def plan_blocks(configs: list[Config], tries: int, done: set[tuple[Config, int]]) -> list[Block]:
+def plan_blocks(configs: list[Config], tries: int | dict[Config, int],
+                done: set[tuple[Config, int]]) -> list[Block]:
     """The missing attempts as blocks, in rounds of PLANNER_BLOCK attempts over every
     configuration, so a run stopped early still has every configuration at about the
-    same count. Arcade blocks come first: they take seconds in all."""
+    same count. `tries` is one count for all or each configuration's own (a protocol's).
+    Arcade blocks come first: they take seconds in all."""
+    wanted = tries if isinstance(tries, dict) else {config: tries for config in configs}
     blocks = []
     for config in configs:
         if not config.controller.plans:
-            blocks += _blocks_of(config, range(tries), done, ARCADE_BLOCK)
-    for start in range(0, tries, PLANNER_BLOCK):
+            blocks += _blocks_of(config, range(wanted[config]), done, ARCADE_BLOCK)
+    for start in range(0, max(wanted.values(), default=0), PLANNER_BLOCK):
         for config in configs:
-            if config.controller.plans:
-                window = range(start, min(start + PLANNER_BLOCK, tries))
+            if config.controller.plans and start < wanted[config]:
+                window = range(start, min(start + PLANNER_BLOCK, wanted[config]))
                 blocks += _blocks_of(config, window, done, PLANNER_BLOCK)
     return blocks
 
@@ -351,10 +354,11 @@ def _tail(log: Path, lines: int = 8) -> str:
 
 
 def measure_planning(controller_kind: str, counts: list[int], steps: int, speed: int,
-                     seed: int, log: Path) -> list[dict]:
+                     seed: int, log: Path, physics: str) -> list[dict]:
     """The planning-time study: one worker, every core for the planner, as in the game."""
     arguments = [
         "--timing",
+        f"--physics={physics}",
         f"--controller={controller_kind}",
         f"--trajectories={','.join(str(c) for c in counts)}",
         f"--steps={steps}",
@@ -366,7 +370,7 @@ def measure_planning(controller_kind: str, counts: list[int], steps: int, speed:
     rows = []
     for text in process.stdout:
         if text.startswith("TIMING "):
-            row = json.loads(text[7:])
+            row = {**json.loads(text[7:]), "physics": physics}
             print(f"  {controller_kind} N={row['trajectories']}: {row['mean_ms']:.1f} ms "
                   f"per plan (median {row['median_ms']:.1f}, p95 {row['p95_ms']:.1f})",
                   file=sys.stderr, flush=True)

@@ -1,6 +1,8 @@
 import unittest
 
-from cpbp_experiment.configs import Config, Controller, parse_controllers, parse_speeds
+from cpbp_experiment.cli import planned_tries
+from cpbp_experiment.configs import (Config, Controller, parse_controllers, parse_speeds,
+                                     protocol_tries)
 from cpbp_experiment.runner import ARCADE_BLOCK, PLANNER_BLOCK, Progress, plan_blocks
 
 ARCADE = Controller("arcade")
@@ -35,6 +37,46 @@ class PlanBlocksTest(unittest.TestCase):
         done = {(config, 2), (config, 5)}
         blocks = plan_blocks([config], 8, done)
         self.assertEqual([(b.first, b.count) for b in blocks], [(0, 2), (3, 2), (6, 2)])
+
+
+    def test_each_configuration_its_own_count_in_rounds(self):
+        few, many = Config(15, COMBINED), Config(15, OPTIMIZER)
+        blocks = plan_blocks([few, many], {few: 12, many: 25}, set())
+        planned = [(b.config, i) for b in blocks for i in b.attempts()]
+        self.assertEqual(set(planned), {(few, i) for i in range(12)}
+                         | {(many, i) for i in range(25)})
+        # Both advance together while both have attempts left.
+        self.assertEqual([(b.config, b.first) for b in blocks][:4],
+                         [(few, 0), (many, 0), (few, 10), (many, 10)])
+
+
+class ProtocolTest(unittest.TestCase):
+    def test_the_game_protocol_counts(self):
+        tries = protocol_tries()
+        exact = lambda label: Controller.parse(f"{label}:exact")  # noqa: E731
+        for speed in (10, 15, 20, 25):
+            self.assertEqual(tries[Config(speed, exact("arcade"))], 500)
+            for planner in ("optimizer", "combined"):
+                for n in (5, 10, 15):
+                    self.assertEqual(tries[Config(speed, exact(f"{planner}-{n}"))], 200)
+            for label in ("sampling-10", "mppi-10", "learned", "guided-5"):
+                self.assertEqual(tries[Config(speed, exact(label))], 100)
+        for speed in (5, 30):
+            self.assertEqual(tries[Config(speed, exact("arcade"))], 500)
+            for label in ("combined-5", "learned", "guided-5"):
+                self.assertEqual(tries[Config(speed, exact(label))], 100)
+        self.assertEqual(len(tries), 4 * 11 + 2 * 4)
+        self.assertTrue(all(c.controller.physics == "exact" for c in tries))
+        self.assertEqual(set(protocol_tries(300).values()), {300, 500})
+
+    def test_named_configurations_ride_tries_each(self):
+        self.assertEqual(planned_tries(None, None, None), protocol_tries())
+        named = planned_tries([25], parse_controllers("arcade,combined-5"), 4)
+        self.assertEqual(named, {Config(25, ARCADE): 4, Config(25, COMBINED): 4})
+        thesis = planned_tries([10], None, None)
+        self.assertEqual(len(thesis), 7)
+        self.assertEqual(set(thesis.values()), {500})
+        self.assertTrue(all(c.controller.physics == "exact" for c in thesis))
 
 
 class ParseTest(unittest.TestCase):
