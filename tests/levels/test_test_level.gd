@@ -40,6 +40,16 @@ func test_the_same_seed_lays_the_same_bumps() -> void:
 	assert_eq(first.size(), bumps.count)
 
 
+func test_the_limit_leaves_time_to_reach_the_goal_at_walking_pace() -> void:
+	for speed: float in [10.0, 15.0, 25.0, 30.0]:
+		assert_eq(_level.time_limit_at(speed), _level.time_limit, "%d km/h: the thesis's" % speed)
+	assert_gt(_level.time_limit_at(5.0), 36.0, "5 km/h: half as long again as the course")
+	_bike.controller = "arcade"
+	var result := TestRun.ride(_level, _bike, 1000, 5.0)
+	assert_eq(result.outcome, Level.GOAL, "arcade at 5 km/h: %s" % [result])
+	assert_gt(result.time, _level.time_limit, "longer than the thesis's limit")
+
+
 func test_combined_with_5_trajectories_reaches_the_goal_in_9_of_10_attempts() -> void:
 	_bike.controller = "combined"
 	_bike.trajectories = 5

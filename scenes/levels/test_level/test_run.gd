@@ -3,7 +3,8 @@ extends RefCounted
 ## One attempt at the test level, simulated as fast as the machine allows (headless tests
 ## and the experiment): the bike is put at the start, the bumps are laid out for the seed,
 ## and auto-accelerate rides it at the chosen speed with no turn command until the level
-## judges the attempt. The game plays the same attempt in real time. The bike must be
+## judges the attempt (within the level's limit for that speed: `time_limit_at`). The
+## game plays the same attempt in real time. The bike must be
 ## attached to the level (`Level.attach`) so it reads new bumps.
 
 
@@ -18,6 +19,7 @@ static func ride(
 	var spawn := level.spawn_points()[0]
 	bike.reset_to(spawn.spawn_transform())
 	level.begin_attempt(bike, seed_value)
+	level.attempt_time_limit = level.time_limit_at(speed_kmh)
 	var dt := 1.0 / 30.0
 	var outcome := Level.RIDING
 	var planning_ms := 0.0
