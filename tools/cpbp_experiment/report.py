@@ -130,13 +130,14 @@ def cost_table(summaries: dict[Config, Summary], attempts: list[Attempt]) -> str
     return "\n".join(lines)
 
 
-def paired_table(attempts: list[Attempt]) -> str:
+def paired_table(attempts: list[Attempt], across: bool | None = None) -> str:
     """Each controller against arcade, combined against the optimizer, guided against
     combined at the same N, and each baseline
     (sampling, MPPI) against both C-PBP planners at the same N (in the same physics), and
     each controller in the exact physics against itself in the classic, on the attempts
     both rode (the same bumps), with the exact McNemar test and Holm's correction across
-    every test in the table."""
+    every test in the table. `across` keeps only the pairs across physics models (True) or
+    only those within one (False)."""
     outcome = {(a.config, a.attempt): a.outcome == "goal" for a in attempts}
     configs = {a.config for a in attempts}
     controllers = sorted({c.controller for c in configs}, key=display_order)
@@ -148,7 +149,9 @@ def paired_table(attempts: list[Attempt]) -> str:
               if c.kind in FOLLOWING_PLANNERS]
     pairs += [(c, Controller(cpbp, c.trajectories, c.physics)) for c in controllers
               if c.kind in BASELINES for cpbp in THESIS_PLANNERS]
-    pairs += [(c, c.in_physics("classic")) for c in controllers if c.physics != "classic"]
+    twins = [(c, c.in_physics("classic")) for c in controllers if c.physics != "classic"]
+    # across: only each controller against its classic twin; False: only within a model.
+    pairs = twins if across else pairs if across is False else pairs + twins
     rows, p_values = [], []
     for speed in sorted({c.speed_kmh for c in configs}):
         for first, second in pairs:
@@ -209,7 +212,7 @@ def platform_notes(attempts: list[Attempt], known: dict[str, dict]) -> str:
     return "\n".join(lines)
 
 
-def success_chart(summaries: dict[Config, Summary], path: Path) -> None:
+def success_chart(summaries: dict[Config, Summary], path: Path, physics: str = "") -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -231,9 +234,10 @@ def success_chart(summaries: dict[Config, Summary], path: Path) -> None:
             rates.append(100 * s.rate)
             below.append(max(0.0, 100 * (s.rate - low)))
             above.append(max(0.0, 100 * (high - s.rate)))
-        # The exact physics model's bars are hatched beside the classic ones.
+        # In a chart of both models the exact model's bars are hatched beside the classic.
+        hatched = not physics and controller.physics != "classic"
         ax.bar(xs, rates, width * 0.92, label=controller.label, color=colours[controller],
-               hatch="//" if controller.physics != "classic" else None, edgecolor="white",
+               hatch="//" if hatched else None, edgecolor="white",
                yerr=[below, above], capsize=2.5, error_kw={"elinewidth": 0.8})
     ax.set_xticks(range(len(speeds)), [f"{s} km/h" for s in speeds])
     ax.set_ylim(0, 105)
@@ -241,7 +245,8 @@ def success_chart(summaries: dict[Config, Summary], path: Path) -> None:
     ax.set_xlabel("auto-accelerate speed")
     tries = sorted({s.tries for s in summaries.values()})
     count = f"{tries[0]}" if len(tries) == 1 else f"{tries[0]}–{tries[-1]}"
-    ax.set_title(f"Automatic test: success rate per controller ({count} tries each, "
+    model = f", {physics} physics" if physics else ""
+    ax.set_title(f"Automatic test{model}: success rate per controller ({count} tries each, "
                  "95 % Wilson intervals)")
     ax.grid(axis="y", alpha=0.3)
     ax.legend(ncol=min(len(controllers), 7), fontsize=8, loc="lower center",
@@ -255,9 +260,9 @@ def _controller_colours(controllers: list[Controller]) -> dict[Controller, str]:
     import matplotlib
 
     families = {"arcade": "Greys", "optimizer": "Blues", "combined": "Oranges",
-                "sampling": "Greens", "mppi": "Purples"}
+                "sampling": "Greens", "mppi": "Purples", "learned": "Reds", "guided": "RdPu"}
     # A controller registered later than these charts gets a family of its own.
-    spare = iter(["Reds", "YlOrBr", "BuGn", "RdPu", "PuBu"])
+    spare = iter(["YlOrBr", "BuGn", "PuBu"])
     for kind in dict.fromkeys(c.kind for c in controllers):
         families.setdefault(kind, next(spare, "Greys"))
     colours = {}
