@@ -114,20 +114,28 @@ def cost_table(summaries: dict[Config, Summary], attempts: list[Attempt]) -> str
         by_controller[attempt.config.controller].append(attempt)
     lines = [
         "| controller | tries | mean wall time per try | per simulated second | "
-        "planning per control step |",
-        "|---|---|---|---|---|",
+        "planning per control step | wall time in all (one core) |",
+        "|---|---|---|---|---|---|",
     ]
+    total = 0.0
     for controller in sorted(by_controller, key=display_order):
         group = by_controller[controller]
         wall = sum(a.wall_ms for a in group) / 1000.0
+        total += wall
         simulated = sum(a.time_s for a in group)
         planning = mean([a.planning_ms for a in group]) if controller.plans else 0.0
         lines.append(
             f"| {controller.label} | {len(group)} | {wall / len(group):.2f} s | "
             f"{wall / max(simulated, 1e-9):.2f} s | "
             + (f"{planning:.1f} ms |" if controller.plans else "– |")
+            + f" {_hours(wall)} |"
         )
+    lines.append(f"| all | {len(attempts)} | | | | {_hours(total)} |")
     return "\n".join(lines)
+
+
+def _hours(seconds: float) -> str:
+    return f"{seconds / 3600:.2f} h" if seconds >= 360 else f"{seconds / 60:.1f} min"
 
 
 def paired_table(attempts: list[Attempt], across: bool | None = None) -> str:
