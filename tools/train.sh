@@ -79,12 +79,12 @@ if [ "$EVALUATE" != 0 ]; then
   # Rows of learned and guided ridden with an earlier model step aside (superseded/).
   .venv/bin/python tools/learned_evaluation.py --model "$MODEL"
   tools/experiment run --out docs/experiment --tries 30 --allow-mixed \
-    --controllers arcade:exact,learned:exact,guided-5:exact,combined-5:exact,combined-15:exact
+    --controllers arcade:exact,learned:exact,guided-4:exact,guided-5:exact,combined-5:exact,combined-15:exact
   tools/experiment report --out docs/experiment
   scenarios=turn,slalom,push,walk,stop40,slope10
   tools/planner-scenarios run --out docs/scenarios --controllers learned,arcade --counts 5 \
     --scenarios "$scenarios"
-  tools/planner-scenarios run --out docs/scenarios --controllers guided --counts 5 \
+  tools/planner-scenarios run --out docs/scenarios --controllers guided --counts 4,5 \
     --scenarios "$scenarios"
   tools/planner-scenarios run --out docs/scenarios --controllers combined --counts 5,15 \
     --scenarios "$scenarios"
