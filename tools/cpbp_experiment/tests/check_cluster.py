@@ -4,7 +4,6 @@ machine (docs/experiment.md, "On several machines"); a run on them is killed par
 resumed, and one worker process is killed under the resumed run; no attempt is lost or
 saved twice, and the rows equal a local-pool run of the same seeds, row for row."""
 
-import csv
 import json
 import os
 import signal
@@ -16,6 +15,7 @@ import unittest
 from pathlib import Path
 
 from cpbp_experiment.runner import PROJECT_ROOT
+from cpbp_experiment.tests.check_quick_run import experiment, rows
 
 SEED = "900"
 TRIES = 6
@@ -24,17 +24,6 @@ RUN = ["--tries", str(TRIES), "--speeds", "25", "--controllers", "arcade:exact,c
 # What must repeat exactly; wall time, planning time and platform name need not.
 COMPARED = ("speed_kmh", "controller", "trajectories", "attempt", "seed", "outcome", "time_s",
             "distance_m", "steps", "planner_seed", "late_plans", "physics")
-
-
-def experiment(*arguments: str) -> list[str]:
-    return [str(PROJECT_ROOT / "tools" / "experiment"), *arguments]
-
-
-def rows(path: Path) -> list[dict]:
-    if not path.exists():
-        return []
-    with open(path) as f:
-        return list(csv.DictReader(f))
 
 
 def descendants(pid: int) -> set[int]:
