@@ -4,7 +4,6 @@ as it ends."""
 from __future__ import annotations
 
 import ctypes
-import functools
 import json
 import math
 import os
@@ -93,19 +92,28 @@ def godot_command(arguments: list[str]) -> list[str]:
     ]
 
 
-@functools.cache
+# Each scratch folder's environment, made once per process (under the lock: the checks
+# start workers from several threads).
+_ENVIRONMENTS: dict[str, dict[str, str]] = {}
+_ENVIRONMENTS_LOCK = threading.Lock()
+
+
 def worker_environment(scratch_name: str = "experiment") -> dict[str, str]:
     """The environment of every worker: a Godot data home of its own (build/scratch/
     SCRATCH_NAME, emptied once per driver, as tools/common.sh's use_scratch_user_data does
     for the other checks), so workers never write into the player's user:// folder. Each
     process that starts workers (the driver, or a cluster worker) names its own."""
-    scratch = PROJECT_ROOT / "build" / "scratch" / scratch_name
-    shutil.rmtree(scratch, ignore_errors=True)
-    homes = {"XDG_DATA_HOME": scratch / "data", "XDG_CONFIG_HOME": scratch / "config"}
-    for home in homes.values():
-        home.mkdir(parents=True)
-    return {**os.environ, **{name: str(home) for name, home in homes.items()},
-            "COUNTER_STEER_SCRATCH": str(scratch)}
+    with _ENVIRONMENTS_LOCK:
+        if scratch_name not in _ENVIRONMENTS:
+            scratch = PROJECT_ROOT / "build" / "scratch" / scratch_name
+            shutil.rmtree(scratch, ignore_errors=True)
+            homes = {"XDG_DATA_HOME": scratch / "data", "XDG_CONFIG_HOME": scratch / "config"}
+            for home in homes.values():
+                home.mkdir(parents=True)
+            _ENVIRONMENTS[scratch_name] = {
+                **os.environ, **{name: str(home) for name, home in homes.items()},
+                "COUNTER_STEER_SCRATCH": str(scratch)}
+        return _ENVIRONMENTS[scratch_name]
 
 
 def _die_with_parent() -> None:

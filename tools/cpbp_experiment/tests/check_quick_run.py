@@ -14,7 +14,7 @@ from pathlib import Path
 
 from cpbp_experiment.runner import PROJECT_ROOT
 
-QUICK = ["--tries", "4", "--speeds", "15,25", "--controllers", "arcade,combined-5",
+QUICK = ["--tries", "4", "--speeds", "15,25", "--controllers", "arcade:exact,combined-5:exact",
          "--jobs", "2", "--seed", "500"]
 CONFIGS = {(s, c, n) for s in ("15", "25") for c, n in (("arcade", "0"), ("combined", "5"))}
 
@@ -92,8 +92,8 @@ class QuickRunTest(unittest.TestCase):
             goals = sum(r["outcome"] == "goal" for r in after
                         if r["speed_kmh"] == speed and r["controller"] == "combined")
             self.assertIn(f"{goals}/4", report)
-        self.assertIn("| arcade |", report)
-        self.assertIn("| combined-5 |", report)
+        self.assertIn("| arcade:exact |", report)
+        self.assertIn("| combined-5:exact |", report)
         self.assertIn("Wilson", report)
         with open(out / "success.png", "rb") as f:
             self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
