@@ -92,8 +92,7 @@ def godot_command(arguments: list[str]) -> list[str]:
     ]
 
 
-# Each scratch folder's environment, made once per process (under the lock: the checks
-# start workers from several threads).
+# Each scratch folder's environment, made once per process; locked for threaded callers.
 _ENVIRONMENTS: dict[str, dict[str, str]] = {}
 _ENVIRONMENTS_LOCK = threading.Lock()
 
