@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
 # `make train`: the learned controller from nothing (docs/learned-controller.md).
-#  1. The planner rides EPISODES seeded episodes as the expert (cpbp-learn generate), and
-#     LOG_EPISODES of the test level's ride (straight over logs).
+#  1. The planner rides EPISODES seeded episodes as the expert (cpbp-learn generate),
+#     LOG_EPISODES of the test level's ride (straight over logs) and CARVING_EPISODES of
+#     long hard turns at speed.
 #  2. A network is trained on them (cpbp-learn train, candle).
-#  3. DAgger, ROUNDS times: the latest network rides DAGGER_EPISODES new episodes and
-#     DAGGER_LOG_EPISODES over logs while the planner labels the states it visits, and a
-#     network is trained on everything so far.
+#  3. DAgger, ROUNDS times: the latest network rides DAGGER_EPISODES new episodes,
+#     DAGGER_LOG_EPISODES over logs and DAGGER_CARVING_EPISODES of carving while the
+#     planner labels the states it visits, and a network is trained on everything so far.
 #  4. The last network becomes the project's model (models/policy.safetensors) and the
 #     training report is written (docs/learned/training.md, losses.png).
 #  5. Unless EVALUATE=0: learned and guided ride the test-level experiment and the
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
 #     are written again (docs/experiment, docs/scenarios).
-# Seeds: round R (0 = the expert's) rides mixed episodes from R*100000 + 1 and log
-# episodes from R*100000 + 50001, so no two episodes of a run share a seed.
+# Seeds: round R (0 = the expert's) rides mixed episodes from R*100000 + 1, log
+# episodes from R*100000 + 50001 and carving from R*100000 + 70001, so no two episodes
+# of a run share a seed.
 # EPOCHS and SEED override the trainer's defaults (cpbp-learn train --help).
 # Every step resumes: episodes already saved are not ridden again, a finished round's
 # model is kept, and the experiment and scenario runs resume. Data and checkpoints live
@@ -26,6 +28,8 @@ LOG_EPISODES="${LOG_EPISODES:-60}"
 ROUNDS="${ROUNDS:-2}"
 DAGGER_EPISODES="${DAGGER_EPISODES:-40}"
 DAGGER_LOG_EPISODES="${DAGGER_LOG_EPISODES:-20}"
+CARVING_EPISODES="${CARVING_EPISODES:-40}"
+DAGGER_CARVING_EPISODES="${DAGGER_CARVING_EPISODES:-20}"
 EVALUATE="${EVALUATE:-1}"
 LEARN_DATA="${LEARN_DATA:-$CACHE_ROOT/learn}"
 MODEL=models/policy.safetensors
@@ -44,23 +48,26 @@ train_round() {
     ${EPOCHS:+--epochs "$EPOCHS"} ${SEED:+--seed "$SEED"}
 }
 
-# Rides round $1's episodes into $2 (mixed) and $2-logs: $3 and $4 of them; $5 is the
-# learner for DAgger (none for the expert's round).
+# Rides round $1's episodes into $2 (mixed), $2-logs and $2-carving: $3, $4 and $5 of
+# them; $6 is the learner for DAgger (none for the expert's round).
 ride_round() {
   local base=$(($1 * 100000)) learner=()
-  [ -n "${5:-}" ] && learner=(--learner "$5")
+  [ -n "${6:-}" ] && learner=(--learner "$6")
   "$learn" generate --out "$2" --episodes "$((base + 1))-$((base + $3))" "${learner[@]}"
   "$learn" generate --out "$2-logs" --family logs \
     --episodes "$((base + 50001))-$((base + 50000 + $4))" "${learner[@]}"
+  "$learn" generate --out "$2-carving" --family carving \
+    --episodes "$((base + 70001))-$((base + 70000 + $5))" "${learner[@]}"
 }
 
-ride_round 0 "$LEARN_DATA/expert" "$EPISODES" "$LOG_EPISODES"
-folders="$LEARN_DATA/expert,$LEARN_DATA/expert-logs"
+ride_round 0 "$LEARN_DATA/expert" "$EPISODES" "$LOG_EPISODES" "$CARVING_EPISODES"
+folders="$LEARN_DATA/expert,$LEARN_DATA/expert-logs,$LEARN_DATA/expert-carving"
 train_round 0 "$folders"
 for round in $(seq 1 "$ROUNDS"); do
   ride_round "$round" "$LEARN_DATA/dagger-$round" "$DAGGER_EPISODES" "$DAGGER_LOG_EPISODES" \
-    "$LEARN_DATA/round-$((round - 1)).safetensors"
-  folders="$folders,$LEARN_DATA/dagger-$round,$LEARN_DATA/dagger-$round-logs"
+    "$DAGGER_CARVING_EPISODES" "$LEARN_DATA/round-$((round - 1)).safetensors"
+  dagger="$LEARN_DATA/dagger-$round"
+  folders="$folders,$dagger,$dagger-logs,$dagger-carving"
   train_round "$round" "$folders"
 done
 
@@ -81,7 +88,7 @@ if [ "$EVALUATE" != 0 ]; then
   tools/experiment run --out docs/experiment --tries 30 --allow-mixed \
     --controllers arcade:exact,learned:exact,guided-4:exact,guided-5:exact,combined-5:exact,combined-15:exact
   tools/experiment report --out docs/experiment
-  scenarios=turn,slalom,push,walk,stop40,slope10
+  scenarios=turn,carve,slalom,push,walk,stop40,slope10
   tools/planner-scenarios run --out docs/scenarios --controllers learned,arcade --counts 5 \
     --scenarios "$scenarios"
   tools/planner-scenarios run --out docs/scenarios --controllers guided --counts 4,5 \

@@ -21,6 +21,7 @@ use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
 
+pub use crate::family::Family;
 use crate::grounds::{bump_field, log_field};
 
 /// Control steps a second.
@@ -76,31 +77,6 @@ pub enum Ground {
     Logs(usize),
 }
 
-/// The kind of episode a seed draws.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Family {
-    /// Every ground and request: speeds, turns, stops, the rider's weight, shoves.
-    #[default]
-    Mixed,
-    /// The test level's ride: straight over logs at one speed (6–25 km/h), no turn asked.
-    Logs,
-}
-
-impl Family {
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Mixed => "mixed",
-            Self::Logs => "logs",
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        [Self::Mixed, Self::Logs]
-            .into_iter()
-            .find(|f| f.name() == name)
-    }
-}
-
 impl Ground {
     pub fn label(&self) -> String {
         match self {
@@ -126,6 +102,23 @@ pub struct Segment {
     pub push: f64,
 }
 
+impl Segment {
+    /// Straight on from the start, coasting, the rider sitting neutral: what a segment
+    /// asks where nothing else is said.
+    pub const STRAIGHT: Self = Self {
+        start: 0,
+        drive: DriveInput {
+            throttle: 0.0,
+            brake: 0.0,
+            max_speed: 0.0,
+        },
+        stick: 0.0,
+        lean: None,
+        rider: RiderPosition::NEUTRAL,
+        push: 0.0,
+    };
+}
+
 /// An episode's ground and script, drawn from its seed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Episode {
@@ -137,55 +130,10 @@ pub struct Episode {
 }
 
 impl Episode {
+    /// The episode `seed` draws in `settings`' family (`family.rs` says what each holds).
     pub fn draw(seed: u64, settings: &ExpertSettings) -> Self {
-        if settings.family == Family::Logs {
-            return Self::draw_logs(seed, settings);
-        }
-        let mut rng = stream(seed, Stream::Script);
-        let ground = match rng.random::<f64>() {
-            p if p < 0.4 => Ground::Flat,
-            p if p < 0.7 => Ground::Slope(rng.random_range(-12f64..12.0).to_radians()),
-            _ => Ground::Bumps(rng.random_range(0.02..0.08)),
-        };
         let steps = (settings.seconds * STEPS_PER_SECOND).round() as usize;
-        let mut segments = Vec::new();
-        let mut start = 0;
-        while start < steps {
-            segments.push(draw_segment(&mut rng, start));
-            start += rng.random_range(30..90);
-        }
-        Self {
-            seed,
-            ground,
-            heading: rng.random_range(0.0..std::f64::consts::TAU),
-            steps,
-            segments,
-        }
-    }
-
-    /// The test level's ride: full throttle towards one speed, straight, over logs.
-    fn draw_logs(seed: u64, settings: &ExpertSettings) -> Self {
-        let mut rng = stream(seed, Stream::Script);
-        let kmh = rng.random_range(6.0..25.0);
-        let segment = Segment {
-            start: 0,
-            drive: DriveInput {
-                throttle: 1.0,
-                brake: 0.0,
-                max_speed: kmh / 3.6,
-            },
-            stick: 0.0,
-            lean: None,
-            rider: RiderPosition::NEUTRAL,
-            push: 0.0,
-        };
-        Self {
-            seed,
-            ground: Ground::Logs(rng.random_range(30..70)),
-            heading: rng.random_range(0.0..std::f64::consts::TAU),
-            steps: (settings.seconds * STEPS_PER_SECOND).round() as usize,
-            segments: vec![segment],
-        }
+        settings.family.draw(seed, steps)
     }
 
     /// The simulation at the start: the bike at rest on the episode's ground.
@@ -214,59 +162,6 @@ impl Episode {
             ..SimulationConfig::default()
         };
         Simulation::new(config, Arc::new(terrain), spawn)
-    }
-}
-
-fn draw_segment(rng: &mut Pcg64, start: usize) -> Segment {
-    let kmh = rng.random_range(0.0..40.0);
-    let drive = match rng.random::<f64>() {
-        p if p < 0.15 => DriveInput {
-            throttle: 0.0,
-            brake: 1.0,
-            max_speed: kmh / 3.6,
-        },
-        p if p < 0.25 => DriveInput {
-            throttle: 0.0,
-            brake: rng.random_range(0.2..0.8),
-            max_speed: kmh / 3.6,
-        },
-        p if p < 0.35 => DriveInput {
-            throttle: 0.0,
-            brake: 0.0,
-            max_speed: kmh / 3.6,
-        },
-        _ => DriveInput {
-            throttle: rng.random_range(0.4..1.0),
-            brake: 0.0,
-            max_speed: kmh / 3.6,
-        },
-    };
-    let turning = rng.random::<f64>() < 0.6;
-    let (stick, lean) = match (turning, rng.random::<f64>() < 0.3) {
-        (false, _) => (0.0, None),
-        (true, false) => (rng.random_range(-1.0..1.0), None),
-        (true, true) => (0.0, Some(rng.random_range(-20f64..20.0).to_radians())),
-    };
-    let rider = if rng.random::<f64>() < 0.25 {
-        RiderPosition {
-            forward: rng.random_range(-1.0..1.0),
-            right: rng.random_range(-1.0..1.0),
-        }
-    } else {
-        RiderPosition::NEUTRAL
-    };
-    let push = if rng.random::<f64>() < 0.1 {
-        rng.random_range(-150.0..150.0)
-    } else {
-        0.0
-    };
-    Segment {
-        start,
-        drive,
-        stick,
-        lean,
-        rider,
-        push,
     }
 }
 

@@ -10,6 +10,7 @@
 //! feature list.
 
 mod episode;
+mod family;
 mod grounds;
 mod shard;
 mod train;
@@ -26,7 +27,7 @@ use cpbp_core::control::learned::{
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
-[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs]\n       \
+[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving]\n       \
 cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S] \
 [--hidden W,W…] [--weight-decay D]\n       \
 cpbp-learn summary --out DIR";
@@ -95,7 +96,7 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
             "--noise" => settings.noise = number("--noise")?.min(0.5),
             "--family" => {
                 settings.family = episode::Family::from_name(value)
-                    .ok_or_else(|| format!("--family is mixed or logs, not '{value}'"))?;
+                    .ok_or_else(|| format!("--family is mixed, logs or carving, not '{value}'"))?;
             }
             "--jobs" => jobs = number("--jobs")?.max(1.0) as usize,
             "--learner" => {

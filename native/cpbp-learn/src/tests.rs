@@ -192,3 +192,50 @@ fn the_game_computes_what_training_computed() {
         }
     }
 }
+
+#[test]
+fn a_carving_episode_turns_hard_and_long_at_speed() {
+    let settings = ExpertSettings {
+        family: Family::Carving,
+        ..ExpertSettings::default()
+    };
+    for seed in [1, 2, 3, 70_001] {
+        let episode = Episode::draw(seed, &settings);
+        assert_eq!(episode, Episode::draw(seed, &settings));
+        assert!(matches!(episode.ground, Ground::Flat | Ground::Bumps(_)));
+        let first = episode.segments[0];
+        assert_eq!((first.start, first.stick), (0, 0.0), "up to speed first");
+        let kmh = first.drive.max_speed * 3.6;
+        assert!((20.0..40.0).contains(&kmh) && first.drive.throttle >= 0.2);
+        let ends = episode.segments.iter().skip(1).map(|s| s.start);
+        let turns: Vec<usize> = episode
+            .segments
+            .iter()
+            .zip(ends.chain([episode.steps]))
+            .filter(|(s, _)| s.stick != 0.0)
+            .map(|(s, end)| {
+                assert!((0.3..1.0).contains(&s.stick.abs()), "{}", s.stick);
+                assert_eq!(s.drive, first.drive, "one speed all the way");
+                end - s.start
+            })
+            .collect();
+        assert!(!turns.is_empty() && turns[0] >= 90, "{turns:?}");
+        assert!(episode.simulation().crashed().is_none());
+    }
+}
+
+#[test]
+fn adding_a_family_leaves_the_others_draws_as_they_were() {
+    // Pinned from the draws the committed model's data was made from.
+    let mixed = Episode::draw(7, &ExpertSettings::default());
+    let logs = ExpertSettings {
+        family: Family::Logs,
+        ..ExpertSettings::default()
+    };
+    let logs = Episode::draw(50_002, &logs);
+    assert_eq!((mixed.ground, mixed.segments.len()), (Ground::Flat, 7));
+    assert!((mixed.heading - 2.876966).abs() < 1e-6, "{}", mixed.heading);
+    assert_eq!(logs.ground, Ground::Logs(44));
+    assert!((logs.segments[0].drive.max_speed - 6.056304).abs() < 1e-6);
+    assert!((logs.heading - 3.349467).abs() < 1e-6, "{}", logs.heading);
+}

@@ -1,0 +1,204 @@
+//! The kinds of episode a seed draws: what ground, and what the player asks when. Each
+//! family's draws are a function of the seed alone, in a fixed order of random numbers,
+//! so data made before a family was added is made again byte for byte.
+
+use cpbp_core::bike::{DriveInput, RiderPosition};
+use rand::RngExt;
+use rand_pcg::Pcg64;
+
+use crate::episode::{stream, Episode, Ground, Segment, Stream};
+
+/// The kind of episode a seed draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Family {
+    /// Every ground and request: speeds, turns, stops, the rider's weight, shoves.
+    #[default]
+    Mixed,
+    /// The test level's ride: straight over logs at one speed (6–25 km/h), no turn asked.
+    Logs,
+    /// Long hard turns at speed, as a player carves a track: up to speed on a straight,
+    /// then turns of 3–6 s at 20–40 km/h with the stick far enough over that the lean
+    /// asked meets its limit, some linked left-right, some with the rider's weight, at
+    /// any throttle from light to full.
+    Carving,
+}
+
+impl Family {
+    pub const ALL: [Self; 3] = [Self::Mixed, Self::Logs, Self::Carving];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Mixed => "mixed",
+            Self::Logs => "logs",
+            Self::Carving => "carving",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|f| f.name() == name)
+    }
+
+    /// The episode of `seed`, `steps` control steps long.
+    pub fn draw(self, seed: u64, steps: usize) -> Episode {
+        let mut rng = stream(seed, Stream::Script);
+        let (ground, segments, heading) = match self {
+            Self::Mixed => draw_mixed(&mut rng, steps),
+            Self::Logs => draw_logs(&mut rng),
+            Self::Carving => draw_carving(&mut rng, steps),
+        };
+        Episode {
+            seed,
+            ground,
+            heading,
+            steps,
+            segments,
+        }
+    }
+}
+
+type Drawn = (Ground, Vec<Segment>, f64);
+
+fn heading(rng: &mut Pcg64) -> f64 {
+    rng.random_range(0.0..std::f64::consts::TAU)
+}
+
+fn draw_mixed(rng: &mut Pcg64, steps: usize) -> Drawn {
+    let ground = match rng.random::<f64>() {
+        p if p < 0.4 => Ground::Flat,
+        p if p < 0.7 => Ground::Slope(rng.random_range(-12f64..12.0).to_radians()),
+        _ => Ground::Bumps(rng.random_range(0.02..0.08)),
+    };
+    let mut segments = Vec::new();
+    let mut start = 0;
+    while start < steps {
+        segments.push(draw_segment(rng, start));
+        start += rng.random_range(30..90);
+    }
+    (ground, segments, heading(rng))
+}
+
+/// Full throttle towards one speed, straight, over logs.
+fn draw_logs(rng: &mut Pcg64) -> Drawn {
+    let kmh = rng.random_range(6.0..25.0);
+    let segment = Segment {
+        start: 0,
+        drive: DriveInput {
+            throttle: 1.0,
+            brake: 0.0,
+            max_speed: kmh / 3.6,
+        },
+        ..Segment::STRAIGHT
+    };
+    let ground = Ground::Logs(rng.random_range(30..70));
+    (ground, vec![segment], heading(rng))
+}
+
+fn draw_carving(rng: &mut Pcg64, steps: usize) -> Drawn {
+    let ground = if rng.random::<f64>() < 0.7 {
+        Ground::Flat
+    } else {
+        Ground::Bumps(rng.random_range(0.02..0.05))
+    };
+    // The game's drive is the pedal times the motor share (0.6 by default), so a player's
+    // full throttle is 0.6 and a light one much less.
+    let drive = DriveInput {
+        throttle: rng.random_range(0.2..1.0),
+        brake: 0.0,
+        max_speed: rng.random_range(20.0..40.0) / 3.6,
+    };
+    // Up to speed first (2–3 s), then turn after turn.
+    let mut segments = vec![Segment {
+        drive,
+        ..Segment::STRAIGHT
+    }];
+    let mut start = rng.random_range(60..90);
+    let mut side: f64 = if rng.random::<bool>() { 1.0 } else { -1.0 };
+    while start < steps {
+        // Over 0.3 the stick asks the 30° limit from about 25 km/h on.
+        let stick = side * rng.random_range(0.3..1.0);
+        let rider = if rng.random::<f64>() < 0.3 {
+            RiderPosition {
+                forward: rng.random_range(-0.5..0.5),
+                right: rng.random_range(-1.0..1.0),
+            }
+        } else {
+            RiderPosition::NEUTRAL
+        };
+        segments.push(Segment {
+            start,
+            drive,
+            stick,
+            rider,
+            ..Segment::STRAIGHT
+        });
+        start += rng.random_range(90..180);
+        // Linked into the other side, or a short straight between.
+        if rng.random::<f64>() < 0.4 && start < steps {
+            segments.push(Segment {
+                start,
+                drive,
+                ..Segment::STRAIGHT
+            });
+            start += rng.random_range(15..45);
+        }
+        side = if rng.random::<f64>() < 0.7 {
+            -side
+        } else {
+            side
+        };
+    }
+    (ground, segments, heading(rng))
+}
+
+fn draw_segment(rng: &mut Pcg64, start: usize) -> Segment {
+    let kmh = rng.random_range(0.0..40.0);
+    let drive = match rng.random::<f64>() {
+        p if p < 0.15 => DriveInput {
+            throttle: 0.0,
+            brake: 1.0,
+            max_speed: kmh / 3.6,
+        },
+        p if p < 0.25 => DriveInput {
+            throttle: 0.0,
+            brake: rng.random_range(0.2..0.8),
+            max_speed: kmh / 3.6,
+        },
+        p if p < 0.35 => DriveInput {
+            throttle: 0.0,
+            brake: 0.0,
+            max_speed: kmh / 3.6,
+        },
+        _ => DriveInput {
+            throttle: rng.random_range(0.4..1.0),
+            brake: 0.0,
+            max_speed: kmh / 3.6,
+        },
+    };
+    let turning = rng.random::<f64>() < 0.6;
+    let (stick, lean) = match (turning, rng.random::<f64>() < 0.3) {
+        (false, _) => (0.0, None),
+        (true, false) => (rng.random_range(-1.0..1.0), None),
+        (true, true) => (0.0, Some(rng.random_range(-20f64..20.0).to_radians())),
+    };
+    let rider = if rng.random::<f64>() < 0.25 {
+        RiderPosition {
+            forward: rng.random_range(-1.0..1.0),
+            right: rng.random_range(-1.0..1.0),
+        }
+    } else {
+        RiderPosition::NEUTRAL
+    };
+    let push = if rng.random::<f64>() < 0.1 {
+        rng.random_range(-150.0..150.0)
+    } else {
+        0.0
+    };
+    Segment {
+        start,
+        drive,
+        stick,
+        lean,
+        rider,
+        push,
+    }
+}
