@@ -25,7 +25,7 @@ RIDERS = (("arcade", 0), ("learned", 0), ("guided", 4), ("guided", 5), ("combine
 # whose planning costs a third of combined's at N = 15 on 2 threads; docs/benchmarks.md).
 PAIRS = ((("learned", 0), ("arcade", 0)), (("guided", 5), ("combined", 15)),
          (("guided", 4), ("combined", 15)), (("guided", 5), ("combined", 5)))
-SCENARIOS = ("turn", "slalom", "push", "walk", "stop40", "slope10")
+SCENARIOS = ("turn", "carve", "slalom", "push", "walk", "stop40", "slope10")
 
 
 def model_metadata(path: Path) -> dict:

@@ -39,7 +39,8 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="tools/planner-scenarios",
         description="C-PBP, predictive sampling, MPPI and arcade on the same scripted rides "
-                    "(a turn, a slalom, lean reversals, a push, walking pace; hard stops, slopes and hill "
+                    "(a turn, a long hard turn at speed (carve), a slalom, lean reversals, a push, walking "
+                    "pace; hard stops, slopes and hill "
                     "starts: stop10, stop25, stop40, brake-turn, slope5, slope10, slope15, "
                     "downhill15), paired by seed. Rows are "
                     "appended to OUT/scenarios.csv as each ride ends; rerunning resumes.")

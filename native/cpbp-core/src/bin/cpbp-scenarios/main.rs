@@ -7,21 +7,22 @@
 //! and side, the slalom's first side), so every controller meets the same ride i.
 //!
 //! Scenarios: `turn` (3 s straight at 20 km/h, then 15° right; the RMS lean error over
-//! the last 5 s), `slalom` (20 km/h, ±15° every 2 s for 12 s; RMS over the last 10 s),
+//! the last 5 s), `carve` (as a player carves a long bend: part throttle towards 40 km/h
+//! for 3–5 s, then the stick 0.3–0.7 over for 8 s, asking the 30° limit; the RMS error
+//! from the lean asked over the last 6 s), `slalom` (20 km/h, ±15° every 2 s for 12 s; RMS over the last 10 s),
 //! `reversals` (25 km/h, ±15° every 2 s for 12 s; the settled error: RMS over the second
 //! second of each gate after the first, once the lean has swung over), `push` (15 km/h, a
 //! sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h); the
 //! stops and hill starts of `stops.rs`. `arcade` and `learned` ride too, once per seed, as
 //! N = 0; `learned` and `guided` with the network in `--model` (the project's by default).
 
+mod args;
 mod stops;
 
-use std::collections::HashSet;
-use std::path::PathBuf;
 use std::sync::{Arc, OnceLock};
 
-use cpbp_core::bike::Placement;
-use cpbp_core::control::learned::{project_model, LoadedPolicy};
+use cpbp_core::bike::{DriveInput, Placement};
+use cpbp_core::control::learned::LoadedPolicy;
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -29,23 +30,13 @@ use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
 
-const MANOEUVRES: [&str; 5] = ["turn", "slalom", "reversals", "push", "walk"];
+use args::{parse, USAGE};
+
+const MANOEUVRES: [&str; 6] = ["turn", "carve", "slalom", "reversals", "push", "walk"];
 pub(crate) const STEPS_PER_SECOND: f64 = 30.0;
 
 fn scenario_names() -> Vec<&'static str> {
     MANOEUVRES.into_iter().chain(stops::SCENARIOS).collect()
-}
-
-struct Args {
-    controllers: Vec<ControllerKind>,
-    counts: Vec<usize>,
-    seeds: Vec<u64>,
-    scenarios: Vec<&'static str>,
-    physics: PhysicsModel,
-    /// Rows already saved ("scenario,controller,N,seed,physics"): not ridden again.
-    skip: HashSet<String>,
-    /// The learned network's model file (learned, guided).
-    model: PathBuf,
 }
 
 /// The network the learned and guided controllers ride with, loaded once.
@@ -67,18 +58,6 @@ pub(crate) struct Outcome {
     pub metric: f64,
     pub planning_ms: f64,
 }
-
-const USAGE: &str = "cpbp-scenarios [--controllers K,K…] [--counts N,N…] [--seeds FIRST-LAST] \
-[--scenarios S,S…] [--physics classic|exact] [--skip FILE] [--model FILE]";
-const FLAGS: [&str; 7] = [
-    "--model",
-    "--controllers",
-    "--counts",
-    "--seeds",
-    "--scenarios",
-    "--physics",
-    "--skip",
-];
 
 fn main() {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
@@ -135,90 +114,6 @@ fn main() {
     }
 }
 
-fn parse(arguments: Vec<String>) -> Result<Args, String> {
-    // Anything but a known flag and its value is refused, not ignored: a mistyped flag
-    // would otherwise ride the defaults for an hour.
-    for (i, argument) in arguments.iter().enumerate() {
-        let is_value = i > 0 && FLAGS.contains(&arguments[i - 1].as_str());
-        if !is_value && !FLAGS.contains(&argument.as_str()) {
-            return Err(format!("unknown argument {argument}; usage: {USAGE}"));
-        }
-    }
-    let value = |flag: &str| {
-        arguments
-            .iter()
-            .position(|a| a == flag)
-            .map(|i| {
-                arguments
-                    .get(i + 1)
-                    .cloned()
-                    .ok_or(format!("{flag} needs a value"))
-            })
-            .transpose()
-    };
-    let controllers = value("--controllers")?
-        .unwrap_or("combined,optimizer,sampling,mppi".into())
-        .split(',')
-        .map(|name| {
-            ControllerKind::from_name(name)
-                .filter(|k| k.offered())
-                .ok_or(format!("not a controller players pick: {name}"))
-        })
-        .collect::<Result<_, _>>()?;
-    let counts = value("--counts")?
-        .unwrap_or("5,10,20".into())
-        .split(',')
-        .map(|n| {
-            let limit = cpbp_core::ride::limits::TRAJECTORIES;
-            match n.parse::<usize>() {
-                Ok(n) if (limit.min..=limit.max).contains(&(n as f64)) => Ok(n),
-                _ => Err(format!(
-                    "trajectory counts are {}–{}, not {n}",
-                    limit.min, limit.max
-                )),
-            }
-        })
-        .collect::<Result<_, _>>()?;
-    let seeds = value("--seeds")?.unwrap_or("0-9".into());
-    let (first, last) = seeds.split_once('-').unwrap_or((&seeds, &seeds));
-    let (first, last): (u64, u64) = match (first.parse(), last.parse()) {
-        (Ok(a), Ok(b)) if a <= b => (a, b),
-        _ => return Err(format!("--seeds is FIRST-LAST, not {seeds}")),
-    };
-    let names = scenario_names();
-    let scenarios = value("--scenarios")?
-        .unwrap_or(MANOEUVRES.join(","))
-        .split(',')
-        .map(|name| {
-            names
-                .iter()
-                .copied()
-                .find(|s| *s == name)
-                .ok_or(format!("scenarios are {}, not {name}", names.join(", ")))
-        })
-        .collect::<Result<_, _>>()?;
-    let physics = value("--physics")?.unwrap_or("exact".into());
-    let physics = PhysicsModel::from_name(&physics)
-        .ok_or(format!("--physics is classic or exact, not {physics}"))?;
-    let skip = match value("--skip")? {
-        Some(path) => std::fs::read_to_string(&path)
-            .map_err(|e| format!("cannot read {path}: {e}"))?
-            .lines()
-            .map(|line| line.splitn(6, ',').take(5).collect::<Vec<_>>().join(","))
-            .collect(),
-        None => HashSet::new(),
-    };
-    Ok(Args {
-        controllers,
-        counts,
-        seeds: (first..=last).collect(),
-        scenarios,
-        physics,
-        skip,
-        model: value("--model")?.map_or_else(project_model, PathBuf::from),
-    })
-}
-
 /// A number in [0, 1) drawn from `seed` for `what`: the same for every controller.
 fn draw(seed: u64, what: u64) -> f64 {
     let mut z = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ what.wrapping_mul(0xD1B5_4A32_D192_ED03);
@@ -232,6 +127,7 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
         "walk" => 8.0,
         "push" => 15.0,
         "reversals" => 25.0,
+        "carve" => 40.0,
         _ => 20.0,
     };
     let mut ride = new_ride(rider, kmh, 0.0);
@@ -260,6 +156,41 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
             run(&mut ride, 5.0, want, &mut |r| {
                 samples.push(lean_of(r) - want)
             });
+        }
+        "carve" => {
+            // As the game's player rides it: the trigger at 50–100 % of the default motor
+            // share (0.6) towards the 40 km/h setting, then after 3–5 s the stick 0.3–0.7
+            // over, which asks for the 30° limit from about 25 km/h on.
+            ride.set_intent(Intent {
+                drive: DriveInput {
+                    throttle: 0.6 * (0.5 + 0.5 * draw(rider.seed, 2)),
+                    ..ride.intent().drive
+                },
+                ..*ride.intent()
+            });
+            run(&mut ride, 3.0 + 2.0 * draw(rider.seed, 3), 0.0, &mut |_| {});
+            let side = if draw(rider.seed, 1) < 0.5 { 1.0 } else { -1.0 };
+            ride.set_intent(Intent {
+                lean: None,
+                turn: (0.3 + 0.4 * draw(rider.seed, 4)) * side,
+                ..*ride.intent()
+            });
+            // The track's rollers and kerbs, as a sideways knock 3 s into the turn.
+            let knock = (3.0 * STEPS_PER_SECOND) as usize;
+            for step in 0..(8.0 * STEPS_PER_SECOND) as usize {
+                if step == knock {
+                    let sim = ride.sim();
+                    let forward = sim.bike().frame_rotation(sim.world()) * DVec3::X;
+                    let side = forward.cross(sim.up()).normalize_or_zero();
+                    let sign = if draw(rider.seed, 5) < 0.5 { 1.0 } else { -1.0 };
+                    ride.push(side * sign * (20.0 + 60.0 * draw(rider.seed, 6)));
+                }
+                ride.step();
+                planning.extend(ride.plan().map(|p| p.planning_ms));
+                if step >= (2.0 * STEPS_PER_SECOND) as usize {
+                    samples.push(lean_of(&ride) - ride.desired_lean());
+                }
+            }
         }
         "slalom" | "reversals" => {
             run(&mut ride, 3.0, 0.0, &mut |_| {});
@@ -297,7 +228,7 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
         }
     }
     let metric = match scenario {
-        "turn" | "slalom" | "reversals" => (samples.iter().map(|e| e * e).sum::<f64>()
+        "turn" | "carve" | "slalom" | "reversals" => (samples.iter().map(|e| e * e).sum::<f64>()
             / samples.len() as f64)
             .sqrt()
             .to_degrees(),
@@ -355,30 +286,4 @@ pub(crate) fn new_ride(rider: Rider, kmh: f64, slope: f64) -> Ride {
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(kmh));
     ride
-}
-
-#[cfg(test)]
-mod tests {
-    use super::parse;
-
-    fn words(line: &str) -> Vec<String> {
-        line.split_whitespace().map(String::from).collect()
-    }
-
-    #[test]
-    fn flags_and_their_values_parse_and_anything_else_is_refused() {
-        let args = parse(words("--counts 5,15 --seeds 2-4 --scenarios stop40")).unwrap();
-        assert_eq!(args.counts, vec![5, 15]);
-        assert_eq!(args.seeds, vec![2, 3, 4]);
-        assert_eq!(args.scenarios, vec!["stop40"]);
-        for wrong in [
-            "--seed 3",
-            "stop40",
-            "--counts 0",
-            "--counts 300",
-            "--seeds 4-2",
-        ] {
-            assert!(parse(words(wrong)).is_err(), "{wrong} was accepted");
-        }
-    }
 }
