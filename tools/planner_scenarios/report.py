@@ -11,7 +11,7 @@ from .stats import paired_difference, t_interval
 
 METRICS = {
     "turn": "RMS lean error in a 15° turn at 20 km/h (°)",
-    "carve": "RMS lean error holding the 30° limit for 8 s at 37 km/h (°)",
+    "carve": "RMS lean error at the 30° limit for 8 s near 40 km/h, knocked 3 s in (°)",
     "slalom": "RMS lean error in a ±15° slalom at 20 km/h (°)",
     "reversals": "settled RMS lean error in ±15° reversals every 2 s at 25 km/h (°)",
     "push": "largest lean in the 5 s after a 100–250 N·s shove at 15 km/h (°)",

@@ -8,8 +8,9 @@
 //!
 //! Scenarios: `turn` (3 s straight at 20 km/h, then 15° right; the RMS lean error over
 //! the last 5 s), `carve` (as a player carves a long bend: part throttle towards 40 km/h
-//! for 3–5 s, then the stick 0.3–0.7 over for 8 s, asking the 30° limit; the RMS error
-//! from the lean asked over the last 6 s), `slalom` (20 km/h, ±15° every 2 s for 12 s; RMS over the last 10 s),
+//! for 3–5 s, then the stick 0.3–0.7 over for 8 s, asking the 30° limit, with a
+//! sideways knock of 20–80 N·s 3 s in; the RMS error from the lean asked over the last
+//! 6 s), `slalom` (20 km/h, ±15° every 2 s for 12 s; RMS over the last 10 s),
 //! `reversals` (25 km/h, ±15° every 2 s for 12 s; the settled error: RMS over the second
 //! second of each gate after the first, once the lean has swung over), `push` (15 km/h, a
 //! sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h); the
