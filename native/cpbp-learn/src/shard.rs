@@ -62,7 +62,8 @@ pub fn write(
         ("driver".into(), records.driver.clone()),
         ("crashed".into(), records.crashed.to_string()),
     ]);
-    let bytes = safetensors::serialize(views, Some(meta)).map_err(std::io::Error::other)?;
+    let bytes = cpbp_core::control::learned::serialize_sorted(views, meta)
+        .map_err(std::io::Error::other)?;
     let path = shard_path(dir, episode.seed);
     let aside = path.with_extension("partial");
     let mut file = std::fs::File::create(&aside)?;

@@ -6,6 +6,7 @@
 mod features;
 mod network;
 mod shared;
+mod sorted_header;
 #[cfg(test)]
 mod tests;
 
@@ -15,6 +16,7 @@ pub use network::{
     NonFiniteFeature, PolicyNetwork, MODEL_FORMAT, MODEL_FORMAT_VERSION, OUTPUT_COUNT,
 };
 pub use shared::{project_model, project_policy, LoadedPolicy, MODEL_PATH};
+pub use sorted_header::{serialize_sorted, sort_header};
 
 use glam::DVec3;
 

@@ -231,7 +231,7 @@ impl PolicyNetwork {
             ("activation".into(), "tanh".into()),
             ("training".into(), p.training.clone()),
         ]);
-        safetensors::serialize(views, Some(meta)).expect("checked shapes serialise")
+        super::serialize_sorted(views, meta).expect("checked shapes serialise")
     }
 
     pub fn parts(&self) -> &NetworkParts {

@@ -254,3 +254,13 @@ fn the_features_of_a_bike_at_rest_read_as_expected() {
         assert_eq!(controls.get(entry), expected.get(entry));
     }
 }
+
+#[test]
+fn the_committed_model_is_in_the_form_make_train_writes_it() {
+    // Sorted header: a rerun of `make train` can be compared with it byte for byte.
+    let bytes = std::fs::read(super::project_model()).expect("the committed model");
+    assert!(
+        super::sort_header(bytes.clone()) == bytes,
+        "header not sorted"
+    );
+}
