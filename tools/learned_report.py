@@ -131,6 +131,13 @@ def scenario_tables(path: Path) -> list[str]:
                     them = f"{reference[0]}{f'-{reference[1]}' if reference[1] else ''}"
                     difference = (f"{them} − this: "
                                   f"{paired_difference(ref_up, up).text(2)}")
+                    shared = mine.keys() & theirs.keys()
+                    only_them = sum(theirs[s]["fell"] and not mine[s]["fell"] for s in shared)
+                    only_this = sum(mine[s]["fell"] and not theirs[s]["fell"] for s in shared)
+                    if only_them or only_this:
+                        difference += (f"; fell only {them}: {only_them}, only this: "
+                                       f"{only_this} (McNemar p = "
+                                       f"{mcnemar_exact(only_them, only_this):.3f})")
                 name = f"{rider[0]}{f'-{rider[1]}' if rider[1] else ''}"
                 lines.append(f"| {scenario} | {name} | {len(mine)} | "
                              f"{sum(r['fell'] for r in mine.values())} | "
@@ -178,7 +185,7 @@ def main() -> int:
         "",
         *experiment_tables(Path("docs/experiment/results.csv")),
         "",
-        "## Scenarios (exact physics, seeds 0–9)",
+        "## Scenarios (exact physics, seeds from 0: the rides column says how many)",
         "",
         *scenario_tables(Path("docs/scenarios/scenarios.csv")),
         "",

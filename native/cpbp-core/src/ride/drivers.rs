@@ -4,7 +4,7 @@
 use super::auto_trajectories::AutoTrajectories;
 use super::controller::{Controller, Intent, PlannerSettings, RideState};
 use crate::bike::{manual_controls, Controls};
-use crate::control::learned::{LoadedPolicy, NonFiniteFeature, FEATURE_NAMES};
+use crate::control::learned::{LeanTrim, LoadedPolicy, NonFiniteFeature, FEATURE_NAMES};
 use crate::control::{
     AnytimeOptimizer, ArcadeController, Follows, HandoverStats, Plan, PlannerSpec,
 };
@@ -32,10 +32,12 @@ impl Controller for ArcadeDriver {
 
 /// The learned network (issue 34) on the master. The arcade controller keeps its memory
 /// in step on every step and drives instead while there is no usable model, or at a step
-/// whose state the network cannot read.
+/// whose state the network cannot read. The trim gives the network the integral action it
+/// lacks (`LeanTrim`).
 #[derive(Default)]
 pub struct LearnedDriver {
     arcade: ArcadeController,
+    trim: LeanTrim,
     /// Why the arcade controller drove the last step, if it did.
     problem: Option<String>,
 }
@@ -68,7 +70,14 @@ impl Controller for LearnedDriver {
             return arcade;
         };
         let sim = state.sim;
-        match network.controls(sim.bike(), sim.world(), &state.goal, sim.up()) {
+        let (bike, world, up) = (sim.bike(), sim.world(), sim.up());
+        let goal = self.trim.trimmed(
+            &state.goal,
+            bike.lean(world, up),
+            bike.forward_speed(world, up),
+            sim.config().control_dt,
+        );
+        match network.controls(bike, world, &goal, up) {
             Ok(controls) => {
                 self.problem = None;
                 Controls::sanitized(controls.values()).0
@@ -88,6 +97,7 @@ impl Controller for LearnedDriver {
 
     fn reset(&mut self) {
         self.arcade.reset();
+        self.trim.reset();
         self.problem = None;
     }
 

@@ -9,6 +9,7 @@ mod shared;
 mod sorted_header;
 #[cfg(test)]
 mod tests;
+mod trim;
 
 pub use features::{features, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES};
 pub use network::{
@@ -17,6 +18,7 @@ pub use network::{
 };
 pub use shared::{project_model, project_policy, LoadedPolicy, MODEL_PATH};
 pub use sorted_header::{serialize_sorted, sort_header};
+pub use trim::{LeanTrim, TRIM_GAIN, TRIM_LIMIT, TRIM_MIN_SPEED, TRIM_WINDOW};
 
 use glam::DVec3;
 
