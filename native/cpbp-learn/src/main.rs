@@ -27,7 +27,7 @@ use cpbp_core::control::learned::{
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
-[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving]\n       \
+[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves]\n       \
 cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S] \
 [--hidden W,W…] [--weight-decay D]\n       \
 cpbp-learn summary --out DIR";
@@ -95,8 +95,9 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
             "--seconds" => settings.seconds = number("--seconds")?.clamp(1.0, 600.0),
             "--noise" => settings.noise = number("--noise")?.min(0.5),
             "--family" => {
-                settings.family = episode::Family::from_name(value)
-                    .ok_or_else(|| format!("--family is mixed, logs or carving, not '{value}'"))?;
+                settings.family = episode::Family::from_name(value).ok_or_else(|| {
+                    format!("--family is mixed, logs, carving or shoves, not '{value}'")
+                })?;
             }
             "--jobs" => jobs = number("--jobs")?.max(1.0) as usize,
             "--learner" => {

@@ -238,4 +238,46 @@ fn adding_a_family_leaves_the_others_draws_as_they_were() {
     assert_eq!(logs.ground, Ground::Logs(44));
     assert!((logs.segments[0].drive.max_speed - 6.056304).abs() < 1e-6);
     assert!((logs.heading - 3.349467).abs() < 1e-6, "{}", logs.heading);
+    let carving = ExpertSettings {
+        family: Family::Carving,
+        ..ExpertSettings::default()
+    };
+    let carving = Episode::draw(70_002, &carving);
+    assert!(matches!(carving.ground, Ground::Bumps(h) if (h - 0.040545).abs() < 1e-6));
+    assert_eq!(carving.segments.len(), 4);
+    assert!(
+        (carving.heading - 3.452051).abs() < 1e-6,
+        "{}",
+        carving.heading
+    );
+    let drive = carving.segments[0].drive;
+    assert!((drive.max_speed - 7.641776).abs() < 1e-6 && (drive.throttle - 0.667289).abs() < 1e-6);
+}
+
+#[test]
+fn a_shoves_episode_shoves_hard_and_often_at_a_riding_speed() {
+    let settings = ExpertSettings {
+        family: Family::Shoves,
+        ..ExpertSettings::default()
+    };
+    for seed in [1, 2, 3, 80_001] {
+        let episode = Episode::draw(seed, &settings);
+        assert_eq!(episode, Episode::draw(seed, &settings));
+        let first = episode.segments[0];
+        assert_eq!((first.start, first.push), (0, 0.0), "up to speed first");
+        let kmh = first.drive.max_speed * 3.6;
+        assert!((8.0..35.0).contains(&kmh) && first.drive.throttle >= 0.6);
+        let shoves = &episode.segments[1..];
+        assert!(shoves.len() >= 2, "{} shoves", shoves.len());
+        for pair in shoves.windows(2) {
+            let gap = pair[1].start - pair[0].start;
+            assert!((60..120).contains(&gap), "{gap} steps between shoves");
+        }
+        for shove in shoves {
+            assert!((60.0..260.0).contains(&shove.push.abs()), "{}", shove.push);
+            assert!(shove.stick.abs() < 0.4 && shove.lean.is_none());
+            assert_eq!(shove.drive, first.drive, "one speed all the way");
+        }
+        assert!(episode.simulation().crashed().is_none());
+    }
 }

@@ -2,7 +2,7 @@
 //! against a plan's, with the project's model as `make train` left it.
 
 use cpbp_core::bike::DriveInput;
-use cpbp_core::control::learned::project_policy;
+use cpbp_core::control::learned::{features, project_policy};
 use cpbp_core::control::Goal;
 use cpbp_core::ride::ControllerKind;
 use cpbp_core::simulation::Simulation;
@@ -37,6 +37,12 @@ pub fn inference_cost(sim: &Simulation, row: impl Fn(&str, String)) {
         "learned controller: features + network, one control step",
         format!("{step_us:.2} µs"),
     );
+    let features_us = median(|| {
+        time_per_call(20_000, || {
+            std::hint::black_box(features(sim.bike(), sim.world(), &goal, sim.up()));
+        })
+    });
+    row("  of which the features", format!("{features_us:.2} µs"));
     let combined_ms = planning_ms(sim, ControllerKind::COMBINED, 15, 2).0;
     row(
         "  combined N = 15 (2 threads) ÷ learned, per control step",
