@@ -15,7 +15,7 @@ from .configs import (THESIS_CONTROLLERS, THESIS_PLANNERS, THESIS_SPEEDS, TIMING
                       display_order, parse_attempts, parse_controllers, parse_counts,
                       parse_speeds, protocol_tries)
 from .fingerprint import FingerprintError, PlatformStore, fingerprint, identity, refusal
-from .results import ResultsError, ResultsFile, check_seed
+from .results import Attempt, ResultsError, ResultsFile, check_seed
 from .runner import (PROJECT_ROOT, Platform, Progress, WorkerError, cpu_description,
                      measure_planning, plan_blocks, run_blocks, worker_platform)
 from .verify import choose, parse_rows, verify
@@ -169,7 +169,7 @@ def run(args: argparse.Namespace, out: Path) -> None:
     total = sum(args.planned.values())
     missing = sum(b.count for b in blocks)
     if args.cluster is not None:
-        run_on_cluster(args, blocks, results, platform, done, total, missing)
+        run_on_cluster(args, blocks, results, platform, saved, done, total, missing)
         return
     threads = args.threads if args.threads is not None else (1 if args.jobs > 1 else 0)
     counts = sorted(set(args.planned.values()))
@@ -178,12 +178,13 @@ def run(args: argparse.Namespace, out: Path) -> None:
           f"already in {results.path}, {missing} to run with {args.jobs} workers "
           f"({threads or 'all'} planning thread(s) each)", file=sys.stderr, flush=True)
     progress = Progress(total=total, jobs=args.jobs, done_before=total - missing)
+    progress.remember(saved)
     run_blocks(blocks, results, progress, args.seed, args.jobs, threads, out / WORKER_LOG,
                platform)
 
 
 def run_on_cluster(args: argparse.Namespace, blocks, results: ResultsFile, platform: Platform,
-                   done: set, total: int, missing: int) -> None:
+                   saved: list[Attempt], done: set, total: int, missing: int) -> None:
     """The run's blocks as tasks of a Dask cluster (tools/cpbp_experiment/cluster.py)."""
     from . import cluster
 
@@ -201,6 +202,7 @@ def run_on_cluster(args: argparse.Namespace, blocks, results: ResultsFile, platf
               f"({slots} worker threads, {threads} planning thread(s) each)",
               file=sys.stderr, flush=True)
         progress = Progress(total=total, jobs=slots, done_before=total - missing)
+        progress.remember(saved)
         repeated = cluster.run_blocks_on_cluster(blocks, results, progress, args.seed,
                                                  threads, platform, done, client)
         if repeated:

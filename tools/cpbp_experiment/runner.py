@@ -168,6 +168,15 @@ class Progress:
         costs.append(attempt.wall_ms)
         self.remaining[attempt.config] = self.remaining.get(attempt.config, 1) - 1
 
+    def remember(self, saved: list[Attempt]) -> None:
+        """Counts the cost of the attempts earlier runs saved into the estimate, so a
+        resumed run's ETA starts from many attempts of each configuration rather than
+        from its first few (the first attempt of a slow configuration, or one that shared
+        the machine with a build, made a 4-hour run's first ETA read 9 hours)."""
+        for attempt in saved:
+            if math.isfinite(attempt.wall_ms) and attempt.wall_ms > 0:
+                self.cost_ms.setdefault(attempt.config, []).append(attempt.wall_ms)
+
     def eta_s(self) -> float:
         """Seconds left: each configuration's mean cost so far times its attempts left. A
         planner not timed yet is guessed from the others' cost per trajectory, as the

@@ -1,8 +1,10 @@
+import math
 import unittest
 
 from cpbp_experiment.cli import planned_tries
 from cpbp_experiment.configs import (Config, Controller, parse_controllers, parse_speeds,
                                      protocol_tries)
+from cpbp_experiment.results import Attempt
 from cpbp_experiment.runner import ARCADE_BLOCK, PLANNER_BLOCK, Progress, plan_blocks
 
 ARCADE = Controller("arcade")
@@ -101,6 +103,19 @@ class ProgressTest(unittest.TestCase):
         progress.cost_ms = {Config(15, COMBINED): [5000.0]}
         # 10 × 5 s for N = 5, and 10 × 15 s guessed for N = 15, on 2 workers.
         self.assertAlmostEqual(progress.eta_s(), (50 + 150) / 2)
+
+    def test_eta_counts_the_attempts_earlier_runs_saved(self):
+        config = Config(15, COMBINED)
+        progress = Progress(total=40, jobs=2, done_before=30)
+        progress.remaining = {config: 10}
+        earlier = [Attempt(config, i, 1000 + i, "goal", 6.0, 36.0, 180, 12.0, 4000.0)
+                   for i in range(29)]
+        legacy = Attempt(config, 29, 1029, "goal", 6.0, 36.0, 180, 12.0, math.nan)
+        progress.remember(earlier + [legacy])
+        # This run's first attempt shared the machine and took 8 s, twice the others: the
+        # 9 left cost the mean of all 30 timed (the legacy row has no time), on 2 workers.
+        progress.record(Attempt(config, 30, 1030, "goal", 6.0, 36.0, 180, 12.0, 8000.0))
+        self.assertAlmostEqual(progress.eta_s(), 9 * (29 * 4 + 8) / 30 / 2)
 
 
 if __name__ == "__main__":
