@@ -16,8 +16,9 @@ from .configs import (THESIS_CONTROLLERS, THESIS_PLANNERS, THESIS_SPEEDS, TIMING
                       parse_speeds, protocol_tries)
 from .fingerprint import FingerprintError, PlatformStore, fingerprint, identity, refusal
 from .results import Attempt, ResultsError, ResultsFile, check_seed
-from .runner import (PROJECT_ROOT, Platform, Progress, WorkerError, cpu_description,
-                     measure_planning, plan_blocks, run_blocks, worker_platform)
+from .progress import Progress
+from .runner import (PROJECT_ROOT, Platform, WorkerError, cpu_description, measure_planning,
+                     plan_blocks, run_blocks, worker_platform)
 from .verify import choose, parse_rows, verify
 
 WORKER_LOG = "workers.log"
@@ -169,7 +170,7 @@ def run(args: argparse.Namespace, out: Path) -> None:
     total = sum(args.planned.values())
     missing = sum(b.count for b in blocks)
     if args.cluster is not None:
-        run_on_cluster(args, blocks, results, platform, saved, done, total, missing)
+        run_on_cluster(args, blocks, results, platform, saved, total, missing)
         return
     threads = args.threads if args.threads is not None else (1 if args.jobs > 1 else 0)
     counts = sorted(set(args.planned.values()))
@@ -184,7 +185,7 @@ def run(args: argparse.Namespace, out: Path) -> None:
 
 
 def run_on_cluster(args: argparse.Namespace, blocks, results: ResultsFile, platform: Platform,
-                   saved: list[Attempt], done: set, total: int, missing: int) -> None:
+                   saved: list[Attempt], total: int, missing: int) -> None:
     """The run's blocks as tasks of a Dask cluster (tools/cpbp_experiment/cluster.py)."""
     from . import cluster
 
@@ -204,7 +205,8 @@ def run_on_cluster(args: argparse.Namespace, blocks, results: ResultsFile, platf
         progress = Progress(total=total, jobs=slots, done_before=total - missing)
         progress.remember(saved)
         repeated = cluster.run_blocks_on_cluster(blocks, results, progress, args.seed,
-                                                 threads, platform, done, client)
+                                                 threads, platform,
+                                                 {a.key for a in saved}, client)
         if repeated:
             print(f"experiment: {repeated} attempts ridden again after a lost worker were "
                   "saved once", file=sys.stderr)

@@ -23,8 +23,9 @@ import uuid
 from dataclasses import dataclass
 
 from .fingerprint import COMPARED, fingerprint, identity
-from .runner import (PROJECT_ROOT, SILENCE_LIMIT_S, Block, Platform, Progress, WorkerError,
-                     _attempt_of, _tail, block_arguments, start_worker)
+from .progress import Progress
+from .runner import (PROJECT_ROOT, SILENCE_LIMIT_S, Block, Platform, WorkerError, _attempt_of,
+                     _tail, block_arguments, start_worker)
 from .results import ResultsFile
 
 # How often the driver looks for lines and finished tasks.

@@ -9,7 +9,8 @@ from pathlib import Path
 
 from .configs import parse_attempts
 from .results import Attempt, ResultsError, ResultsFile
-from .runner import Block, Platform, Progress, plan_blocks, run_blocks
+from .progress import Progress
+from .runner import Block, Platform, plan_blocks, run_blocks
 
 
 @dataclass

@@ -10,7 +10,8 @@ from contextlib import redirect_stderr
 from pathlib import Path
 
 from cpbp_experiment.cluster import ClusterRun
-from cpbp_experiment.runner import Block, Platform, Progress, WorkerError
+from cpbp_experiment.progress import Progress
+from cpbp_experiment.runner import Block, Platform, WorkerError
 from cpbp_experiment.results import ResultsFile
 from cpbp_experiment.tests.test_workers import CONFIG, try_line
 

@@ -5,7 +5,8 @@ from cpbp_experiment.cli import planned_tries
 from cpbp_experiment.configs import (Config, Controller, parse_controllers, parse_speeds,
                                      protocol_tries)
 from cpbp_experiment.results import Attempt
-from cpbp_experiment.runner import ARCADE_BLOCK, PLANNER_BLOCK, Progress, plan_blocks
+from cpbp_experiment.progress import Progress
+from cpbp_experiment.runner import ARCADE_BLOCK, PLANNER_BLOCK, plan_blocks
 
 ARCADE = Controller("arcade")
 COMBINED = Controller("combined", 5)

@@ -8,7 +8,8 @@ from unittest import mock
 from cpbp_experiment import runner
 from cpbp_experiment.configs import Config, Controller
 from cpbp_experiment.results import ResultsFile
-from cpbp_experiment.runner import Block, Platform, Progress, WorkerError, run_blocks
+from cpbp_experiment.progress import Progress
+from cpbp_experiment.runner import Block, Platform, WorkerError, run_blocks
 
 CONFIG = Config(15, Controller("combined", 5))
 WORKER_PLATFORM = {"c_library": "glibc 2.43", "math_path": "fma"}
