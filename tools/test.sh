@@ -46,11 +46,12 @@ godot_suites() {
 step "rustfmt"              tools/cargo fmt --all --check
 step "clippy"               tools/cargo clippy --workspace --all-targets --quiet -- -D warnings
 step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot --exclude cpbp-learn
-# The learned controller's pipeline (ride, train, the game's network equal to training's):
-# candle trains at a usable speed only in a release build.
-step "learned controller pipeline (release)" tools/cargo test --release -p cpbp-learn
-# The controllers' ride tests simulate minutes of planning: fast only in a release build.
-step "controller rides (release)" tools/cargo test --release -p cpbp-core --test optimizer --test anytime --test reproducible --test ride --test physics_models --test sampling_planners --test rider_position --test suspension --test wheelie_control --test feet --test air_control --test front_brake --test stopping --test contact_patch --test falling_off --test auto_trajectories --test learned
+# The learned controller's pipeline (ride, train, the game's network equal to training's)
+# and the controllers' ride tests (minutes of planning) are fast only in a release build.
+# One cargo run for both packages: cargo resolves features per run, so two runs would
+# build cpbp-core and its dependencies in release twice (about 5 minutes on CI).
+step "learned pipeline and controller rides (release)" tools/cargo test --release \
+  -p cpbp-learn -p cpbp-core --bin cpbp-learn --test optimizer --test anytime --test reproducible --test ride --test physics_models --test sampling_planners --test rider_position --test suspension --test wheelie_control --test feet --test air_control --test front_brake --test stopping --test contact_patch --test falling_off --test auto_trajectories --test learned
 # The benchmark bicycle built from the game's bodies and tyres is the paper's bicycle.
 step "bicycle benchmark"    env PYTHONPATH=tools .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
 # The experiment's statistics, results file and scheduling (no Godot needed).

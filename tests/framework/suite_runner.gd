@@ -106,6 +106,7 @@ func _run_suite(path: String, filter: String) -> void:
 		suite.free()
 		return
 	print("%s" % path)
+	var started_msec := Time.get_ticks_msec()
 	add_child(suite)
 	await suite.before_all()
 	_fail_on_errors(path, "before_all", _capture.take())
@@ -115,6 +116,8 @@ func _run_suite(path: String, filter: String) -> void:
 	_fail_on_errors(path, "after_all", _capture.take())
 	suite.queue_free()
 	await get_tree().process_frame
+	# Wall time per suite, to see where a slow CI run spends its minutes.
+	print("  %d tests in %.1f s" % [tests.size(), (Time.get_ticks_msec() - started_msec) / 1000.0])
 
 
 func _test_names(script: GDScript, path: String, filter: String) -> PackedStringArray:

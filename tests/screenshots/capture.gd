@@ -12,9 +12,23 @@ extends Node
 ## found by name, with one string argument, at that frame; repeatable), and
 ## `--copy=SOURCE>user://DEST` (a file copied into the scratch user folder before the
 ## scene loads: a ghost to race, say; repeatable).
+##
+## Only the last DRAWN_FRAMES frames are drawn: the game's logic, physics and controllers
+## run every frame as usual, but drawing a 1280×720 frame in software (llvmpipe under
+## Xvfb) costs about 0.2 s, far more than the frame's simulation, and only the last
+## picture is kept. Undrawn frames are paced (UNDRAWN_FPS) so the planners, which plan in
+## the background against the clock, still deliver every plan in time: racing ahead
+## would make plans late and ride another ride than the one drawn frames give. The full
+## ride is drawn frame by frame by the sound check's recording.
 
 const MIN_DISTINCT_COLOURS := 12
 const MIN_LUMINANCE_SPREAD := 0.04
+## Enough drawn frames before the picture for the renderer to warm up (shader pipelines,
+## shadow maps) as it would in play.
+const DRAWN_FRAMES := 20
+## A third of the game's 60 Hz: 50 ms a frame leaves a planner's plan (under 10 ms at the
+## game's N on an idle core) in time even on a busy two-core CI machine.
+const UNDRAWN_FPS := 20
 
 
 func _ready() -> void:
@@ -47,7 +61,12 @@ func _ready() -> void:
 		var pair := assignment.split("=", true, 1)
 		root.set(pair[0], str_to_var(pair[1]) if str_to_var(pair[1]) != null else pair[1])
 	add_child(root)
-	for frame: int in int(options.frames):
+	var frames := int(options.frames)
+	RenderingServer.render_loop_enabled = frames <= DRAWN_FRAMES
+	var frame_began := Time.get_ticks_usec()
+	for frame: int in frames:
+		if frame == frames - DRAWN_FRAMES:
+			RenderingServer.render_loop_enabled = true
 		for held: String in staging["hold"]:
 			_hold(held, frame)
 		for tap: String in staging["tap"]:
@@ -59,6 +78,8 @@ func _ready() -> void:
 			if at.size() == 2 and int(at[1]) == frame:
 				_call(root, at[0])
 		await get_tree().process_frame
+		if not RenderingServer.render_loop_enabled:
+			frame_began = _pace(frame_began)
 	await RenderingServer.frame_post_draw
 	var image := get_viewport().get_texture().get_image()
 	DirAccess.make_dir_recursive_absolute(String(options.out).get_base_dir())
@@ -82,6 +103,15 @@ func _ready() -> void:
 		)
 	)
 	_quit_with("", 1 if blank else 0)
+
+
+## Sleeps out the rest of an undrawn frame begun at `began_usec` (Engine.max_fps does not
+## hold back a --fixed-fps run); returns when the next one begins.
+func _pace(began_usec: int) -> int:
+	var left := began_usec + 1_000_000 / UNDRAWN_FPS - Time.get_ticks_usec()
+	if left > 0:
+		OS.delay_usec(left)
+	return Time.get_ticks_usec()
 
 
 ## Calls `node:method:argument` on the node of that name under `root`.

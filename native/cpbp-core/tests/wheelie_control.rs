@@ -94,6 +94,10 @@ fn wheelie(kind: ControllerKind, seconds: f64, seed: u64) -> (f64, f64) {
 }
 
 #[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
 fn the_planner_holds_a_wheelie_near_the_balance_point() {
     // The balance point of this bike with the rider back is about 58° of pitch. How long
     // one wheelie lasts depends on the planner's draws (0.6–4.4 s above 40° over seeds
@@ -116,6 +120,10 @@ fn the_planner_holds_a_wheelie_near_the_balance_point() {
 }
 
 #[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
 fn every_controller_lifts_the_front_and_comes_down_safely() {
     for kind in [ControllerKind::ARCADE, ControllerKind::OPTIMIZER] {
         let (_, highest) = wheelie(kind, 6.0, 2015);
@@ -127,6 +135,10 @@ fn every_controller_lifts_the_front_and_comes_down_safely() {
 }
 
 #[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
 fn releasing_the_stick_puts_the_front_down() {
     let mut ride = common::ride_in(PhysicsModel::Exact, ControllerKind::COMBINED, 12.0, 10);
     common::ride(&mut ride, 2.0, 0.0);
@@ -179,6 +191,10 @@ fn ride_at_a_platform(kind: ControllerKind, wheelie: bool) -> DVec3 {
 }
 
 #[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
 fn a_wheelie_lifts_the_bike_onto_a_platform_a_wheel_rolled_into_stops_at() {
     let on_top = PLATFORM_HEIGHT + BikeParams::default().wheel_radius;
     for kind in [ControllerKind::COMBINED, ControllerKind::ARCADE] {
