@@ -51,7 +51,7 @@ step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot --
 # One cargo run for both packages: cargo resolves features per run, so two runs would
 # build cpbp-core and its dependencies in release twice (about 5 minutes on CI).
 step "learned pipeline and controller rides (release)" tools/cargo test --release \
-  -p cpbp-learn -p cpbp-core --bin cpbp-learn --test optimizer --test anytime --test reproducible --test ride --test physics_models --test sampling_planners --test rider_position --test suspension --test wheelie_control --test feet --test air_control --test front_brake --test stopping --test contact_patch --test falling_off --test auto_trajectories --test learned
+  -p cpbp-learn -p cpbp-core --bin cpbp-learn --test rides --test auto_trajectories
 # The benchmark bicycle built from the game's bodies and tyres is the paper's bicycle.
 step "bicycle benchmark"    env PYTHONPATH=tools .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
 # The experiment's statistics, results file and scheduling (no Godot needed).

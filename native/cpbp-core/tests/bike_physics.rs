@@ -50,7 +50,7 @@ fn the_model_weighs_a_light_motorcycle_and_an_adult() {
 
 #[test]
 fn placed_upright_at_rest_it_settles_without_jitter_or_drift() {
-    // Without the rider's feet, which would let it settle onto one (`tests/feet.rs`):
+    // Without the rider's feet, which would let it settle onto one (`tests/rides/feet.rs`):
     // balanced on its wheels alone it must stay exactly upright.
     let mut world = World::new(DVec3::new(0.0, -9.81, 0.0));
     world.add_plane(DVec3::new(0.0, 1.0, 0.0), 0.0);

@@ -300,7 +300,7 @@ fn a_blown_up_world_is_recovered_at_the_spawn_point() {
 
 #[test]
 fn lifting_stands_a_fallen_bike_up_where_it_lies() {
-    // Without the rider's feet, which would catch the push (`tests/feet.rs`).
+    // Without the rider's feet, which would catch the push (`tests/rides/feet.rs`).
     let config = SimulationConfig {
         bike: cpbp_core::bike::BikeParams {
             feet: None,

@@ -39,7 +39,7 @@ impl Default for Feet {
     /// A foot 0.40 m out beside the footpeg, its sole a 5 cm sphere 4.5 cm above the
     /// road with the bike upright as built: with the suspension's sag it meets the road
     /// at about 1° of lean, and the bike stands within 3° of upright on whichever foot it
-    /// leans to (`tests/feet.rs`). The leg is a propping strut, its knee locked: it
+    /// leans to (`tests/rides/feet.rs`). The leg is a propping strut, its knee locked: it
     /// gives 1 cm under 800 N (80 kN/m, damped at about critical for the bike's roll on
     /// it). At 20 kN/m the bike sank onto the leg to 10° standing on a 15° hill and a
     /// planner's hill start from there fell. The shoe grips at μ = 0.8 (rubber soles on

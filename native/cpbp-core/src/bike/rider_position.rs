@@ -35,7 +35,7 @@ pub const RIGHT_POSE: [f64; RIDER_JOINTS] =
 /// How far (m) the rider's centre of mass moves relative to the frame at full deflection,
 /// forward (x) and to the right (z): where the planners' cost asks for it, and what the
 /// poses above give (measured at 15 km/h on flat ground in the exact physics: +8 cm over
-/// the tank, −10 cm back, ±8 cm sideways; `tests/rider_position.rs` holds every
+/// the tank, −10 cm back, ±8 cm sideways; `tests/rides/rider_position.rs` holds every
 /// controller to 80 % of it).
 pub const COM_REACH_FORWARD: f64 = 0.09;
 pub const COM_REACH_RIGHT: f64 = 0.08;

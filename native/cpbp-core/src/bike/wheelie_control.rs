@@ -94,7 +94,7 @@ pub struct PitchRequest {
     /// In the air, the nose up (positive, the weight back) or down (negative, the weight
     /// forward), −1 to 1: the rear wheel spun up or braked, whose reaction pitches the
     /// bike as riders use throttle and rear brake in a jump. The rider's body alone moves
-    /// the pitch by about 3° in a 0.7 s jump, and the other way (`tests/air_control.rs`).
+    /// the pitch by about 3° in a 0.7 s jump, and the other way (`tests/rides/air_control.rs`).
     pub air: f64,
     /// How high a stoppie (0–1, the balance point over the front tyre at 1): the weight
     /// forward times the brake.

@@ -1,7 +1,7 @@
 //! The ride: one control step at a time through the one controller interface, with the
 //! start gate, the step and late-plan counts, and plans forgotten when the ride jumps.
 
-mod common;
+use crate::common;
 
 use cpbp_core::bike::Controls;
 use cpbp_core::control::PlanWait;

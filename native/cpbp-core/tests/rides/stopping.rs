@@ -3,7 +3,7 @@
 //! off without rolling back. The scenario tool (`cpbp-scenarios`, docs/scenarios) rides the
 //! same manoeuvres over many seeds; these are the checks `make test` keeps.
 
-mod common;
+use crate::common;
 
 use std::sync::Arc;
 

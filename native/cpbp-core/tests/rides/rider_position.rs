@@ -2,7 +2,7 @@
 //! mass where the player asks, keeps the bike up while it does, and lets go when the
 //! stick is released.
 
-mod common;
+use crate::common;
 
 use cpbp_core::bike::{RiderPosition, COM_REACH_FORWARD, COM_REACH_RIGHT};
 use cpbp_core::physics::PhysicsModel;

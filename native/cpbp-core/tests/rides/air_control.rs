@@ -4,7 +4,7 @@
 //! weight forward brakes it and the nose drops, as riders use throttle and rear brake in
 //! the air. The rider's body alone turns the bike only about 3°, and the other way.
 
-mod common;
+use crate::common;
 
 use cpbp_core::bike::{Part, RiderPosition};
 use cpbp_core::ride::{ControllerKind, Intent};

@@ -2,7 +2,7 @@
 //! within its travel, without bouncing the bike off the ground and with a softer jolt to
 //! the frame than the same bike rigid.
 
-mod common;
+use crate::common;
 
 use std::sync::Arc;
 

@@ -6,7 +6,7 @@
 //! planners keep the bike upright on its rear wheel, and every controller comes down
 //! safely when the wheelie topples or the stick is released.
 
-mod common;
+use crate::common;
 
 use common::pitch;
 use cpbp_core::bike::{BikeParams, Part, Placement, RiderPosition};

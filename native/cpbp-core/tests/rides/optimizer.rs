@@ -1,7 +1,7 @@
 //! The optimizer and combined controllers (C-PBP, N = 15) on flat ground. Heavy: `make
 //! test` runs these in a release build; debug builds skip them.
 
-mod common;
+use crate::common;
 
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Ride};

@@ -1,7 +1,7 @@
 //! The rider's feet (`bike::Feet`): brought to a stop the bike stands on a foot put down,
 //! indefinitely, with every controller, and pulls away when the throttle opens.
 
-mod common;
+use crate::common;
 
 use cpbp_core::bike::DriveInput;
 use cpbp_core::physics::PhysicsModel;

@@ -1,7 +1,7 @@
 //! Planning on its own thread and handing plans over at control-step boundaries.
 //! Heavy: `make test` runs these in a release build; debug builds skip them.
 
-mod common;
+use crate::common;
 
 use std::time::Duration;
 

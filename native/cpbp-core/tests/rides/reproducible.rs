@@ -3,7 +3,7 @@
 //! resumed experiments, paired comparisons and replays all lean on this.
 //! The planner rides are heavy: `make test` runs this file in a release build.
 
-mod common;
+use crate::common;
 
 use cpbp_core::ode::WorldState;
 use cpbp_core::ride::{ControllerKind, Ride};

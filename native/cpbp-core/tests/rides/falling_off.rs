@@ -3,7 +3,7 @@
 //! back in the riding pose, and a snapshot carries who is on the bike, so a replica steps
 //! exactly as the master does.
 
-mod common;
+use crate::common;
 
 use cpbp_core::bike::Part;
 use cpbp_core::physics::PhysicsModel;

@@ -1,7 +1,7 @@
 //! The baseline planners (predictive sampling and MPPI) on the systems C-PBP is tested on:
 //! the ODE pendulum, a toy whose rollouts blow up, and the bike in the game's physics.
 
-mod common;
+use crate::common;
 
 use common::pendulum::Pendulum;
 use common::{assert_rides_straight_for_20_seconds, ride_in};

@@ -3,7 +3,7 @@
 //! its rim turns at the road's speed, braking hard makes the tyres slide, and a landing's
 //! blows add up to the momentum the ground took out of the fall.
 
-mod common;
+use crate::common;
 
 use cpbp_core::bike::DriveInput;
 use cpbp_core::physics::PhysicsModel;

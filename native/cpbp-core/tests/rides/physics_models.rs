@@ -4,7 +4,7 @@
 //! two-substep rollouts predicted theirs. Heavy: `make test` runs these in a release
 //! build; debug builds skip them.
 
-mod common;
+use crate::common;
 
 use common::{
     ask_lean, assert_rides_straight_for_20_seconds, ride, ride_in,

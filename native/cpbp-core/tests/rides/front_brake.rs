@@ -2,7 +2,7 @@
 //! wheels, letting off before the rear lifts; with the rider's weight forward it holds a
 //! stoppie, the rear wheel up, and the bike stands on a foot once stopped.
 
-mod common;
+use crate::common;
 
 use cpbp_core::bike::{DriveInput, RiderPosition};
 use cpbp_core::physics::PhysicsModel;

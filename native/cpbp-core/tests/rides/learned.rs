@@ -2,7 +2,7 @@
 //! and without a model each says why while the controller it stands on drives exactly
 //! as that controller would.
 
-mod common;
+use crate::common;
 
 use cpbp_core::bike::Controls;
 use cpbp_core::control::learned::{
