@@ -277,7 +277,7 @@ static func _straight(from: Vector3, to: Vector3) -> Path3D:
 
 
 ## A lap of the track at `kmh` with `controller`: no fall, over the hills and the table,
-## and the lap counted and printed (docs/results.md quotes it).
+## and the lap counted and printed (docs/results-history.md quotes it).
 func _ride_a_lap(controller: String, kmh: float) -> void:
 	await _start(TRACK, controller)
 	_bot.speed_kmh = kmh

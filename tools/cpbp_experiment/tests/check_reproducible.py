@@ -104,8 +104,8 @@ class ReproducibleRidesTest(unittest.TestCase):
     def test_a_sample_of_the_committed_evaluation_re_rides_exactly(self):
         # Both physics models: the evaluation's classic rows and the game's exact ones. The
         # classic combined rows were ridden before the arcade controller's horizon came to
-        # shorten with speed (docs/results.md, "Lean reversals") and are to be re-ridden
-        # with the evaluation at scale; every other configuration sampled here is current.
+        # shorten with speed (docs/results-history.md, "Lean reversals") and are kept as the
+        # earlier result, not re-ridden; every other configuration sampled here is current.
         controllers = "arcade,arcade:exact,combined-5:exact"
         with tempfile.TemporaryDirectory() as directory:
             platform = worker_platform(Path(directory) / "workers.log")
