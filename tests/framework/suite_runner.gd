@@ -12,6 +12,8 @@ extends Node
 const START_MARKER := "GDScript test run started"
 const DEFAULT_DIR := "res://tests"
 const FIXTURES_DIR := "res://tests/fixtures"
+## Tests at least this long print their wall time.
+const SLOW_TEST_SECONDS := 1.0
 
 var _passed := 0
 var _failed := 0
@@ -136,14 +138,18 @@ func _run_test(suite: TestCase, path: String, test: String) -> void:
 	suite._pending_reason = ""
 	suite._expected_errors = []
 	_capture.take()
+	var started_msec := Time.get_ticks_msec()
 	await suite.before_each()
 	await suite.call(test)
 	await suite.after_each()
 	var failures := suite._failures
 	failures.append_array(_unexpected_errors(_capture.take(), suite._expected_errors))
+	# A slow test's wall time on its line, to see which rides a CI cut should look at.
+	var seconds := (Time.get_ticks_msec() - started_msec) / 1000.0
+	var took := " (%.1f s)" % seconds if seconds >= SLOW_TEST_SECONDS else ""
 	if not failures.is_empty():
 		_failed += 1
-		print("  FAIL %s" % test)
+		print("  FAIL %s%s" % [test, took])
 		for failure: String in failures:
 			print("       %s" % failure)
 			_failure_report.append("%s %s: %s" % [path, test, failure])
@@ -152,7 +158,7 @@ func _run_test(suite: TestCase, path: String, test: String) -> void:
 		print("  skip %s %s" % [test, suite._pending_reason])
 	else:
 		_passed += 1
-		print("  ok   %s" % test)
+		print("  ok   %s%s" % [test, took])
 
 
 ## Errors the test did not declare with expect_error, plus declared ones that never came.
