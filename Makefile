@@ -7,8 +7,8 @@ SHELL := bash
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-21s %s\n", $$1, $$2}'
 
-setup: ## Provision host tools, Godot 4.6, ODE and the Python tools (idempotent)
-	@tools/provision-host.sh
+setup: ## Check the machine (tools/preflight.sh), then provision Godot 4.6, ODE and the Python tools (idempotent)
+	@tools/preflight.sh
 	@tools/provision-godot.sh
 	@tools/build-ode.sh
 	@tools/provision-python.sh

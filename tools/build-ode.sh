@@ -17,9 +17,10 @@ fi
 work="$CACHE_ROOT/ode-build"
 rm -rf "$work"; mkdir -p "$work/apt/lists/partial" "$work/src"
 
-# A private apt configuration with a deb-src line for the host's suite: the host's
-# own sources are neither read nor changed.
-suite=$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")
+# A private apt configuration with a deb-src line for Debian 12 whatever the host runs:
+# every machine builds the same ODE (Debian 13 has 0.16.6, whose rollouts need not repeat
+# 0.16.2's bit for bit). The host's own sources are neither read nor changed.
+suite=bookworm
 echo "deb-src $(debian_mirror) $suite main" > "$work/apt/sources.list"
 apt_opts=(-o "Dir::Etc::SourceList=$work/apt/sources.list" -o "Dir::Etc::SourceParts=-"
           -o "Dir::State::Lists=$work/apt/lists" -o "APT::Sandbox::User=root" -qq)
@@ -30,7 +31,7 @@ dsc=$(ls "$work"/src/ode_*.dsc | head -n1)
 [ -n "$dsc" ] || die "no ODE source package found"
 (cd "$work/src" && dpkg-source --no-check -x "$(basename "$dsc")" ode >/dev/null)
 version=$(sed -n 's/^Version: \([0-9]*:\)\{0,1\}\([0-9.]*\).*/\2/p' "$dsc")
-case "$version" in "$ODE_VERSION_WANTED"*) ;; *) die "expected ODE $ODE_VERSION_WANTED, the source package is $version";; esac
+case "$version" in "$ODE_VERSION_WANTED") ;; *) die "expected ODE $ODE_VERSION_WANTED, the source package is $version";; esac
 
 # Four small patches (tools/ode-patches/, applied in order); the first three make rollouts
 # reproducible:

@@ -14,7 +14,8 @@ GODOT_ROOT_PACKAGES="godot,godot-template-release,godot-template-debug,libgl1-me
 GODOT_ROOT_KEY="$(printf '%s' "sid:$GODOT_ROOT_PACKAGES" | sha256sum | cut -c1-12)"
 GODOT_ROOT="$CACHE_ROOT/godot-root-$GODOT_ROOT_KEY"
 
-ODE_VERSION_WANTED="0.16"
+# The exact upstream version: the committed rows re-ride bit for bit only on it.
+ODE_VERSION_WANTED="0.16.2"
 # Keyed by the build recipe, so changing tools/build-ode.sh or a patch rebuilds ODE.
 ODE_RECIPE_KEY="$(cat "$PROJECT_ROOT/tools/build-ode.sh" "$PROJECT_ROOT"/tools/ode-patches/*.patch \
   | sha256sum | cut -c1-12)"

@@ -15,7 +15,7 @@ if [ -f "$GODOT_ROOT/.complete" ]; then
   exec "$(dirname "$0")/godot-root-lock.sh"
 fi
 
-command -v debootstrap >/dev/null || die "debootstrap is missing; run tools/provision-host.sh first"
+command -v debootstrap >/dev/null || die "debootstrap is missing; run make setup first"
 mirror=$(debian_mirror)
 partial="$GODOT_ROOT.partial"
 log "building the Godot 4.6 root in $GODOT_ROOT from $mirror (about a minute, ~1 GB)"

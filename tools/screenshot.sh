@@ -5,7 +5,7 @@
 source "$(dirname "$0")/common.sh"
 cd "$PROJECT_ROOT"
 scene=$1; out=$2; frames=${3:-30}
-command -v xvfb-run >/dev/null || die "xvfb-run is missing; run tools/provision-host.sh"
+command -v xvfb-run >/dev/null || die "xvfb-run is missing; run make setup"
 mkdir -p "$(dirname "$out")" build/logs
 log="build/logs/screenshot-$(basename "$out" .png).log"
 use_scratch_user_data "screenshot-$(basename "$out" .png)"

@@ -5,7 +5,7 @@
 # firing frequency and rises with speed, tyres and engine are heard, pause is silent.
 source "$(dirname "$0")/common.sh"
 cd "$PROJECT_ROOT"
-command -v xvfb-run >/dev/null || die "xvfb-run is missing; run tools/provision-host.sh"
+command -v xvfb-run >/dev/null || die "xvfb-run is missing; run make setup"
 out=build/sound
 rm -rf "$out" && mkdir -p "$out" build/logs
 log=build/logs/sound-capture.log
