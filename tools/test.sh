@@ -43,24 +43,44 @@ godot_suites() {
   tools/check-godot-log build/logs/gdscript-tests.log --test-run && return "$status"
 }
 
+# README.md's "Running the tests" lists these steps from the comment above each (the doc
+# check holds it equal): keep one comment per step saying what it checks.
+
+# The native workspace is formatted as rustfmt writes it.
 step "rustfmt"              tools/cargo fmt --all --check
+# Clippy finds nothing, warnings counted as errors, in every crate and test.
 step "clippy"               tools/cargo clippy --workspace --all-targets --quiet -- -D warnings
+# The Godot-free crates in debug: ODE's configuration and threads, bit-exact snapshots, the
+# bike's physics, terrain of every shape, hostile controls, explosion recovery, the sound.
 step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot --exclude cpbp-learn
-# The learned controller's pipeline (ride, train, the game's network equal to training's)
-# and the controllers' ride tests (minutes of planning) are fast only in a release build.
-# One cargo run for both packages: cargo resolves features per run, so two runs would
-# build cpbp-core and its dependencies in release twice (about 5 minutes on CI).
+# In release, where minutes of planning are fast: the learned controller's pipeline (ride,
+# train, the game's network equal to training's) and the controllers' ride tests. One cargo
+# run for both packages: cargo resolves features per run, so two runs would build
+# cpbp-core and its dependencies in release twice (about 5 minutes on CI).
 step "learned pipeline and controller rides (release)" tools/cargo test --release \
   -p cpbp-learn -p cpbp-core --bin cpbp-learn --test rides --test auto_trajectories
 # The benchmark bicycle built from the game's bodies and tyres is the paper's bicycle.
 step "bicycle benchmark"    env PYTHONPATH=tools .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
 # The experiment's statistics, results file and scheduling (no Godot needed).
 step "experiment unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest discover -s tools/cpbp_experiment/tests -t tools
+# The sound check's pitch tracking, on made-up signals.
 step "sound check unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest sound_check.tests.test_sound_check
+# The doc check itself, on made-up rows: a figure changed by hand fails, a missing file,
+# heading or section fails.
+step "doc check unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest doc_check.tests.test_doc_check
+# The committed docs: every marked figure equals the rows and every reference resolves.
+step "docs against the rows and the tree" tools/doc-check
+# The scenario tool's rows and paired statistics.
 step "planner scenario unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest planner_scenarios.tests.test_planner_scenarios
+# Every GDScript file passes gdlint.
 step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdlint"
+# Every GDScript file is formatted as gdformat writes it.
 step "gdformat"             bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdformat --check"
+# The GDScript runner fails a deliberately failing fixture suite and counts it right.
 step "test runner self-test" tools/test-runner-selftest.sh
+# The GDScript suites under tests/, headless: the levels, menus, settings, replay, ghosts,
+# cameras, and the bot rides (a scripted rider rides a lap of the track, races its ghost,
+# climbs the skate park's steps and stops on a foot through the player's own inputs).
 step "GDScript suites"      godot_suites
 # Settings, records and a ghost saved in a loop and killed with SIGKILL read back whole.
 step "saves survive kill -9" tools/kill-test.sh 8
@@ -100,12 +120,16 @@ screenshots() {
          "--copy=res://build/ghosts/track.ghost>user://test-ghosts/track.ghost"
 }
 
-# The ghost race races the lap the bot rode in the GDScript suites (build/ghosts/).
+# Screenshots of the menus, levels, cameras, replay and ghost race under Xvfb, failing on
+# a blank picture (the ghost race races the lap the bot rode in the GDScript suites).
 step "screenshots (Xvfb)"   screenshots
 # The engine recorded by Godot's movie writer sounds at its firing frequency, rising with
 # speed; a paused game is exactly silent.
 step "bike sound (Xvfb)"    tools/sound-check.sh
+# An export with Debian unstable's template, started once: its native module loads and
+# needs no glibc newer than 2.36 (make export-check rides the portable build by hand).
 step "export + smoke run"   tools/export.sh
+# The player's own Godot folder came out of the run exactly as it went in.
 step "the player's files untouched" player_data_unchanged
 
 printf '\n%s\n' "${summary[@]}"

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import csv
 from collections import defaultdict
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from statistics import median
 
@@ -142,13 +142,29 @@ def _hours(seconds: float) -> str:
     return f"{seconds / 3600:.2f} h" if seconds >= 360 else f"{seconds / 60:.1f} min"
 
 
-def paired_table(attempts: list[Attempt], across: bool | None = None) -> str:
+@dataclass(frozen=True)
+class PairedTest:
+    """Controller A against B at one speed on the attempts both rode (the same bumps)."""
+
+    speed_kmh: int
+    first: Controller
+    second: Controller
+    pairs: int
+    both: int
+    only_first: int
+    only_second: int
+    p: float
+    holm_p: float = 1.0
+    significant: bool = False
+
+
+def paired_tests(attempts: list[Attempt], across: bool | None = None) -> list[PairedTest]:
     """Each controller against arcade, combined against the optimizer, guided against
     combined at the same N, and each baseline
     (sampling, MPPI) against both C-PBP planners at the same N (in the same physics), and
     each controller in the exact physics against itself in the classic, on the attempts
     both rode (the same bumps), with the exact McNemar test and Holm's correction across
-    every test in the table. `across` keeps only the pairs across physics models (True) or
+    every test of the family. `across` keeps only the pairs across physics models (True) or
     only those within one (False)."""
     outcome = {(a.config, a.attempt): a.outcome == "goal" for a in attempts}
     configs = {a.config for a in attempts}
@@ -164,7 +180,7 @@ def paired_table(attempts: list[Attempt], across: bool | None = None) -> str:
     twins = [(c, c.in_physics("classic")) for c in controllers if c.physics != "classic"]
     # across: only each controller against its classic twin; False: only within a model.
     pairs = twins if across else pairs if across is False else pairs + twins
-    rows, p_values = [], []
+    tests = []
     for speed in sorted({c.speed_kmh for c in configs}):
         for first, second in pairs:
             a_config, b_config = Config(speed, first), Config(speed, second)
@@ -174,21 +190,28 @@ def paired_table(attempts: list[Attempt], across: bool | None = None) -> str:
                 continue
             a_goal = [outcome[(a_config, i)] for i in shared]
             b_goal = [outcome[(b_config, i)] for i in shared]
-            both = sum(x and y for x, y in zip(a_goal, b_goal))
             only_a = sum(x and not y for x, y in zip(a_goal, b_goal))
             only_b = sum(y and not x for x, y in zip(a_goal, b_goal))
-            p_values.append(mcnemar_exact(only_a, only_b))
-            rows.append(f"| {speed} km/h | {first.label} | {second.label} | {len(shared)} | "
-                        f"{both} | {only_a} | {only_b} | "
-                        f"{len(shared) - both - only_a - only_b} | {p_values[-1]:.2g} |")
-    reject, adjusted = holm(p_values)
+            tests.append(PairedTest(speed, first, second, len(shared),
+                                    sum(x and y for x, y in zip(a_goal, b_goal)), only_a,
+                                    only_b, mcnemar_exact(only_a, only_b)))
+    reject, adjusted = holm([t.p for t in tests])
+    return [replace(t, holm_p=p, significant=r) for t, p, r in zip(tests, adjusted, reject)]
+
+
+def paired_table(attempts: list[Attempt], across: bool | None = None) -> str:
+    """The paired tests (paired_tests) as a Markdown table, Holm's rejections in bold."""
     lines = [
         "| speed | A | B | pairs | both goal | only A | only B | neither | McNemar p | "
         "Holm p |",
         "|---|---|---|---|---|---|---|---|---|---|",
     ]
-    for row, significant, p in zip(rows, reject, adjusted):
-        lines.append(row + (f" **{p:.2g}** |" if significant else f" {p:.2g} |"))
+    for t in paired_tests(attempts, across):
+        neither = t.pairs - t.both - t.only_first - t.only_second
+        holm_p = f"**{t.holm_p:.2g}**" if t.significant else f"{t.holm_p:.2g}"
+        lines.append(f"| {t.speed_kmh} km/h | {t.first.label} | {t.second.label} | {t.pairs} | "
+                     f"{t.both} | {t.only_first} | {t.only_second} | {neither} | {t.p:.2g} | "
+                     f"{holm_p} |")
     return "\n".join(lines)
 
 

@@ -1,0 +1,175 @@
+"""Figures from the experiment's rows (docs/experiment/results.csv and timing.csv).
+
+A controller argument is a label as the experiment writes it (`arcade`, `combined-5`,
+`guided-5`), in the exact physics unless it ends in `:classic`; several are joined with
+commas and `*` stands for any N (`optimizer-*,combined-*`, or `*` for every controller).
+Speeds are one (`10`), a range (`10-30`), a list (`5,30`) or every speed (`all`, the
+default where a speed may be left out)."""
+
+from __future__ import annotations
+
+import fnmatch
+import json
+from functools import cached_property
+from pathlib import Path
+from statistics import median
+
+from cpbp_experiment.configs import Controller
+from cpbp_experiment.report import PairedTest, paired_tests, read_timing, REAL_TIME_MS
+from cpbp_experiment.results import Attempt, ResultsFile
+from cpbp_experiment.stats import wilson_interval
+
+from .formats import count, format_p, percent_range
+from .markers import Figure, FigureError
+
+COUNT = r"\d[\d ]*"
+DECIMAL = r"-?[\d.]+"
+
+
+class ExperimentRows:
+    def __init__(self, folder: Path):
+        self.folder = folder
+
+    @cached_property
+    def attempts(self) -> list[Attempt]:
+        return ResultsFile(self.folder / "results.csv").load()
+
+    @cached_property
+    def exact_tests(self) -> list[PairedTest]:
+        """The report's family of paired tests in the exact physics (Holm across them)."""
+        exact = [a for a in self.attempts if a.config.controller.physics == "exact"]
+        return paired_tests(exact, across=False)
+
+    @cached_property
+    def timing(self) -> list[dict]:
+        return read_timing(self.folder / "timing.csv")
+
+    def select(self, controllers: str, speeds: str = "all") -> list[Attempt]:
+        patterns = [(c.partition(":")[0], c.partition(":")[2] or "exact")
+                    for c in controllers.split(",")]
+        wanted = _speeds(speeds)
+
+        def matches(controller: Controller) -> bool:
+            name = controller.in_physics("classic").label
+            return any(controller.physics == physics and fnmatch.fnmatchcase(name, pattern)
+                       for pattern, physics in patterns)
+
+        chosen = [a for a in self.attempts
+                  if (wanted is None or a.config.speed_kmh in wanted)
+                  and matches(a.config.controller)]
+        if not chosen:
+            raise FigureError(f"no rows of {controllers} at {speeds} km/h")
+        return chosen
+
+    def test(self, first: str, second: str, speed: str) -> tuple[PairedTest, bool]:
+        """The paired test of two controllers at a speed, and whether it names them the
+        other way round."""
+        a, b = (Controller.parse(c if ":" in c else f"{c}:exact") for c in (first, second))
+        for t in self.exact_tests:
+            if t.speed_kmh == int(speed) and {t.first, t.second} == {a, b}:
+                return t, t.first != a
+        raise FigureError(f"the report pairs no {first} with {second} at {speed} km/h")
+
+    def split(self, first: str, second: str, speed: str) -> str:
+        t, swapped = self.test(first, second, speed)
+        mine, theirs = (t.only_second, t.only_first) if swapped else (t.only_first, t.only_second)
+        return f"{mine} to {theirs}"
+
+    @cached_property
+    def platforms(self) -> list[dict]:
+        """The platforms (platforms.json) the exact physics' rows were ridden on."""
+        known = json.loads((self.folder / "platforms.json").read_text(encoding="utf-8"))
+        used = {a.platform for a in self.attempts if a.config.controller.physics == "exact"}
+        return [known.get(name, {}) for name in sorted(used)]
+
+    def wall(self, controllers: str, how: str, speeds: str = "all") -> float:
+        walls = [a.wall_ms / 1000.0 for a in self.select(controllers, speeds)]
+        return median(walls) if how == "median" else sum(walls) / len(walls)
+
+    def plan_ms(self, kind: str, trajectories: str) -> float:
+        for row in self.timing:
+            if row["controller"] == kind and int(row["trajectories"]) == int(trajectories) \
+                    and row.get("physics", "exact") == "exact":
+                return float(row["mean_ms"])
+        raise FigureError(f"no timing row of {kind} at N = {trajectories}")
+
+    def real_time_count(self, kind: str) -> str:
+        counts = [int(r["trajectories"]) for r in self.timing if r["controller"] == kind
+                  and r.get("physics", "exact") == "exact" and float(r["mean_ms"]) <= REAL_TIME_MS]
+        if not counts:
+            raise FigureError(f"no N plans {kind} in real time")
+        return str(max(counts))
+
+
+def _speeds(speeds: str) -> set[int] | None:
+    """The speeds `10`, `10-30` or `5,30` name (None: every speed)."""
+    if speeds == "all":
+        return None
+    chosen: set[int] = set()
+    for item in speeds.split(","):
+        first, _, last = item.partition("-")
+        if not first.isdigit() or not (last or first).isdigit():
+            raise FigureError(f"speeds are km/h like 10, 10-30 or 5,30, not '{speeds}'")
+        chosen.update(range(int(first), int(last or first) + 1))
+    return chosen
+
+
+def _goals(attempts: list[Attempt]) -> int:
+    return sum(a.outcome == "goal" for a in attempts)
+
+
+def figures(rows: ExperimentRows) -> dict[str, Figure]:
+    def wilson(goals: int, tries: int) -> tuple[float, float]:
+        return wilson_interval(goals, tries)
+
+    def chosen(c: str, s: str = "all") -> tuple[int, int]:
+        attempts = rows.select(c, s)
+        return _goals(attempts), len(attempts)
+
+    return {
+        # "497 of 500": goals of tries.
+        "goals": Figure(lambda c, s="all": "{} of {}".format(*map(count, chosen(c, s))),
+                        f"{COUNT} of {COUNT}"),
+        # "497/500", as the tables write it.
+        "cell": Figure(lambda c, s: "{}/{}".format(*chosen(c, s)), r"\d+/\d+"),
+        "tries": Figure(lambda c, s="all": count(chosen(c, s)[1]), COUNT),
+        "fails": Figure(lambda c, s="all": count(chosen(c, s)[1] - chosen(c, s)[0]), COUNT),
+        # "87 %": the success rate, to a tenth where it is not whole.
+        "rate": Figure(lambda c, s: f"{100 * chosen(c, s)[0] / chosen(c, s)[1]:.1f}"
+                       .removesuffix(".0") + " %", rf"{DECIMAL} %"),
+        # "97.2–99.9 %": the 95 % Wilson interval; "2.7": its width in percentage points.
+        "interval": Figure(lambda c, s: percent_range(*wilson(*chosen(c, s))),
+                           rf"{DECIMAL}–{DECIMAL} %"),
+        "width": Figure(lambda c, s: f"{100 * (lambda i: i[1] - i[0])(wilson(*chosen(c, s))):.1f}",
+                        DECIMAL),
+        # The interval of a clean record of n tries: "98.1–100 %" and "1.9".
+        "clean-interval": Figure(lambda n: percent_range(*wilson(int(n), int(n))),
+                                 rf"{DECIMAL}–{DECIMAL} %"),
+        "clean-width": Figure(lambda n: f"{100 * (1 - wilson(int(n), int(n))[0]):.1f}", DECIMAL),
+        # "21 to 0": the first's goals the second missed, to the second's the first missed.
+        "split": Figure(rows.split, f"{COUNT} to {COUNT}"),
+        "p": Figure(lambda a, b, s: format_p(rows.test(a, b, s)[0].p), P_FORM),
+        "holm": Figure(lambda a, b, s: format_p(rows.test(a, b, s)[0].holm_p), P_FORM),
+        "tests": Figure(lambda: str(len(rows.exact_tests)), COUNT),
+        # Wall time per try over every speed, one planning thread per worker: "4.52 s".
+        "median-wall": Figure(lambda c, s="all": f"{rows.wall(c, 'median', s):.2f} s",
+                              rf"{DECIMAL} s"),
+        "mean-wall": Figure(lambda c, s="all": f"{rows.wall(c, 'mean', s):.2f} s", rf"{DECIMAL} s"),
+        "median-ratio": Figure(lambda a, b: f"{rows.wall(a, 'median') / rows.wall(b, 'median'):.2f}×",
+                               rf"{DECIMAL}×"),
+        "core-hours": Figure(lambda: f"{sum(a.wall_ms for a in rows.attempts if a.config.controller.physics == 'exact') / 3.6e6:.1f}",
+                             DECIMAL),
+        # How many platforms the exact rows come from, the commits whose code they ran and
+        # the distinct native-library builds among them.
+        "platforms": Figure(lambda: str(len(rows.platforms)), COUNT),
+        "platform-commits": Figure(lambda: str(len({p.get("commit") for p in rows.platforms})),
+                                   COUNT),
+        "native-builds": Figure(lambda: str(len({p.get("native_build") for p in rows.platforms})),
+                                COUNT),
+        # Figure 5.2: mean planning time per control step (ms), and the largest N in real time.
+        "plan-ms": Figure(lambda k, n: f"{rows.plan_ms(k, n):.1f}", DECIMAL),
+        "real-time-n": Figure(rows.real_time_count, COUNT),
+    }
+
+
+P_FORM = r"[\d.]+(?:·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?"
