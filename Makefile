@@ -32,13 +32,13 @@ experiment: build ## The thesis's evaluation on the game's physics, headless (do
 train: build ## Train the learned controller from nothing and evaluate it (docs/learned-controller.md)
 	@tools/train.sh
 
-export: build ## Export the Linux build into build/linux/ (a portable engine: built once, ~1 h)
+export: build ## Export the Linux build into build/linux/ (a portable engine: built once, ~40 min)
 	@PORTABLE_TEMPLATE=1 tools/export.sh
 
 export-check: build ## Export, then ride the build in a clean Debian 12 desktop root
 	@tools/export-check.sh
 
-export-windows: build ## Export the Windows build into build/windows/ (cross-built once, ~1 h)
+export-windows: build ## Export the Windows build into build/windows/ (cross-built once, ~30 min)
 	@tools/export-windows.sh
 
 export-check-windows: build ## Export for Windows, then ride that build under Wine in a clean Debian 13 root

@@ -1,6 +1,6 @@
 class_name ExperimentWorker
 extends Node
-## One worker of the headless experiment (tools/experiment.py starts it; see
+## One worker of the headless experiment (tools/experiment starts it; see
 ## docs/experiment.md). It rides a block of test-level attempts for one configuration on
 ## the game's own test level and prints one `TRY {json}` line per attempt as soon as it
 ## ends, so the driver can save it before the next begins. With `--timing` it instead

@@ -55,7 +55,7 @@ func _ready() -> void:
 				"frame time (%s, ghost %s): sound %.3f ms, ghost posing %.3f ms, rider posing"
 				+ " %.3f ms, recorder %.3f ms a step (every other frame), ghost drawing"
 				+ " %+.2f ± %.2f ms; together %.2f ms a frame; the skinned rider's drawing"
-				+ " %+.2f ± %.2f ms (it replaced a rider of primitives: see docs/benchmarks.md)"
+				+ " %+.2f ± %.2f ms (it replaced a rider of primitives: see docs/benchmarks-history.md)"
 			)
 			% [
 				controller,

@@ -168,6 +168,7 @@ def figures(rows: ExperimentRows) -> dict[str, Figure]:
                                 COUNT),
         # Figure 5.2: mean planning time per control step (ms), and the largest N in real time.
         "plan-ms": Figure(lambda k, n: f"{rows.plan_ms(k, n):.1f}", DECIMAL),
+        "plan-hz": Figure(lambda k, n: f"{min(1000 / rows.plan_ms(k, n), 999):.0f} Hz", r"\d+ Hz"),
         "real-time-n": Figure(rows.real_time_count, COUNT),
     }
 

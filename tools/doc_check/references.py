@@ -115,7 +115,7 @@ def check_file(tree: Tree, name: str) -> list[Broken]:
     for m in SECTION.finditer(joined):
         documents = tree.markdown_named(m.group(1), name)
         wanted = m.group(2).lower()
-        if not any(h.lower().startswith(wanted) for d in documents for h in tree.headings_of(d)):
+        if not any(wanted in h.lower() for d in documents for h in tree.headings_of(d)):
             where = text.find(m.group(1))
             broken.append(Broken(name, _line(text, max(where, 0)),
                                  f"{m.group(1)} has no section \"{m.group(2)}\""))

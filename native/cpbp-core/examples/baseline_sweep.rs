@@ -1,5 +1,5 @@
-//! How the baseline planners' defaults were chosen (docs/results.md, "Planners side by
-//! side"): `native/target/release/examples/baseline_sweep N [--dims steering,all]
+//! How the baseline planners' defaults were chosen (docs/results-history.md, "Planners
+//! side by side"): `native/target/release/examples/baseline_sweep N [--dims steering,all]
 //! [--noise 0.1,0.25,0.5] [--knots 6] [--temperature 0.03,0.1,0.3]` rides predictive
 //! sampling and MPPI with every setting of the grid in the game's physics on flat ground,
 //! two planner seeds each, and prints per setting: how many of the walking-pace rides

@@ -1,4 +1,5 @@
-//! Plans over and over for a profiler (docs/benchmarks.md, "Where a plan's time goes"):
+//! Plans over and over for a profiler (docs/benchmarks-history.md,
+//! "where a plan's time goes"):
 //! `perf record -F 2000 native/target/release/examples/plan_profile [N] [threads] [plans]
 //! [physics model]`. Combined mode, riding off towards 15 km/h on flat ground, rolling out
 //! in the physics model's rollout physics (classic unless named).

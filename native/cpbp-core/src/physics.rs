@@ -103,7 +103,7 @@ impl PhysicsModel {
 /// steps where bumps come fast, and the planners lost tries at 20–25 km/h that classic
 /// won; the start of the horizon decides the control applied now, and the receding
 /// horizon re-plans the rest every step, so the fine steps are spent there. Measured
-/// (docs/benchmarks.md): 12 won all 120 tries of two of those configurations, 6 won 118.
+/// (docs/benchmarks-history.md): 12 won all 120 tries of two of those configurations, 6 won 118.
 const EXACT_LEAD_STEPS: usize = 12;
 
 /// How a rollout steps through its horizon: ODE steps per planning step, with more for

@@ -14,7 +14,7 @@ const STREET_ORANGE: Color = Color::from_rgb(0.92, 0.35, 0.08);
 #[derive(GodotClass)]
 #[class(base=Resource)]
 pub struct BikeDescription {
-    /// What menus call it.
+    /// The bike's name, for people: messages about the bike name it by this.
     #[export]
     name: GString,
     /// Distance between the wheels' ground contact points (m).

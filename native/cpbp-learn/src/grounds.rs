@@ -47,10 +47,11 @@ pub fn bump_field(seed: u64, height: f64) -> Terrain {
     Terrain::new(vec![piece]).expect("a height map is valid terrain")
 }
 
-/// The test level's logs (radius 6–16 cm, 1–3 m long, up to 35° off square, their axes
-/// at ground level) scattered in a 14 m lane from 3 m to 90 m ahead of the start along
-/// `heading`, on flat ground: what the test level's bump field lays, for as long as an
-/// episode rides.
+/// Logs like the test level's, for as long as an episode rides: radius 6–16 cm (the
+/// level's are 8–16 cm, scenes/levels/test_level/test_level.tscn), 1–3 m long, up to 35°
+/// off square, their axes at ground level, scattered in a 14 m lane from 3 m to 90 m ahead
+/// of the start along `heading` (the level's 20 lie in its last 22 m before the goal), on
+/// flat ground. One description shared with the level is issue 55's.
 pub fn log_field(seed: u64, heading: DQuat, count: usize) -> Terrain {
     let mut rng = stream(seed, Stream::Bumps);
     let mut pieces = vec![TerrainPiece::flat_ground()];

@@ -2,7 +2,7 @@
 //! loop from the same state in the rollouts' physics, against what the master did with
 //! them. Cheaper rollout physics (fewer substeps, another solver) is only a saving if
 //! this stays small: 2-substep QuickStep rollouts predicted a less stable bike and their
-//! plans dropped it (docs/benchmarks.md, "Rollout fidelity").
+//! plans dropped it (docs/benchmarks-history.md, "rollout fidelity").
 
 use glam::DVec3;
 

@@ -29,7 +29,7 @@ pub struct BaselineSettings {
 }
 
 impl Default for BaselineSettings {
-    /// Chosen with `examples/baseline_sweep` (docs/results.md, "Planners side by side"):
+    /// Chosen with `examples/baseline_sweep` (docs/results-history.md, "Planners side by side"):
     /// sampling every joint falls at walking pace; steering alone with 10 knots, σ = 2 rad/s
     /// and MPPI at temperature 0.01 tracked a 15° turn best.
     fn default() -> Self {
