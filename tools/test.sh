@@ -46,6 +46,9 @@ godot_suites() {
 # README.md's "Running the tests" lists these steps from the comment above each (the doc
 # check holds it equal): keep one comment per step saying what it checks.
 
+# The preflight stops a machine whose Rust and Python are too old, naming both with how to
+# install them, and builds nothing.
+step "preflight self-test"  tools/preflight-selftest.sh
 # The native workspace is formatted as rustfmt writes it.
 step "rustfmt"              tools/cargo fmt --all --check
 # Clippy finds nothing, warnings counted as errors, in every crate and test.

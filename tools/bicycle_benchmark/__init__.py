@@ -1,3 +1,3 @@
 """The benchmark bicycle (Meijaard et al. 2007) ridden by the game's physics and compared
 with the paper's linear model, computed by the `bicycleparameters` package: see
-docs/bike-model.md, "The benchmark bicycle"."""
+docs/physics.md, "The benchmark bicycle"."""

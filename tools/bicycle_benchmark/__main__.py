@@ -1,5 +1,5 @@
 """`tools/bicycle-benchmark`: coasts the benchmark bicycle under several physics settings
-and prints how each compares with the paper's linear model (docs/bike-model.md)."""
+and prints how each compares with the paper's linear model (docs/physics.md)."""
 
 from __future__ import annotations
 

@@ -1,8 +1,9 @@
 """Figures from the scenario tool's rows (docs/scenarios/scenarios.csv).
 
 A rider argument is `arcade`, `learned` or a planner with its N (`combined-15`), in the
-exact physics; a scenario is the tool's name for it (`turn`, `push`, `stop40`). A metric is
-averaged over the rides that stayed up, as the scenario report does."""
+exact physics; a scenario is the tool's name for it (`turn`, `push`, `stop40`). A rider
+ending in `@FOLDER` is read from the rows a change superseded, `superseded/FOLDER/` beside
+the table. A metric is averaged over the rides that stayed up, as the scenario report does."""
 
 from __future__ import annotations
 
@@ -25,11 +26,14 @@ DECIMAL = r"−?-?[\d.]+"
 class ScenarioRows:
     def __init__(self, path: Path):
         self.path = path
+        self._superseded: dict[str, ScenarioRows] = {}
 
     @cached_property
     def rides(self) -> dict[tuple[str, str], dict[int, tuple[bool, float]]]:
         """(scenario, rider) → seed → (fell, metric), exact physics."""
         rides: dict[tuple[str, str], dict[int, tuple[bool, float]]] = defaultdict(dict)
+        if not self.path.exists():
+            raise FigureError(f"no scenario rows at {self.path}")
         with self.path.open(newline="") as f:
             for row in csv.DictReader(f):
                 if row["physics"] != "exact":
@@ -42,6 +46,12 @@ class ScenarioRows:
         return rides
 
     def of(self, scenario: str, rider: str) -> dict[int, tuple[bool, float]]:
+        rider, _, folder = rider.partition("@")
+        if folder:
+            if folder not in self._superseded:
+                self._superseded[folder] = ScenarioRows(
+                    self.path.parent / "superseded" / folder / self.path.name)
+            return self._superseded[folder].of(scenario, rider)
         found = self.rides.get((scenario, rider))
         if not found:
             raise FigureError(f"no {scenario} rows of {rider}")

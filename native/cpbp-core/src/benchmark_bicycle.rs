@@ -3,7 +3,7 @@
 //! bodies, hinges, torus tyres (with zero crown: knife-edge wheels) and contact surface as
 //! the game's bike. Coasting it after a small roll kick and comparing the motion with the
 //! paper's linear model says whether our physics rides like a bicycle the field agrees on
-//! (`tools/bicycle_benchmark`, docs/bike-model.md).
+//! (`tools/bicycle_benchmark`, docs/physics.md).
 
 use glam::{DMat3, DVec3};
 

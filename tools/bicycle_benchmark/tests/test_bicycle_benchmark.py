@@ -2,7 +2,7 @@
 bicycle built from the game's bodies, hinges and knife-edge tyres is the paper's bicycle
 when ODE steps it finely, and at the game's own 1/120 s step in the exact physics model
 (direct solver, explicit wheel gyroscopics). The classic model's departure is measured by
-`tools/bicycle-benchmark` and recorded in docs/bike-model.md."""
+`tools/bicycle-benchmark` and recorded in docs/physics.md."""
 
 import unittest
 

@@ -5,7 +5,7 @@
 //! stable for any body, but for a wheel held by its axle it weakens the coupling between
 //! spin and frame: a gyroscope on a pivot precesses 7 % too fast at 1/120 s (−1 % with the
 //! explicit term, tests/world.rs), and the benchmark bicycle capsizes from 4.9 m/s instead
-//! of 6.0 (docs/bike-model.md). Wheels therefore take the explicit term: ODE's own is
+//! of 6.0 (docs/physics.md). Wheels therefore take the explicit term: ODE's own is
 //! switched off for them and this torque is added before every step. The explicit term
 //! is not for free tumbling bodies: a free wheel wobbling at 2 rad/s while spinning at
 //! 20 rad/s gains about 8 % of its rate per second at 1/120 s.
