@@ -15,7 +15,7 @@ from pathlib import Path
 from statistics import median
 
 from cpbp_experiment.configs import Controller
-from cpbp_experiment.report import PairedTest, paired_tests, read_timing, REAL_TIME_MS
+from cpbp_experiment.report import REAL_TIME_MS, PairedTest, paired_tests, read_timing
 from cpbp_experiment.results import Attempt, ResultsFile
 from cpbp_experiment.stats import wilson_interval
 
@@ -118,59 +118,76 @@ def _goals(attempts: list[Attempt]) -> int:
     return sum(a.outcome == "goal" for a in attempts)
 
 
-def figures(rows: ExperimentRows) -> dict[str, Figure]:
-    def wilson(goals: int, tries: int) -> tuple[float, float]:
-        return wilson_interval(goals, tries)
+P_FORM = r"[\d.]+(?:·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?"
 
+
+def figures(rows: ExperimentRows) -> dict[str, Figure]:
     def chosen(c: str, s: str = "all") -> tuple[int, int]:
         attempts = rows.select(c, s)
         return _goals(attempts), len(attempts)
 
+    def goals(c: str, s: str = "all") -> str:
+        return "{} of {}".format(*map(count, chosen(c, s)))
+
+    def rate(c: str, s: str) -> str:
+        g, n = chosen(c, s)
+        return f"{100 * g / n:.1f}".removesuffix(".0") + " %"
+
+    def width(c: str, s: str) -> str:
+        low, high = wilson_interval(*chosen(c, s))
+        return f"{100 * (high - low):.1f}"
+
+    def clean_width(n: str) -> str:
+        return f"{100 * (1 - wilson_interval(int(n), int(n))[0]):.1f}"
+
+    def median_ratio(a: str, b: str) -> str:
+        return f"{rows.wall(a, 'median') / rows.wall(b, 'median'):.2f}×"
+
+    def core_hours() -> str:
+        exact = [a for a in rows.attempts if a.config.controller.physics == "exact"]
+        return f"{sum(a.wall_ms for a in exact) / 3.6e6:.1f}"
+
+    def distinct(field: str) -> str:
+        return str(len({p.get(field) for p in rows.platforms}))
+
     return {
-        # "497 of 500": goals of tries.
-        "goals": Figure(lambda c, s="all": "{} of {}".format(*map(count, chosen(c, s))),
-                        f"{COUNT} of {COUNT}"),
-        # "497/500", as the tables write it.
+        # "497 of 500": goals of tries; "497/500", as the tables write it.
+        "goals": Figure(goals, f"{COUNT} of {COUNT}"),
         "cell": Figure(lambda c, s: "{}/{}".format(*chosen(c, s)), r"\d+/\d+"),
         "tries": Figure(lambda c, s="all": count(chosen(c, s)[1]), COUNT),
         "fails": Figure(lambda c, s="all": count(chosen(c, s)[1] - chosen(c, s)[0]), COUNT),
         # "87 %": the success rate, to a tenth where it is not whole.
-        "rate": Figure(lambda c, s: f"{100 * chosen(c, s)[0] / chosen(c, s)[1]:.1f}"
-                       .removesuffix(".0") + " %", rf"{DECIMAL} %"),
+        "rate": Figure(rate, rf"{DECIMAL} %"),
         # "97.2–99.9 %": the 95 % Wilson interval; "2.7": its width in percentage points.
-        "interval": Figure(lambda c, s: percent_range(*wilson(*chosen(c, s))),
+        "interval": Figure(lambda c, s: percent_range(*wilson_interval(*chosen(c, s))),
                            rf"{DECIMAL}–{DECIMAL} %"),
-        "width": Figure(lambda c, s: f"{100 * (lambda i: i[1] - i[0])(wilson(*chosen(c, s))):.1f}",
-                        DECIMAL),
+        "width": Figure(width, DECIMAL),
         # The interval of a clean record of n tries: "98.1–100 %" and "1.9".
-        "clean-interval": Figure(lambda n: percent_range(*wilson(int(n), int(n))),
+        "clean-interval": Figure(lambda n: percent_range(*wilson_interval(int(n), int(n))),
                                  rf"{DECIMAL}–{DECIMAL} %"),
-        "clean-width": Figure(lambda n: f"{100 * (1 - wilson(int(n), int(n))[0]):.1f}", DECIMAL),
+        "clean-width": Figure(clean_width, DECIMAL),
         # "21 to 0": the first's goals the second missed, to the second's the first missed.
         "split": Figure(rows.split, f"{COUNT} to {COUNT}"),
+        # The exact McNemar test's p of a pair in the report, alone and after Holm.
         "p": Figure(lambda a, b, s: format_p(rows.test(a, b, s)[0].p), P_FORM),
         "holm": Figure(lambda a, b, s: format_p(rows.test(a, b, s)[0].holm_p), P_FORM),
         "tests": Figure(lambda: str(len(rows.exact_tests)), COUNT),
-        # Wall time per try over every speed, one planning thread per worker: "4.52 s".
+        # Wall time per try, one planning thread per worker: "4.52 s".
         "median-wall": Figure(lambda c, s="all": f"{rows.wall(c, 'median', s):.2f} s",
                               rf"{DECIMAL} s"),
-        "mean-wall": Figure(lambda c, s="all": f"{rows.wall(c, 'mean', s):.2f} s", rf"{DECIMAL} s"),
-        "median-ratio": Figure(lambda a, b: f"{rows.wall(a, 'median') / rows.wall(b, 'median'):.2f}×",
-                               rf"{DECIMAL}×"),
-        "core-hours": Figure(lambda: f"{sum(a.wall_ms for a in rows.attempts if a.config.controller.physics == 'exact') / 3.6e6:.1f}",
-                             DECIMAL),
+        "mean-wall": Figure(lambda c, s="all": f"{rows.wall(c, 'mean', s):.2f} s",
+                            rf"{DECIMAL} s"),
+        "median-ratio": Figure(median_ratio, rf"{DECIMAL}×"),
+        "core-hours": Figure(core_hours, DECIMAL),
         # How many platforms the exact rows come from, the commits whose code they ran and
         # the distinct native-library builds among them.
         "platforms": Figure(lambda: str(len(rows.platforms)), COUNT),
-        "platform-commits": Figure(lambda: str(len({p.get("commit") for p in rows.platforms})),
-                                   COUNT),
-        "native-builds": Figure(lambda: str(len({p.get("native_build") for p in rows.platforms})),
-                                COUNT),
-        # Figure 5.2: mean planning time per control step (ms), and the largest N in real time.
+        "platform-commits": Figure(lambda: distinct("commit"), COUNT),
+        "native-builds": Figure(lambda: distinct("native_build"), COUNT),
+        # Figure 5.2: mean planning time per control step (ms), its rate, and the largest N
+        # in real time.
         "plan-ms": Figure(lambda k, n: f"{rows.plan_ms(k, n):.1f}", DECIMAL),
-        "plan-hz": Figure(lambda k, n: f"{min(1000 / rows.plan_ms(k, n), 999):.0f} Hz", r"\d+ Hz"),
+        "plan-hz": Figure(lambda k, n: f"{min(1000 / rows.plan_ms(k, n), 999):.0f} Hz",
+                          r"\d+ Hz"),
         "real-time-n": Figure(rows.real_time_count, COUNT),
     }
-
-
-P_FORM = r"[\d.]+(?:·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?"

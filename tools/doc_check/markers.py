@@ -42,9 +42,11 @@ class Problem:
     line: int
     call: str
     message: str
+    table: bool = False
 
     def text(self, doc: str) -> str:
-        return f"{doc}:{self.line}: <!--= {self.call} -->: {self.message}"
+        marker = f"<!-- figures: {self.call} -->" if self.table else f"<!--= {self.call} -->"
+        return f"{doc}:{self.line}: {marker}: {self.message}"
 
 
 def _line_of(text: str, offset: int) -> int:
@@ -80,7 +82,10 @@ def _old_figure(core: str, form: str) -> re.Match | None:
     return None
 
 
-def check(text: str, figures: dict[str, Figure], tables: dict[str, Callable[..., str]]) -> list[Problem]:
+Tables = dict[str, Callable[..., str]]
+
+
+def check(text: str, figures: dict[str, Figure], tables: Tables) -> list[Problem]:
     problems = []
     for marker in INLINE.finditer(text):
         call = marker["call"]
@@ -102,15 +107,15 @@ def check(text: str, figures: dict[str, Figure], tables: dict[str, Callable[...,
         try:
             expected = _compute(tables, call).rstrip("\n") + "\n"
         except FigureError as error:
-            problems.append(Problem(line, call, str(error)))
+            problems.append(Problem(line, call, str(error), table=True))
             continue
         if block["body"] != expected:
             problems.append(Problem(line, call, "the table differs from the one the rows make "
-                                    "(tools/doc-check update rewrites it)"))
+                                    "(tools/doc-check update rewrites it)", table=True))
     return problems
 
 
-def update(text: str, figures: dict[str, Figure], tables: dict[str, Callable[..., str]]) -> str:
+def update(text: str, figures: dict[str, Figure], tables: Tables) -> str:
     """The text with every marked figure and table rewritten from the rows. A figure whose
     old text cannot be found (it no longer has the figure's form) raises FigureError."""
     text = BLOCK.sub(lambda b: b["open"] + _compute(tables, b["call"]).rstrip("\n") + "\n"

@@ -108,7 +108,8 @@ def check_file(tree: Tree, name: str) -> list[Broken]:
         if goes_on or placeholder or NOT_CHECKED.search(name):
             continue
         if not tree.exists(m.group(1), name):
-            broken.append(Broken(name, _line(text, m.start()), f"no such file or folder: {m.group(1)}"))
+            broken.append(Broken(name, _line(text, m.start()),
+                                 f"no such file or folder: {m.group(1)}"))
     if name.endswith(".md"):
         broken += _links(tree, name, text)
     joined = COMMENT_BREAK.sub(" ", text)
@@ -136,7 +137,8 @@ def _links(tree: Tree, name: str, text: str) -> list[Broken]:
             broken.append(Broken(name, _line(text, m.start()), f"link to a missing file: {target}"))
         elif anchor and resolved.endswith(".md") and \
                 anchor not in {slug(h) for h in tree.headings_of(resolved)}:
-            broken.append(Broken(name, _line(text, m.start()), f"link to a missing heading: {target}"))
+            broken.append(Broken(name, _line(text, m.start()),
+                                 f"link to a missing heading: {target}"))
     return broken
 
 
