@@ -40,6 +40,13 @@ if ! $keep || [ ! -x "$root/usr/bin/git" ]; then
     || { tail -20 "$logs/clean-machine-debootstrap.log" >&2; die "debootstrap failed"; }
 fi
 cp /etc/resolv.conf "$root/etc/resolv.conf"
+# The network's own set-up goes in with the name server: where the host reaches the
+# registries through a TLS-inspecting gateway, the root trusts its CA as the host does
+# (the host's extra CA certificates and pip's configuration naming the system bundle).
+# That is this machine's network, not something the project needs.
+mkdir -p "$root/usr/local/share/ca-certificates"
+cp /usr/local/share/ca-certificates/*.crt "$root/usr/local/share/ca-certificates/" 2>/dev/null || true
+[ ! -f /etc/pip.conf ] || cp /etc/pip.conf "$root/etc/pip.conf"
 rm -rf "$root/root/counter-steer" "$root/root/.cache" "$root/root/.cargo" "$root/root/.local"
 git clone -q --no-local "$PROJECT_ROOT" "$root/root/counter-steer"
 
@@ -77,6 +84,8 @@ sed -n '/this machine is missing/,$p' "$logs/clean-machine-without-rust.log"
 $preflight_only && exit 0
 
 log "2. make test with Rust (a cold make test; about 40 minutes on 2 cores)"
+# Step 1's preflight installed ca-certificates: bring the gateway's CA into its bundle.
+in_root no "update-ca-certificates >/dev/null"
 started=$SECONDS
 in_root yes make test >"$logs/clean-machine-make-test.log" 2>&1 \
   || { tail -40 "$logs/clean-machine-make-test.log" >&2; die "make test failed in the clean root"; }
