@@ -8,9 +8,9 @@ source "$(dirname "$0")/common.sh"
 # Python: the pinned scipy (1.17) and statsmodels (0.15) in tools/requirements.txt need 3.11.
 PYTHON_MIN=3.11
 # Free disk a cold `make test` needs: the Godot root, ODE, the Python tools and the pip
-# and cargo downloads in the cache, native/target and build/ in the checkout (measured in
-# docs/benchmarks.md, "A cold make test"), with room to spare.
-DISK_MIN_GB=12
+# and cargo downloads in the cache, native/target and build/ in the checkout, 5.6 GB
+# (docs/benchmarks.md, "A cold make test"), with room to spare.
+DISK_MIN_GB=8
 # Debian packages the build and the checks use: debootstrap makes the private Godot root,
 # dpkg-dev and patch unpack and patch ODE's source package, cmake and the C/C++ compilers
 # build it, clang and libclang generate its Rust bindings, Xvfb draws the screenshots,
