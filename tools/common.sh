@@ -77,17 +77,29 @@ as_root() {
 
 # Installs the Debian packages named that are missing from the host (apt, as root).
 ensure_host_packages() {
-  local missing=() package
-  for package in "$@"; do
-    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-  done
+  local missing
+  mapfile -t missing < <(absent_host_packages "$@")
   [ ${#missing[@]} -eq 0 ] && return 0
   log "installing host packages: ${missing[*]}"
   if [ "$(id -u)" -ne 0 ] && ! command -v sudo >/dev/null; then
     die "need root (or sudo) to install: ${missing[*]}"
   fi
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  apt_install "${missing[@]}"
+}
+
+# The Debian packages named that are not installed on the host, one a line.
+absent_host_packages() {
+  local package
+  for package in "$@"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \
+      || printf '%s\n' "$package"
+  done
+}
+
+# Installs the Debian packages named with apt, as root.
+apt_install() {
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq >/dev/null
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$@" >/dev/null
 }
 
 # The Debian mirror the host already uses, so nothing outside the configured registry is contacted.

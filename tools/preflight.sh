@@ -2,7 +2,7 @@
 # The first step of every make target that provisions or builds: checks everything this
 # project needs of the machine, installs with apt what apt can, and when something is
 # still missing lists all of it at once, each with the command that installs it, before
-# anything is downloaded or built. The README's "What a machine needs" says the same.
+# anything is downloaded or built. The README's "Requirements" say the same.
 source "$(dirname "$0")/common.sh"
 
 # Python: the pinned scipy (1.17) and statsmodels (0.15) in tools/requirements.txt need 3.11.
@@ -79,16 +79,13 @@ check_python() {
 }
 
 check_packages() {
-  local package absent=()
+  local absent
   if ! command -v dpkg-query >/dev/null; then
     need "a Debian or Ubuntu system (the provisioning uses apt and debootstrap)" \
       "on another system install the equivalents of: ${APT_PACKAGES[*]}"
     return
   fi
-  for package in "${APT_PACKAGES[@]}"; do
-    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \
-      || absent+=("$package")
-  done
+  mapfile -t absent < <(absent_host_packages "${APT_PACKAGES[@]}")
   [ ${#absent[@]} -eq 0 ] && return
   need "Debian packages: ${absent[*]}" "sudo apt-get install ${absent[*]}"
   apt_wanted+=("${absent[@]}")
@@ -130,9 +127,7 @@ check_all
 if [ ${#apt_wanted[@]} -gt 0 ] && can_use_apt; then
   mapfile -t apt_wanted < <(printf '%s\n' "${apt_wanted[@]}" | sort -u)
   log "installing with apt: ${apt_wanted[*]}"
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq >/dev/null
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
-    "${apt_wanted[@]}" >/dev/null 2>&1 || log "apt could not install everything (below)"
+  apt_install "${apt_wanted[@]}" 2>/dev/null || log "apt could not install everything (below)"
   hash -r
   check_all
 fi

@@ -129,6 +129,10 @@ def figures(rows: ExperimentRows) -> dict[str, Figure]:
     def goals(c: str, s: str = "all") -> str:
         return "{} of {}".format(*map(count, chosen(c, s)))
 
+    def fails(c: str, s: str = "all") -> str:
+        g, n = chosen(c, s)
+        return count(n - g)
+
     def rate(c: str, s: str) -> str:
         g, n = chosen(c, s)
         return f"{100 * g / n:.1f}".removesuffix(".0") + " %"
@@ -155,7 +159,7 @@ def figures(rows: ExperimentRows) -> dict[str, Figure]:
         "goals": Figure(goals, f"{COUNT} of {COUNT}"),
         "cell": Figure(lambda c, s: "{}/{}".format(*chosen(c, s)), r"\d+/\d+"),
         "tries": Figure(lambda c, s="all": count(chosen(c, s)[1]), COUNT),
-        "fails": Figure(lambda c, s="all": count(chosen(c, s)[1] - chosen(c, s)[0]), COUNT),
+        "fails": Figure(fails, COUNT),
         # "87 %": the success rate, to a tenth where it is not whole.
         "rate": Figure(rate, rf"{DECIMAL} %"),
         # "97.2–99.9 %": the 95 % Wilson interval; "2.7": its width in percentage points.
