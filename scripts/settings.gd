@@ -6,28 +6,6 @@ extends Node
 ## A setting changed (by a menu or by a key); `key` is its name.
 signal changed(key: StringName)
 
-## Trajectory counts the menus offer, after "auto" (the planner's N follows the machine).
-const TRAJECTORY_CHOICES: Array[int] = [5, 10, 15, 32, 64, 128]
-## Speeds auto-accelerate offers (km/h): the thesis tested 10, 15, 20 and 25.
-const AUTO_SPEEDS: Array[int] = [10, 15, 20, 25]
-
-## Default value of every setting; also their types: a loaded value of another type is
-## ignored.
-const DEFAULTS := {
-	&"level": "test_level",
-	&"trajectories": 15,
-	&"auto_trajectories": true,
-	&"controller": "combined",
-	&"show_trajectories": true,
-	&"physical_model": false,
-	&"motor_force": 0.6,
-	&"max_speed_kmh": 40.0,
-	&"auto_speed_kmh": 15,
-	&"auto_accelerate": false,
-	&"camera": "chase",
-	&"master_volume": 0.8,
-	&"engine_volume": 1.0,
-}
 const SECTION := "game"
 ## Settings files saved before controllers were named hold BikeSimulation's old integers.
 const LEGACY_CONTROLLERS: Array[String] = ["arcade", "manual", "optimizer", "combined"]
@@ -37,6 +15,13 @@ const LEGACY_CONTROLLERS: Array[String] = ["arcade", "manual", "optimizer", "com
 const PLAYER_SETTINGS := "user://settings.cfg"
 const PLAYER_RECORDS := "user://records.cfg"
 const PLAYER_GHOSTS := "user://ghosts"
+
+## The settings kept in the player's file: the native schema's entries players see
+## (`SettingsSchema.entries()`), by name. Each entry's default is also its type: a loaded
+## value of another type is ignored.
+var entries := {}
+## Each player setting's default, by name.
+var defaults := {}
 
 var settings_path := PLAYER_SETTINGS
 var records_path := PLAYER_RECORDS
@@ -50,23 +35,26 @@ func _ready() -> void:
 	reload()
 
 
-## Reads both files again (used at start and by tests that point the paths elsewhere).
+## Reads the schema and both files again (used at start, by tests that point the paths
+## elsewhere, and after the schema was extended).
 func reload() -> void:
-	_values = DEFAULTS.duplicate()
+	entries = {}
+	defaults = {}
+	for entry in SettingsSchema.entries():
+		if entry.player:
+			entries[entry.name] = entry
+			defaults[entry.name] = entry.default
+	_values = defaults.duplicate()
 	var config := ConfigStore.load_or_empty(settings_path)
-	for key: StringName in DEFAULTS:
-		var value: Variant = config.get_value(SECTION, key, DEFAULTS[key])
+	for key: StringName in defaults:
+		var value: Variant = config.get_value(SECTION, key, defaults[key])
 		if key == &"controller":
 			value = _controller_name(value)
-		elif key == &"camera" and not FollowCamera.MODES.has(value):
-			push_warning("settings: no camera mode is called %s; using the default" % value)
-			value = DEFAULTS[key]
-		if typeof(value) == typeof(DEFAULTS[key]):
-			_values[key] = value
-		elif typeof(DEFAULTS[key]) == TYPE_FLOAT and typeof(value) == TYPE_INT:
-			_values[key] = float(value)
+		var fitted: Variant = _fitted(key, value)
+		if fitted == null:
+			push_warning("settings: ignoring %s = %s (%s)" % [key, value, _refusal(key, value)])
 		else:
-			push_warning("settings: ignoring %s = %s (wrong type)" % [key, value])
+			_values[key] = fitted
 	_records = ConfigStore.load_or_empty(records_path)
 	_apply_master_volume()
 
@@ -79,34 +67,82 @@ static func _controller_name(saved: Variant) -> String:
 	if typeof(saved) == TYPE_STRING and NativeModule.controller_names().has(saved):
 		return saved
 	push_warning("settings: controller %s is not one players pick; using the default" % saved)
-	return DEFAULTS[&"controller"]
+	return schema_entry(&"controller").default
+
+
+## The schema's entry of setting `key` (empty for none).
+static func schema_entry(key: StringName) -> Dictionary:
+	for entry in SettingsSchema.entries():
+		if entry.name == key:
+			return entry
+	return {}
+
+
+## The values menus offer for setting `key`, as whole numbers.
+static func offered(key: StringName) -> Array[int]:
+	var values: Array[int] = []
+	for value: float in schema_entry(key).get("offered", PackedFloat64Array()):
+		values.append(roundi(value))
+	return values
+
+
+## `value` as setting `key` holds it (a whole number for a number setting is taken), or
+## null when the setting may not hold it.
+func _fitted(key: StringName, value: Variant) -> Variant:
+	var entry: Dictionary = entries[key]
+	var default: Variant = entry.default
+	if typeof(default) == TYPE_FLOAT and typeof(value) == TYPE_INT:
+		value = float(value)
+	if typeof(value) != typeof(default):
+		return null
+	if entry.has("min") and not (value >= entry.min and value <= entry.max):
+		return null
+	if key == &"controller" and not NativeModule.controller_names().has(value):
+		return null
+	if key == &"camera" and not FollowCamera.MODES.has(value):
+		return null
+	return value
+
+
+## Why setting `key` may not hold `value`.
+func _refusal(key: StringName, value: Variant) -> String:
+	if not entries.has(key):
+		return "no player setting is called %s" % key
+	var entry: Dictionary = entries[key]
+	if (
+		typeof(value) != typeof(entry.default)
+		and not (typeof(entry.default) == TYPE_FLOAT and typeof(value) == TYPE_INT)
+	):
+		return "it takes %s" % type_string(typeof(entry.default))
+	if entry.has("min"):
+		return (
+			"it is within %s–%s %s" % [number_text(entry.min), number_text(entry.max), entry.unit]
+		)
+	var kind := "camera mode" if key == &"camera" else String(key)
+	return "no %s is called %s" % [kind, value]
+
+
+## `x` as menus and messages write it: whole numbers without a decimal point.
+static func number_text(x: float) -> String:
+	return "%d" % x if x == roundf(x) else str(x)
 
 
 ## The value of setting `key`.
 func get_value(key: StringName) -> Variant:
-	assert(DEFAULTS.has(key), "unknown setting %s" % key)
-	return _values.get(key, DEFAULTS.get(key))
+	assert(defaults.has(key), "unknown setting %s" % key)
+	return _values.get(key, defaults.get(key))
 
 
-## Sets and saves setting `key`; an unknown key or a value of the wrong type is refused.
+## Sets and saves setting `key`; an unknown key, a value of the wrong type or out of the
+## setting's range, or a name no controller or camera mode has, is refused.
 func set_value(key: StringName, value: Variant) -> void:
-	if not DEFAULTS.has(key):
-		push_error("settings: unknown setting %s" % key)
+	var fitted: Variant = _fitted(key, value) if defaults.has(key) else null
+	if fitted == null or fitted != value:
+		push_error("settings: %s = %s refused (%s)" % [key, value, _refusal(key, value)])
 		return
-	if typeof(value) != typeof(DEFAULTS[key]):
-		push_error(
-			"settings: %s must be %s, not %s" % [key, type_string(typeof(DEFAULTS[key])), value]
-		)
+	if _values[key] == fitted:
 		return
-	if key == &"controller" and not NativeModule.controller_names().has(value):
-		push_error("settings: no controller is called '%s'" % value)
-		return
-	if key == &"camera" and not FollowCamera.MODES.has(value):
-		push_error("settings: no camera mode is called '%s'" % value)
-		return
-	if _values[key] == value:
-		return
-	_values[key] = value
+	_values[key] = fitted
 	var config := ConfigFile.new()
 	for k: StringName in _values:
 		config.set_value(SECTION, k, _values[k])
@@ -120,7 +156,7 @@ func set_value(key: StringName, value: Variant) -> void:
 static func trajectory_labels() -> PackedStringArray:
 	var limits := BikeSimulation.auto_trajectory_limits()
 	var labels := PackedStringArray(["auto trajectories (%d–%d)" % [limits.x, limits.y]])
-	for count in TRAJECTORY_CHOICES:
+	for count in offered(&"trajectories"):
 		labels.append("%d trajectories" % count)
 	return labels
 
@@ -131,9 +167,10 @@ func trajectory_choice() -> int:
 	if get_value(&"auto_trajectories"):
 		return 0
 	var count: int = get_value(&"trajectories")
+	var choices := offered(&"trajectories")
 	var nearest := 0
-	for i in TRAJECTORY_CHOICES.size():
-		if absi(TRAJECTORY_CHOICES[i] - count) < absi(TRAJECTORY_CHOICES[nearest] - count):
+	for i in choices.size():
+		if absi(choices[i] - count) < absi(choices[nearest] - count):
 			nearest = i
 	return nearest + 1
 
@@ -143,7 +180,8 @@ func choose_trajectories(index: int) -> void:
 	if index <= 0:
 		set_value(&"auto_trajectories", true)
 		return
-	set_value(&"trajectories", TRAJECTORY_CHOICES[mini(index, TRAJECTORY_CHOICES.size()) - 1])
+	var choices := offered(&"trajectories")
+	set_value(&"trajectories", choices[mini(index, choices.size()) - 1])
 	set_value(&"auto_trajectories", false)
 
 

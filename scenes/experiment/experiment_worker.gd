@@ -63,8 +63,6 @@ func _build(args: ExperimentArgs) -> bool:
 	_bike.controller = args.controller
 	_bike.physics = args.physics
 	_bike.planning_threads = args.threads
-	# The game's own default, not this machine's saved settings.
-	_bike.motor_force = Settings.DEFAULTS[&"motor_force"]
 	# Wait for every plan: no step uses a late plan, and a ride repeats exactly.
 	_bike.wait_for_every_plan = true
 	# Nothing is heard either.

@@ -100,7 +100,7 @@ func _ready() -> void:
 	bike.crashed.connect(_on_crashed)
 	bike.controller_failed.connect(_on_controller_failed)
 	Settings.changed.connect(_apply_setting)
-	for key: StringName in Settings.DEFAULTS:
+	for key: StringName in Settings.defaults:
 		_apply_setting(key)
 	restart()
 
@@ -241,12 +241,6 @@ func _apply_setting(key: StringName) -> void:
 	match key:
 		&"controller":
 			bike.controller = value
-		&"trajectories":
-			bike.trajectories = value
-		&"auto_trajectories":
-			bike.auto_trajectories = value
-		&"motor_force":
-			bike.motor_force = value
 		&"max_speed_kmh":
 			_driver.max_speed_kmh = value
 		&"auto_speed_kmh":
@@ -260,4 +254,8 @@ func _apply_setting(key: StringName) -> void:
 		&"physical_model":
 			bike.get_node(^"PhysicalBikeView").visible = value
 			bike.get_node(^"VisualBikeView").visible = not value
+		_:
+			# The ride's and the planners' settings are the bike node's own properties.
+			if Settings.entries[key].owner in ["ride", "planner"]:
+				bike.set(key, value)
 	_driver.steering_locked = level.automatic

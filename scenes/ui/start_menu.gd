@@ -62,11 +62,14 @@ func _build_choices() -> void:
 		_trajectories.add_item(label)
 	_trajectories.selected = Settings.trajectory_choice()
 	_trajectories.item_selected.connect(Settings.choose_trajectories)
-	for speed in Settings.AUTO_SPEEDS:
+	for speed in Settings.offered(&"auto_speed_kmh"):
 		_auto_speed.add_item("test speed %d km/h" % speed)
-	_auto_speed.selected = maxi(Settings.AUTO_SPEEDS.find(Settings.get_value(&"auto_speed_kmh")), 0)
+	_auto_speed.selected = maxi(
+		Settings.offered(&"auto_speed_kmh").find(Settings.get_value(&"auto_speed_kmh")), 0
+	)
 	_auto_speed.item_selected.connect(
-		func(i: int) -> void: Settings.set_value(&"auto_speed_kmh", Settings.AUTO_SPEEDS[i])
+		func(i: int) -> void:
+			Settings.set_value(&"auto_speed_kmh", Settings.offered(&"auto_speed_kmh")[i])
 	)
 	_best_lap.text = "Best lap on the track: %s" % Level.format_time(Settings.best_lap("track"))
 

@@ -155,7 +155,7 @@ func test_spawn_buttons_cycle_through_the_spawn_points() -> void:
 
 
 func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
-	Settings.choose_trajectories(Settings.TRAJECTORY_CHOICES.find(5) + 1)
+	Settings.choose_trajectories(Settings.offered(&"trajectories").find(5) + 1)
 	assert_false(_game.bike.auto_trajectories, "a fixed count turns the automatic choice off")
 	Input.action_press(&"throttle", 0.5)
 	var seen: Array[String] = []
@@ -230,7 +230,7 @@ func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%WatchReplay"))
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
-	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%ShowTrajectories"))
+	assert_eq(get_viewport().gui_get_focus_owner(), menu.control_of(&"show_trajectories"))
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_eq(Settings.get_value(&"show_trajectories"), not before, "A toggled the trajectory view")
 	assert_eq(_game.bike.get_node("TrajectoryView").visible, not before)

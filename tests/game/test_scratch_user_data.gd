@@ -31,4 +31,4 @@ func test_the_sandbox_starts_with_its_folders_absent() -> void:
 	assert_true(DirAccess.dir_exists_absolute(SettingsSandbox.GHOSTS), "the ghost folder is made")
 	assert_eq(DirAccess.get_files_at(SettingsSandbox.GHOSTS).size(), 0, "and holds nothing")
 	assert_false(is_finite(Settings.best_lap("track")), "no records")
-	assert_eq(Settings.get_value(&"trajectories"), Settings.DEFAULTS[&"trajectories"])
+	assert_eq(Settings.get_value(&"trajectories"), Settings.defaults[&"trajectories"])

@@ -101,6 +101,7 @@ func test_a_top_speed_set_after_the_throttle_still_applies() -> void:
 func test_the_baseline_planners_plan_with_their_settings_and_survive_bad_ones() -> void:
 	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
 	_bike.controller = "mppi"
+	_bike.auto_trajectories = false
 	_bike.trajectories = 6
 	_bike.plan_wait_ms = 1000.0
 	_bike.baseline_knots = 4
@@ -120,6 +121,7 @@ func test_the_baseline_planners_plan_with_their_settings_and_survive_bad_ones() 
 func test_the_optimizer_settings_shape_its_plans() -> void:
 	await _spawn(Transform3D(Basis(), Vector3(0, 0.02, 0)))
 	_bike.controller = "combined"
+	_bike.auto_trajectories = false
 	_bike.trajectories = 4
 	_bike.horizon = 0.6
 	_bike.plan_wait_ms = 1000.0
@@ -184,6 +186,7 @@ func test_a_dying_planner_is_reported_once_and_the_arcade_controller_steps_in() 
 	await _spawn(start)
 	_bike.set_physics_process(false)
 	_bike.controller = "combined"
+	_bike.auto_trajectories = false
 	_bike.trajectories = 4
 	_bike.wait_for_every_plan = true
 	var reasons: Array[String] = []

@@ -35,7 +35,7 @@ func _write_forever() -> void:
 	var round := roundi((100.0 - best) / 0.001) if is_finite(best) else 0
 	while true:
 		round += 1
-		Settings.set_value(&"trajectories", Settings.TRAJECTORY_CHOICES[round % 6])
+		Settings.set_value(&"trajectories", Settings.offered(&"trajectories")[round % 6])
 		Settings.record_lap(LEVEL, _lap_time(round))
 		GhostFile.save(_ghost(round), LEVEL, Settings.ghost_path(LEVEL))
 		print("saved round %d" % round)
@@ -49,7 +49,7 @@ func _check() -> int:
 		for file: String in DirAccess.get_files_at(folder):
 			if file.ends_with(".broken"):
 				problems.append("%s was set aside as broken" % file)
-	if not Settings.TRAJECTORY_CHOICES.has(Settings.get_value(&"trajectories")):
+	if not Settings.offered(&"trajectories").has(Settings.get_value(&"trajectories")):
 		problems.append("settings hold %s" % Settings.get_value(&"trajectories"))
 	var loaded := GhostFile.load_ghost(Settings.ghost_path(LEVEL), LEVEL, BODIES)
 	var ghost := loaded.recording as RideRecording

@@ -7,6 +7,8 @@ import json
 from dataclasses import dataclass
 from pathlib import Path
 
+from .settings import SETTINGS
+
 THESIS_SPEEDS = (10, 15, 20, 25)
 THESIS_CONTROLLERS = (
     "arcade",
@@ -19,11 +21,11 @@ THESIS_CONTROLLERS = (
 )
 # The controller registry (cpbp_core::ride::ControllerKind::ALL) as the native tests
 # write it into controllers.json and hold it equal: every controller's name, menu label,
-# whether players pick it and whether it plans, and the trajectory counts the ride takes
-# (cpbp_core::ride::limits). The worker also refuses a name the registry does not know.
+# whether players pick it and whether it plans. The worker also refuses a name the
+# registry does not know. The trajectory counts the ride takes are the settings schema's.
 _NATIVE = json.loads(Path(__file__).with_name("controllers.json").read_text("utf-8"))
 REGISTRY = tuple(_NATIVE["controllers"])
-MIN_TRAJECTORIES, MAX_TRAJECTORIES = (int(n) for n in _NATIVE["trajectories"])
+MIN_TRAJECTORIES, MAX_TRAJECTORIES = (int(n) for n in SETTINGS["trajectories"].range[:2])
 PLANNERS = tuple(entry["name"] for entry in REGISTRY if entry["plans"])
 # The controllers players pick that drive by themselves, without trajectories or an N
 # (arcade, learned).

@@ -7,6 +7,7 @@ mod build_info;
 pub mod control;
 pub mod physics;
 pub mod ride;
+pub mod settings;
 pub mod simulation;
 pub mod terrain;
 

@@ -34,7 +34,7 @@ impl Default for SimulationConfig {
         Self {
             gravity: DVec3::new(0.0, -GRAVITY, 0.0),
             control_dt: 1.0 / 30.0,
-            substeps: 4,
+            substeps: crate::settings::SUBSTEPS.default_number() as usize,
             physics: PhysicsModel::default(),
             bike: BikeParams::default(),
         }

@@ -15,7 +15,7 @@ use cpbp_core::control::{
 };
 use cpbp_core::ode::WorldState;
 use cpbp_core::ride::{
-    limits, Controller, ControllerEntry, ControllerKind, Drives, Intent, Ride, RideState,
+    Controller, ControllerEntry, ControllerKind, Drives, Intent, Ride, RideState,
 };
 
 /// A controller that leaves the bar alone and counts how often it was asked.
@@ -142,8 +142,7 @@ fn a_new_planner_is_a_spec_and_an_entry_and_plans_on_the_planning_thread() {
     assert_eq!(ride.late_plans(), 0);
 }
 
-/// The registry as the Python tools read it (tools/cpbp_experiment/controllers.json),
-/// with the range of the trajectory count they accept.
+/// The registry as the Python tools read it (tools/cpbp_experiment/controllers.json).
 fn registry_json() -> String {
     let entries: Vec<String> = ControllerKind::ALL
         .iter()
@@ -157,12 +156,9 @@ fn registry_json() -> String {
             )
         })
         .collect();
-    let trajectories = limits::TRAJECTORIES;
     format!(
-        "{{\n  \"controllers\": [\n{}\n  ],\n  \"trajectories\": [{}, {}]\n}}\n",
-        entries.join(",\n"),
-        trajectories.min,
-        trajectories.max
+        "{{\n  \"controllers\": [\n{}\n  ]\n}}\n",
+        entries.join(",\n")
     )
 }
 

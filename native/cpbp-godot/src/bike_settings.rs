@@ -1,4 +1,4 @@
-//! The node's exports as the ride's settings: which controller drives, how the planners
+//! The node's settings as the ride's: which controller drives, how the planners
 //! plan and what the pedals drive. GDScript and the inspector may change them at any
 //! time, in any order; before every physics tick they are read, clamped to the core's
 //! limits, and handed to the ride when they differ from what it has.
@@ -7,7 +7,8 @@ use std::time::Duration;
 
 use cpbp_core::control::{BaselineSettings, CostTolerances, OptimizerConfig, PlanWait};
 use cpbp_core::physics::{PhysicsModel, RolloutStepping};
-use cpbp_core::ride::{limits, PlannerSettings, GAME_PLAN_WAIT};
+use cpbp_core::ride::PlannerSettings;
+use cpbp_core::settings::*;
 
 use crate::bike_simulation::BikeSimulation;
 
@@ -27,58 +28,48 @@ impl BikeSimulation {
             if ride.planner != planner {
                 ride.planner = planner;
             }
-            ride.wait_for_throttle = self.wait_for_throttle;
+            ride.wait_for_throttle = self.settings.flag(&WAIT_FOR_THROTTLE);
         }
     }
 
-    /// The planners' settings the exports ask for, within the core's limits (a value
-    /// that is not a number counts as the default).
+    /// The planners' settings the node's settings ask for (each already within its
+    /// range: `SettingValues` clamps what is set).
     fn planner_settings(&self) -> PlannerSettings {
-        let defaults = OptimizerConfig::default();
-        let baseline = BaselineSettings::default();
+        let values = &self.settings;
         // The built ride's physics: a change of the export waits for the next build.
         let physics = self
             .sim()
             .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
         let mut optimizer = OptimizerConfig {
-            particles: limits::TRAJECTORIES.clamp_count(self.trajectories.into()),
-            horizon: limits::HORIZON_S.clamp(self.horizon, defaults.horizon),
+            particles: values.count(&TRAJECTORIES),
+            horizon: values.number(&HORIZON_S),
             tolerances: CostTolerances {
-                lean: limits::LEAN_TOLERANCE_DEG
-                    .clamp(
-                        self.lean_tolerance_deg,
-                        defaults.tolerances.lean.to_degrees(),
-                    )
-                    .to_radians(),
-                rider: limits::RIDER_TOLERANCE_CM
-                    .clamp(self.rider_tolerance_cm, defaults.tolerances.rider * 100.0)
-                    / 100.0,
+                lean: values.number(&LEAN_TOLERANCE_DEG).to_radians(),
+                rider: values.number(&RIDER_TOLERANCE_CM) / 100.0,
             },
-            threads: limits::PLANNING_THREADS.clamp_count(self.planning_threads.into()),
-            seed: self.planner_seed as u64,
+            threads: values.count(&PLANNING_THREADS),
+            seed: values.integer(&PLANNER_SEED) as u64,
             baseline: BaselineSettings {
-                knots: limits::BASELINE_KNOTS.clamp_count(self.baseline_knots.into()),
-                noise: limits::BASELINE_NOISE.clamp(self.baseline_noise, baseline.noise),
-                temperature: limits::MPPI_TEMPERATURE
-                    .clamp(self.mppi_temperature, baseline.temperature),
-                steering_only: self.baseline_steering_only,
+                knots: values.count(&BASELINE_KNOTS),
+                noise: values.number(&BASELINE_NOISE),
+                temperature: values.number(&MPPI_TEMPERATURE),
+                steering_only: values.flag(&BASELINE_STEERING_ONLY),
             },
             policy: crate::policy_model::policy_at(&self.policy_model),
-            ..defaults
+            ..OptimizerConfig::default()
         }
         .rolling_out_in(physics);
-        let rollout_substeps = limits::ROLLOUT_SUBSTEPS.clamp_count(self.rollout_substeps.into());
+        let rollout_substeps = values.count(&ROLLOUT_SUBSTEPS);
         if rollout_substeps > 0 {
             optimizer.rollout_stepping = RolloutStepping::uniform(rollout_substeps);
         }
         PlannerSettings {
             optimizer,
-            auto_trajectories: self.auto_trajectories,
-            wait: if self.wait_for_every_plan {
+            auto_trajectories: values.flag(&AUTO_TRAJECTORIES),
+            wait: if values.flag(&WAIT_FOR_EVERY_PLAN) {
                 PlanWait::EveryPlan
             } else {
-                let default_ms = GAME_PLAN_WAIT.as_secs_f64() * 1000.0;
-                let wait_ms = limits::PLAN_WAIT_MS.clamp(self.plan_wait_ms, default_ms);
+                let wait_ms = values.number(&PLAN_WAIT_MS);
                 PlanWait::AtMost(Duration::from_secs_f64(wait_ms / 1000.0))
             },
         }

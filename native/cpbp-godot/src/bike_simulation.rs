@@ -5,19 +5,20 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Part, CONTROL_DIM};
-use cpbp_core::control::cpbp::DEFAULT_SEED;
-use cpbp_core::control::{BaselineSettings, CostTolerances, OptimizerConfig};
-use cpbp_core::ride::{limits, ControllerKind, Intent, Ride, GAME_PLAN_WAIT};
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::settings::{self, SettingValues};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
 use godot::classes::{INode3D, Node3D};
 use godot::prelude::*;
+use godot::register::info::PropertyInfo;
 
 use crate::bike_description::{params_of, BikeDescription};
 use crate::bike_queries::pose_of;
 use crate::controller_choice::ControllerChoice;
 use crate::convert::{finite_input, placement};
+use crate::node_settings;
 use crate::physics_choice::BikePhysics;
 use crate::terrain_import;
 
@@ -33,23 +34,11 @@ pub struct BikeSimulation {
     #[export]
     #[init(val = NodePath::from(".."))]
     terrain_root: NodePath,
-    /// Speed (km/h) full throttle drives towards.
-    #[export(range = (limits::MAX_SPEED_KMH.min, limits::MAX_SPEED_KMH.max))]
-    #[init(val = 25.0)]
-    max_speed_kmh: f64,
-    /// Share of the rear motor's torque (700 N·m) that full throttle or brake uses.
-    #[export(range = (limits::MOTOR_FORCE.min, limits::MOTOR_FORCE.max, 0.05))]
-    #[init(val = 1.0)]
-    motor_force: f64,
     /// The bike, as data (bikes/*.tres); none rides the reference bike. Read when the
     /// ride is built (`_ready`); a description that cannot be built is an error and no
     /// ride is built.
     #[export]
     bike: Option<Gd<BikeDescription>>,
-    /// ODE steps per control step (more: stiffer joints, slower).
-    #[export(range = (limits::SUBSTEPS.min, limits::SUBSTEPS.max))]
-    #[init(val = SimulationConfig::default().substeps as i32)]
-    substeps: i32,
     /// The physics model, by name: `classic` (QuickStep, the physics the thesis
     /// reproduction was evaluated on) or `exact` (direct solver, explicit wheel
     /// gyroscopics: the benchmark bicycle within 10 %, cheaper rollouts). Read when the
@@ -63,79 +52,14 @@ pub struct BikeSimulation {
     #[export]
     #[init(val = ControllerChoice(ControllerKind::ARCADE))]
     pub(crate) controller: ControllerChoice,
-    /// Trajectories the optimizer simulates each control step (N); with
-    /// `auto_trajectories`, the N it starts from.
-    #[export(range = (limits::TRAJECTORIES.min, limits::TRAJECTORIES.max))]
-    #[init(val = OptimizerConfig::default().particles as i32)]
-    pub(crate) trajectories: i32,
-    /// Move N while riding to what this machine plans in time (within
-    /// `auto_trajectory_limits()`): fewer when plans come late, more after a calm spell.
-    /// Ignored with `wait_for_every_plan`, whose rides must repeat exactly. The game turns
-    /// it on from the player's settings (the default there).
-    #[export]
-    pub(crate) auto_trajectories: bool,
-    /// How far ahead the optimizer plans (s); the thesis used 1.2 s.
-    #[export(range = (limits::HORIZON_S.min, limits::HORIZON_S.max, 0.1, suffix = "s"))]
-    #[init(val = OptimizerConfig::default().horizon)]
-    pub(crate) horizon: f64,
-    /// Lean error (degrees) that costs as much as one unit (eq. 4.7's s): smaller tracks
-    /// the requested lean more strictly.
-    #[export(range = (limits::LEAN_TOLERANCE_DEG.min, limits::LEAN_TOLERANCE_DEG.max, 0.5, suffix = "°"))]
-    #[init(val = CostTolerances::default().lean.to_degrees())]
-    pub(crate) lean_tolerance_deg: f64,
-    /// Rider position error (cm) that costs as much as one unit at full stick.
-    #[export(range = (limits::RIDER_TOLERANCE_CM.min, limits::RIDER_TOLERANCE_CM.max, 0.5, suffix = "cm"))]
-    #[init(val = CostTolerances::default().rider * 100.0)]
-    pub(crate) rider_tolerance_cm: f64,
-    /// ODE steps per planning step in the rollouts; 0 takes the physics model's own (4 in
-    /// classic; in exact 2 for the first planning steps, then 1). Fewer plan faster but
-    /// predict a different bike.
-    #[export(range = (limits::ROLLOUT_SUBSTEPS.min, limits::ROLLOUT_SUBSTEPS.max))]
-    pub(crate) rollout_substeps: i32,
-    /// Longest the game waits at a control step for the planning thread (ms); a later
-    /// plan is taken over at a later step while the last best trajectory plays on.
-    #[export(range = (limits::PLAN_WAIT_MS.min, limits::PLAN_WAIT_MS.max, 1.0, suffix = "ms"))]
-    #[init(val = GAME_PLAN_WAIT.as_secs_f64() * 1000.0)]
-    pub(crate) plan_wait_ms: f64,
-    /// Wait at every control step until its plan comes, however long that takes (headless
-    /// tests and experiments): no step uses a late plan, so a ride repeats exactly for its
-    /// seed on a loaded machine too. Off in the game, where a slow plan must not stall.
-    #[export]
-    pub(crate) wait_for_every_plan: bool,
-    /// Threads that simulate the optimizer's trajectories (0: one per core). The
-    /// experiment runs one bike per core with one thread each.
-    #[export(range = (limits::PLANNING_THREADS.min, limits::PLANNING_THREADS.max))]
-    pub(crate) planning_threads: i32,
-    /// Seed of the optimizer's random draws: the same seed, start and inputs give the same
-    /// ride.
-    #[export]
-    #[init(val = DEFAULT_SEED as i64)]
-    pub(crate) planner_seed: i64,
-    /// The baseline planners (`sampling`, `mppi`): knots of a plan over the horizon.
-    #[export(range = (limits::BASELINE_KNOTS.min, limits::BASELINE_KNOTS.max))]
-    #[init(val = BaselineSettings::default().knots as i32)]
-    pub(crate) baseline_knots: i32,
-    /// The baselines' knot perturbation, as a share of the steering prior's σ (4 rad/s).
-    #[export(range = (limits::BASELINE_NOISE.min, limits::BASELINE_NOISE.max, 0.05))]
-    #[init(val = BaselineSettings::default().noise)]
-    pub(crate) baseline_noise: f64,
-    /// MPPI's temperature, relative to the spread of its candidates' costs.
-    #[export(range = (limits::MPPI_TEMPERATURE.min, limits::MPPI_TEMPERATURE.max, 0.001))]
-    #[init(val = BaselineSettings::default().temperature)]
-    pub(crate) mppi_temperature: f64,
-    /// The baselines plan the steering alone, the rider on the pose PD (else every joint).
-    #[export]
-    #[init(val = BaselineSettings::default().steering_only)]
-    pub(crate) baseline_steering_only: bool,
-    /// The ride starts with the first throttle (and again after each reset): until then
-    /// `is_waiting_for_throttle` is true. A bike with feet stands on them; one without
-    /// (classic physics) is held where it was placed: standing, no steering balances it.
-    #[export]
-    pub(crate) wait_for_throttle: bool,
     /// The learned network's model file (the `learned` and `guided` controllers).
     #[export(file = "*.safetensors")]
     #[init(val = crate::policy_model::default_model_path())]
     pub(crate) policy_model: GString,
+    /// The ride's and the planners' settings (`cpbp_core::settings`), shown as the node's
+    /// properties (node_settings.rs): each is clamped into its range when set.
+    #[init(val = node_settings::node_settings())]
+    pub(crate) settings: SettingValues,
     pub(crate) ride: Option<Ride>,
     /// The player's intent as set so far (also before the ride is built).
     pub(crate) intent: Intent,
@@ -166,7 +90,7 @@ impl INode3D for BikeSimulation {
             Err(why) => return godot_error!("BikeSimulation: {why}"),
         };
         let config = SimulationConfig {
-            substeps: limits::SUBSTEPS.clamp_count(self.substeps.into()),
+            substeps: self.settings.count(&settings::SUBSTEPS),
             physics: self.physics.into(),
             bike,
             ..SimulationConfig::default()
@@ -179,6 +103,35 @@ impl INode3D for BikeSimulation {
         self.ride = Some(ride);
         self.sync_settings();
         self.remember_poses();
+    }
+
+    fn on_get_property_list(&mut self) -> Vec<PropertyInfo> {
+        node_settings::property_list(&self.settings)
+    }
+
+    fn on_get(&self, property: StringName) -> Option<Variant> {
+        let value = self.settings.get(&property.to_string())?;
+        Some(node_settings::to_variant(value))
+    }
+
+    fn on_set(&mut self, property: StringName, value: Variant) -> bool {
+        let name = property.to_string();
+        if self.settings.get(&name).is_none() {
+            return false;
+        }
+        match node_settings::from_variant(&value).map(|v| self.settings.set(&name, v)) {
+            Some(Ok(None)) => {}
+            Some(Ok(Some(warning))) => godot_warn!("BikeSimulation: {warning}"),
+            Some(Err(why)) => godot_error!("BikeSimulation: {why}"),
+            None => godot_error!("BikeSimulation: {name} cannot be set to {value}"),
+        }
+        true
+    }
+
+    fn on_property_get_revert(&self, property: StringName) -> Option<Variant> {
+        let setting = settings::find(&property.to_string())?;
+        self.settings.get(setting.name)?;
+        Some(node_settings::to_variant(&setting.default.into()))
     }
 
     fn physics_process(&mut self, delta: f64) {
@@ -364,11 +317,11 @@ impl BikeSimulation {
     /// The drive the pedals ask for with the present top speed and motor share.
     pub(crate) fn drive(&self) -> Option<DriveInput> {
         let (throttle, brake) = self.pedals?;
-        let force = limits::MOTOR_FORCE.clamp(self.motor_force, 1.0);
+        let force = self.settings.number(&settings::MOTOR_FORCE);
         let drive = DriveInput {
             throttle: throttle * force,
             brake: brake * force,
-            max_speed: self.max_speed_kmh / 3.6,
+            max_speed: self.settings.number(&settings::MAX_SPEED_KMH) / 3.6,
         };
         Some(drive.sanitized())
     }

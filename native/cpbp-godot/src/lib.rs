@@ -12,10 +12,12 @@ mod bike_synth;
 mod controller_choice;
 mod convert;
 mod native_info;
+mod node_settings;
 mod ode_world;
 mod physics_choice;
 mod plan_handover;
 mod policy_model;
+mod settings_schema;
 mod terrain_check;
 mod terrain_import;
 

@@ -19,6 +19,7 @@ use crate::bike::{
 };
 use crate::ode::{World, WorldState};
 use crate::physics::RolloutStepping;
+use crate::settings;
 
 /// How strictly the cost holds each part of the goal: the error that costs as much as
 /// one unit.
@@ -33,8 +34,8 @@ pub struct CostTolerances {
 impl Default for CostTolerances {
     fn default() -> Self {
         Self {
-            lean: 5f64.to_radians(),
-            rider: 0.03,
+            lean: settings::LEAN_TOLERANCE_DEG.default_number().to_radians(),
+            rider: settings::RIDER_TOLERANCE_CM.default_number() / 100.0,
         }
     }
 }

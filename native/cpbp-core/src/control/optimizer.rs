@@ -5,13 +5,14 @@
 
 use super::arcade::ArcadeController;
 use super::bike_rollout::{BikeRollout, CostTolerances, RolloutPolicy};
-use super::cpbp::{PlanPhases, PlanResult, DEFAULT_SEED};
+use super::cpbp::{PlanPhases, PlanResult};
 use super::learned::LoadedPolicy;
 use super::planner::{BikePlanner, Follows, PlannerSpec};
 use super::Goal;
 use crate::bike::Controls;
 use crate::ode::Solver;
 use crate::physics::{PhysicsModel, RolloutStepping};
+use crate::settings;
 use crate::simulation::Simulation;
 
 /// What the baseline planners (predictive sampling, MPPI) sample and how widely.
@@ -34,10 +35,10 @@ impl Default for BaselineSettings {
     /// and MPPI at temperature 0.01 tracked a 15° turn best.
     fn default() -> Self {
         Self {
-            knots: 10,
-            noise: 0.5,
-            temperature: 0.01,
-            steering_only: true,
+            knots: settings::BASELINE_KNOTS.default_number() as usize,
+            noise: settings::BASELINE_NOISE.default_number(),
+            temperature: settings::MPPI_TEMPERATURE.default_number(),
+            steering_only: settings::BASELINE_STEERING_ONLY.default_number() != 0.0,
         }
     }
 }
@@ -78,14 +79,14 @@ pub struct OptimizerConfig {
 impl Default for OptimizerConfig {
     fn default() -> Self {
         Self {
-            particles: 15,
-            horizon: 1.2,
+            particles: settings::TRAJECTORIES.default_number() as usize,
+            horizon: settings::HORIZON_S.default_number(),
             rollout_stepping: RolloutStepping::uniform(4),
             rollout_solver: Solver::QuickStep,
             tolerances: CostTolerances::default(),
             mutation_scale: 0.2,
             control_cost_weight: 0.01,
-            seed: DEFAULT_SEED,
+            seed: settings::PLANNER_SEED.default_number() as u64,
             threads: 0,
             baseline: BaselineSettings::default(),
             policy: LoadedPolicy::default(),

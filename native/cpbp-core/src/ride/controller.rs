@@ -7,6 +7,7 @@ use std::time::Duration;
 
 use crate::bike::{Controls, DriveInput, RiderPosition};
 use crate::control::{Goal, HandoverStats, OptimizerConfig, Plan, PlanWait};
+use crate::settings;
 use crate::simulation::Simulation;
 
 /// What the player asks for.
@@ -108,7 +109,8 @@ impl PlannerSettings {
 
 /// Longest the game waits at a control step for a plan: a frame of 60 Hz less what
 /// the step itself and the drawing need, so a slow plan never stalls the game.
-pub const GAME_PLAN_WAIT: Duration = Duration::from_millis(12);
+pub const GAME_PLAN_WAIT: Duration =
+    Duration::from_millis(settings::PLAN_WAIT_MS.default_number() as u64);
 
 impl Default for PlannerSettings {
     /// The game's: the optimizer's defaults, waiting at most `GAME_PLAN_WAIT` at a step.
@@ -116,7 +118,7 @@ impl Default for PlannerSettings {
         Self {
             optimizer: OptimizerConfig::default(),
             wait: PlanWait::AtMost(GAME_PLAN_WAIT),
-            auto_trajectories: false,
+            auto_trajectories: settings::AUTO_TRAJECTORIES.default_number() != 0.0,
         }
     }
 }

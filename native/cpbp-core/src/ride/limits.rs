@@ -1,62 +1,40 @@
 //! The ranges the ride's settings may be set in, by a player, a level designer or a
-//! script: the game node's inspector ranges and its clamps of what scripts set both read
-//! these, and the experiment's tools get the trajectory count's through the registry's
-//! copy (tools/cpbp_experiment/controllers.json). Each name says its unit.
+//! script, as the settings schema (`crate::settings`) gives them: the game node's clamps
+//! and the tools read these. Each name says its unit.
 
-use crate::bike::TOP_SPEED_KMH;
+use crate::settings::{self, Range};
 
 /// An inclusive range of one setting.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Limit {
-    pub min: f64,
-    pub max: f64,
-}
-
-impl Limit {
-    const fn new(min: f64, max: f64) -> Self {
-        Self { min, max }
-    }
-
-    /// `value` within the range, or `fallback` (clamped too) if it is not a number.
-    pub fn clamp(self, value: f64, fallback: f64) -> f64 {
-        let value = if value.is_finite() { value } else { fallback };
-        value.clamp(self.min, self.max)
-    }
-
-    /// A whole-number setting within the range.
-    pub fn clamp_count(self, value: i64) -> usize {
-        value.clamp(self.min as i64, self.max as i64) as usize
-    }
-}
+pub type Limit = Range;
 
 /// Trajectories a planner simulates per control step (N).
-pub const TRAJECTORIES: Limit = Limit::new(1.0, 256.0);
+pub const TRAJECTORIES: Limit = settings::TRAJECTORIES.limit();
 /// The trajectories the game's automatic choice moves between (`auto_trajectories`).
-pub const AUTO_TRAJECTORIES: Limit = Limit::new(5.0, 64.0);
+pub const AUTO_TRAJECTORIES: Limit = settings::AUTO_TRAJECTORY_RANGE;
 /// How far ahead the planners plan (s).
-pub const HORIZON_S: Limit = Limit::new(0.2, 3.0);
+pub const HORIZON_S: Limit = settings::HORIZON_S.limit();
 /// Lean error that costs one unit (degrees).
-pub const LEAN_TOLERANCE_DEG: Limit = Limit::new(1.0, 30.0);
+pub const LEAN_TOLERANCE_DEG: Limit = settings::LEAN_TOLERANCE_DEG.limit();
 /// Rider position error that costs one unit at full stick (cm).
-pub const RIDER_TOLERANCE_CM: Limit = Limit::new(1.0, 20.0);
+pub const RIDER_TOLERANCE_CM: Limit = settings::RIDER_TOLERANCE_CM.limit();
 /// Longest the game waits at a control step for a plan (ms).
-pub const PLAN_WAIT_MS: Limit = Limit::new(0.0, 1000.0);
+pub const PLAN_WAIT_MS: Limit = settings::PLAN_WAIT_MS.limit();
 /// Threads that simulate the trajectories (0: one per core).
-pub const PLANNING_THREADS: Limit = Limit::new(0.0, 64.0);
+pub const PLANNING_THREADS: Limit = settings::PLANNING_THREADS.limit();
 /// ODE steps per planning step in the rollouts (0: the physics model's own).
-pub const ROLLOUT_SUBSTEPS: Limit = Limit::new(0.0, 8.0);
+pub const ROLLOUT_SUBSTEPS: Limit = settings::ROLLOUT_SUBSTEPS.limit();
 /// ODE steps per control step of the master.
-pub const SUBSTEPS: Limit = Limit::new(1.0, 16.0);
+pub const SUBSTEPS: Limit = settings::SUBSTEPS.limit();
 /// The baseline planners' knots over the horizon.
-pub const BASELINE_KNOTS: Limit = Limit::new(2.0, 36.0);
+pub const BASELINE_KNOTS: Limit = settings::BASELINE_KNOTS.limit();
 /// The baselines' knot perturbation, as a share of the steering prior's σ.
-pub const BASELINE_NOISE: Limit = Limit::new(0.05, 2.0);
+pub const BASELINE_NOISE: Limit = settings::BASELINE_NOISE.limit();
 /// MPPI's temperature, relative to the spread of its candidates' costs.
-pub const MPPI_TEMPERATURE: Limit = Limit::new(0.001, 1.0);
+pub const MPPI_TEMPERATURE: Limit = settings::MPPI_TEMPERATURE.limit();
 /// Speed full throttle drives towards (km/h).
-pub const MAX_SPEED_KMH: Limit = Limit::new(1.0, TOP_SPEED_KMH);
+pub const MAX_SPEED_KMH: Limit = settings::MAX_SPEED_KMH.limit();
 /// Share of the rear motor's torque that full throttle or brake uses.
-pub const MOTOR_FORCE: Limit = Limit::new(0.1, 1.0);
+pub const MOTOR_FORCE: Limit = settings::MOTOR_FORCE.limit();
 
 #[cfg(test)]
 mod tests {

@@ -136,6 +136,8 @@ fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
         ControllerKind::COMBINED,
     );
     ride.planner.optimizer.particles = n;
+    // At this N throughout: the automatic choice would move it.
+    ride.planner.auto_trajectories = false;
     ride.planner.wait = PlanWait::AtMost(Duration::from_millis(10));
     ride.set_intent(Intent {
         drive: DriveInput {

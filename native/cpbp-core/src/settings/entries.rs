@@ -1,0 +1,326 @@
+//! The entries themselves. Each constant is one setting; `ENTRIES` lists them in the order
+//! menus and the inspector show them. The core's own defaults (`OptimizerConfig`,
+//! `SimulationConfig`, the ride's clamps) read their constant here.
+
+use super::{DefaultValue as D, Owner, Range, Setting};
+use crate::bike::TOP_SPEED_KMH;
+
+/// What an entry is unless it says otherwise: a planner's number, hidden from players.
+const BASE: Setting = Setting {
+    name: "",
+    label: "",
+    description: "",
+    unit: "",
+    default: D::Float(0.0),
+    range: None,
+    offered: &[],
+    owner: Owner::Planner,
+    player: false,
+    menu: "",
+};
+
+// The ride: what the pedals drive and how the master simulation steps.
+
+pub const MAX_SPEED_KMH: Setting = Setting {
+    name: "max_speed_kmh",
+    label: "Top speed",
+    description: "Speed full throttle drives towards.",
+    unit: "km/h",
+    default: D::Float(40.0),
+    range: Some(Range::new(1.0, TOP_SPEED_KMH, 1.0)),
+    owner: Owner::Ride,
+    player: true,
+    menu: "Riding",
+    ..BASE
+};
+pub const MOTOR_FORCE: Setting = Setting {
+    name: "motor_force",
+    label: "Motor force",
+    description: "Share of the rear motor's torque that full throttle or brake uses.",
+    unit: "share",
+    default: D::Float(0.6),
+    range: Some(Range::new(0.1, 1.0, 0.05)),
+    owner: Owner::Ride,
+    player: true,
+    menu: "Riding",
+    ..BASE
+};
+pub const SUBSTEPS: Setting = Setting {
+    name: "substeps",
+    label: "Substeps",
+    description: "ODE steps per control step (more: stiffer joints, slower); read when the \
+                  ride is built.",
+    default: D::Int(4),
+    range: Some(Range::new(1.0, 16.0, 1.0)),
+    owner: Owner::Ride,
+    ..BASE
+};
+pub const PLAN_WAIT_MS: Setting = Setting {
+    name: "plan_wait_ms",
+    label: "Plan wait",
+    description: "Longest the game waits at a control step for the planning thread; a \
+                  later plan is taken over at a later step while the last best trajectory \
+                  plays on.",
+    unit: "ms",
+    default: D::Float(12.0),
+    range: Some(Range::new(0.0, 1000.0, 1.0)),
+    owner: Owner::Ride,
+    ..BASE
+};
+pub const WAIT_FOR_EVERY_PLAN: Setting = Setting {
+    name: "wait_for_every_plan",
+    label: "Wait for every plan",
+    description: "Wait at every control step until its plan comes (headless tests and \
+                  experiments), so a ride repeats exactly for its seed on a loaded machine \
+                  too. Off in the game, where a slow plan must not stall.",
+    default: D::Bool(false),
+    owner: Owner::Ride,
+    ..BASE
+};
+pub const WAIT_FOR_THROTTLE: Setting = Setting {
+    name: "wait_for_throttle",
+    label: "Wait for throttle",
+    description: "The ride starts with the first throttle (and again after each reset); a \
+                  bike with feet stands on them until then, one without is held.",
+    default: D::Bool(false),
+    owner: Owner::Ride,
+    ..BASE
+};
+
+// The planners.
+
+pub const TRAJECTORIES: Setting = Setting {
+    name: "trajectories",
+    label: "Trajectories",
+    description: "Trajectories a planner simulates each control step (N); with \
+                  auto_trajectories, the N it starts from.",
+    default: D::Int(15),
+    range: Some(Range::new(1.0, 256.0, 1.0)),
+    offered: &[5.0, 10.0, 15.0, 32.0, 64.0, 128.0],
+    player: true,
+    ..BASE
+};
+/// Not a setting of its own: the range the automatic choice moves N in.
+pub const AUTO_TRAJECTORY_RANGE: Range = Range::new(5.0, 64.0, 1.0);
+pub const AUTO_TRAJECTORIES: Setting = Setting {
+    name: "auto_trajectories",
+    label: "Auto trajectories",
+    description: "Move N while riding to what this machine plans in time: fewer when plans \
+                  come late, more after a calm spell. Ignored with wait_for_every_plan.",
+    default: D::Bool(true),
+    player: true,
+    ..BASE
+};
+pub const HORIZON_S: Setting = Setting {
+    name: "horizon",
+    label: "Horizon",
+    description: "How far ahead the planners plan; the thesis used 1.2 s.",
+    unit: "s",
+    default: D::Float(1.2),
+    range: Some(Range::new(0.2, 3.0, 0.1)),
+    ..BASE
+};
+pub const LEAN_TOLERANCE_DEG: Setting = Setting {
+    name: "lean_tolerance_deg",
+    label: "Lean tolerance",
+    description: "Lean error that costs as much as one unit (eq. 4.7's s): smaller tracks \
+                  the requested lean more strictly.",
+    unit: "°",
+    default: D::Float(5.0),
+    range: Some(Range::new(1.0, 30.0, 0.5)),
+    ..BASE
+};
+pub const RIDER_TOLERANCE_CM: Setting = Setting {
+    name: "rider_tolerance_cm",
+    label: "Rider tolerance",
+    description: "Rider position error that costs as much as one unit at full stick.",
+    unit: "cm",
+    default: D::Float(3.0),
+    range: Some(Range::new(1.0, 20.0, 0.5)),
+    ..BASE
+};
+pub const ROLLOUT_SUBSTEPS: Setting = Setting {
+    name: "rollout_substeps",
+    label: "Rollout substeps",
+    description: "ODE steps per planning step in the rollouts; 0 takes the physics model's \
+                  own. Fewer plan faster but predict a different bike.",
+    default: D::Int(0),
+    range: Some(Range::new(0.0, 8.0, 1.0)),
+    ..BASE
+};
+pub const PLANNING_THREADS: Setting = Setting {
+    name: "planning_threads",
+    label: "Planning threads",
+    description: "Threads that simulate the trajectories (0: one per core).",
+    default: D::Int(0),
+    range: Some(Range::new(0.0, 64.0, 1.0)),
+    ..BASE
+};
+pub const PLANNER_SEED: Setting = Setting {
+    name: "planner_seed",
+    label: "Planner seed",
+    description: "Seed of the planners' random draws: the same seed, start and inputs give \
+                  the same ride.",
+    default: D::Int(crate::control::cpbp::DEFAULT_SEED as i64),
+    range: Some(Range::new(i64::MIN as f64, i64::MAX as f64, 1.0)),
+    ..BASE
+};
+pub const BASELINE_KNOTS: Setting = Setting {
+    name: "baseline_knots",
+    label: "Baseline knots",
+    description: "The baseline planners (sampling, mppi): knots of a plan over the horizon.",
+    default: D::Int(10),
+    range: Some(Range::new(2.0, 36.0, 1.0)),
+    ..BASE
+};
+pub const BASELINE_NOISE: Setting = Setting {
+    name: "baseline_noise",
+    label: "Baseline noise",
+    description: "The baselines' knot perturbation, as a share of the steering prior's σ.",
+    default: D::Float(0.5),
+    range: Some(Range::new(0.05, 2.0, 0.05)),
+    ..BASE
+};
+pub const MPPI_TEMPERATURE: Setting = Setting {
+    name: "mppi_temperature",
+    label: "MPPI temperature",
+    description: "MPPI's temperature, relative to the spread of its candidates' costs.",
+    default: D::Float(0.01),
+    range: Some(Range::new(0.001, 1.0, 0.001)),
+    ..BASE
+};
+pub const BASELINE_STEERING_ONLY: Setting = Setting {
+    name: "baseline_steering_only",
+    label: "Baselines steer only",
+    description: "The baselines plan the steering alone, the rider on the pose PD (else \
+                  every joint).",
+    default: D::Bool(true),
+    ..BASE
+};
+
+// The game's own.
+
+pub const CONTROLLER: Setting = Setting {
+    name: "controller",
+    label: "Controller",
+    description: "Who balances and steers, by the controller registry's name.",
+    default: D::Text("combined"),
+    owner: Owner::Game,
+    player: true,
+    menu: "Riding",
+    ..BASE
+};
+pub const AUTO_SPEED_KMH: Setting = Setting {
+    name: "auto_speed_kmh",
+    label: "Auto-accelerate speed",
+    description: "Speed auto-accelerate holds; the thesis tested 10, 15, 20 and 25 km/h.",
+    unit: "km/h",
+    default: D::Int(15),
+    range: Some(Range::new(5.0, 60.0, 1.0)),
+    offered: &[10.0, 15.0, 20.0, 25.0],
+    owner: Owner::Game,
+    player: true,
+    menu: "Riding",
+};
+pub const AUTO_ACCELERATE: Setting = Setting {
+    name: "auto_accelerate",
+    label: "Auto-accelerate",
+    description: "Hold the auto-accelerate speed without the triggers.",
+    default: D::Bool(false),
+    owner: Owner::Game,
+    player: true,
+    ..BASE
+};
+pub const LEVEL: Setting = Setting {
+    name: "level",
+    label: "Level",
+    description: "The level the start menu offers first.",
+    default: D::Text("test_level"),
+    owner: Owner::Game,
+    player: true,
+    ..BASE
+};
+pub const CAMERA: Setting = Setting {
+    name: "camera",
+    label: "Camera",
+    description: "The follow camera's mode: chase, low side or helmet.",
+    default: D::Text("chase"),
+    owner: Owner::Display,
+    player: true,
+    ..BASE
+};
+pub const SHOW_TRAJECTORIES: Setting = Setting {
+    name: "show_trajectories",
+    label: "Show trajectories",
+    description: "Draw the planners' trajectories over the road.",
+    default: D::Bool(true),
+    owner: Owner::Display,
+    player: true,
+    menu: "View",
+    ..BASE
+};
+pub const PHYSICAL_MODEL: Setting = Setting {
+    name: "physical_model",
+    label: "Show physical bodies",
+    description: "Show the simulated bodies instead of the bike's and rider's looks.",
+    default: D::Bool(false),
+    owner: Owner::Display,
+    player: true,
+    menu: "View",
+    ..BASE
+};
+pub const MASTER_VOLUME: Setting = Setting {
+    name: "master_volume",
+    label: "Volume",
+    description: "Loudness of everything the game plays (0: silent).",
+    unit: "share",
+    default: D::Float(0.8),
+    range: Some(Range::new(0.0, 1.0, 0.05)),
+    owner: Owner::Sound,
+    player: true,
+    menu: "Sound",
+    ..BASE
+};
+pub const ENGINE_VOLUME: Setting = Setting {
+    name: "engine_volume",
+    label: "Engine",
+    description: "Loudness of the engine against the rest.",
+    unit: "share",
+    default: D::Float(1.0),
+    range: Some(Range::new(0.0, 1.0, 0.05)),
+    owner: Owner::Sound,
+    player: true,
+    menu: "Sound",
+    ..BASE
+};
+
+/// Every compiled entry, in the order menus and the inspector show them.
+pub const ENTRIES: &[Setting] = &[
+    SHOW_TRAJECTORIES,
+    PHYSICAL_MODEL,
+    CONTROLLER,
+    MAX_SPEED_KMH,
+    MOTOR_FORCE,
+    AUTO_SPEED_KMH,
+    AUTO_ACCELERATE,
+    MASTER_VOLUME,
+    ENGINE_VOLUME,
+    LEVEL,
+    CAMERA,
+    TRAJECTORIES,
+    AUTO_TRAJECTORIES,
+    HORIZON_S,
+    LEAN_TOLERANCE_DEG,
+    RIDER_TOLERANCE_CM,
+    ROLLOUT_SUBSTEPS,
+    PLANNING_THREADS,
+    PLANNER_SEED,
+    BASELINE_KNOTS,
+    BASELINE_NOISE,
+    MPPI_TEMPERATURE,
+    BASELINE_STEERING_ONLY,
+    SUBSTEPS,
+    PLAN_WAIT_MS,
+    WAIT_FOR_EVERY_PLAN,
+    WAIT_FOR_THROTTLE,
+];

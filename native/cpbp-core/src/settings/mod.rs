@@ -1,0 +1,205 @@
+//! The settings schema: every setting a player, a level designer, a script or a tool may
+//! change, each described once — name, label, unit, default, range, who owns it, whether
+//! players see it and where menus show it. The game node's properties and clamps, the
+//! player's settings file and its pause menu, and the Python tools
+//! (tools/cpbp_experiment/settings.json, written from here) all read these entries, so
+//! changing a default or a range is one edit in entries.rs.
+//!
+//! Entries may be added at run time (`extend`): a mod's setting, or a test's throwaway
+//! one, then reaches every reader as a compiled entry does.
+
+mod entries;
+mod json;
+mod values;
+
+pub use entries::*;
+pub use json::schema_json;
+pub use values::{SettingValues, Value};
+
+use std::sync::{PoisonError, RwLock};
+
+/// Who reads a setting: the ride (the game node's drive and stepping), the planners, the
+/// bike, the game's scripts, what is drawn, or what is heard.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Owner {
+    Ride,
+    Planner,
+    Bike,
+    Game,
+    Display,
+    Sound,
+}
+
+impl Owner {
+    pub const fn name(self) -> &'static str {
+        match self {
+            Owner::Ride => "ride",
+            Owner::Planner => "planner",
+            Owner::Bike => "bike",
+            Owner::Game => "game",
+            Owner::Display => "display",
+            Owner::Sound => "sound",
+        }
+    }
+
+    /// Whether the game node (`BikeSimulation`) carries the owner's settings as its own
+    /// properties.
+    pub const fn on_the_node(self) -> bool {
+        matches!(self, Owner::Ride | Owner::Planner)
+    }
+}
+
+/// A setting's default, which is also its type.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DefaultValue {
+    Bool(bool),
+    Int(i64),
+    Float(f64),
+    /// A name (a level, a camera mode, a controller).
+    Text(&'static str),
+}
+
+/// Where a number may be set: inclusive bounds and the step sliders move by.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range {
+    pub min: f64,
+    pub max: f64,
+    pub step: f64,
+}
+
+impl Range {
+    pub const fn new(min: f64, max: f64, step: f64) -> Self {
+        Self { min, max, step }
+    }
+
+    /// `value` within the range, or `fallback` (clamped too) if it is not a number.
+    pub fn clamp(self, value: f64, fallback: f64) -> f64 {
+        let value = if value.is_finite() { value } else { fallback };
+        value.clamp(self.min, self.max)
+    }
+
+    /// A whole-number setting within the range.
+    pub fn clamp_count(self, value: i64) -> usize {
+        value.clamp(self.min as i64, self.max as i64) as usize
+    }
+}
+
+/// One setting, described once.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Setting {
+    /// Its name everywhere: the node's property, the settings file's key, the tools' key.
+    pub name: &'static str,
+    /// What menus call it.
+    pub label: &'static str,
+    /// One sentence for the inspector, the docs and the tools' help.
+    pub description: &'static str,
+    /// The unit its numbers are in ("" for none; "share" for 0–1, shown as a percentage).
+    pub unit: &'static str,
+    pub default: DefaultValue,
+    /// Where a number may be set (None for a switch or a name).
+    pub range: Option<Range>,
+    /// The values menus offer, when a list suits it better than a slider.
+    pub offered: &'static [f64],
+    pub owner: Owner,
+    /// Whether players see it: kept in their settings file.
+    pub player: bool,
+    /// The pause menu's group it is shown in ("": not shown there).
+    pub menu: &'static str,
+}
+
+impl Setting {
+    /// The default as a number (0 for a name, 1 for true).
+    pub const fn default_number(&self) -> f64 {
+        match self.default {
+            DefaultValue::Bool(on) => on as i64 as f64,
+            DefaultValue::Int(n) => n as f64,
+            DefaultValue::Float(x) => x,
+            DefaultValue::Text(_) => 0.0,
+        }
+    }
+
+    /// The range of a number setting; a switch or a name has none and this panics at
+    /// compile time when used in a constant.
+    pub const fn limit(&self) -> Range {
+        match self.range {
+            Some(range) => range,
+            None => panic!("the setting has no range"),
+        }
+    }
+
+    /// Whether `value` may be this setting's value: the right type, and a number within
+    /// the range.
+    pub fn check(&self, value: &Value) -> Result<(), String> {
+        let in_range = |x: f64| match self.range {
+            Some(r) if !(x.is_finite() && (r.min..=r.max).contains(&x)) => Err(format!(
+                "{} must be within {}–{}{}, not {x}",
+                self.name,
+                r.min,
+                r.max,
+                unit_suffix(self.unit)
+            )),
+            _ => Ok(()),
+        };
+        match (self.default, value) {
+            (DefaultValue::Bool(_), Value::Bool(_)) | (DefaultValue::Text(_), Value::Text(_)) => {
+                Ok(())
+            }
+            (DefaultValue::Int(_), Value::Int(n)) => in_range(*n as f64),
+            (DefaultValue::Float(_), Value::Float(x)) => in_range(*x),
+            _ => Err(format!(
+                "{} takes {}, not {value:?}",
+                self.name,
+                Value::from(self.default).type_name()
+            )),
+        }
+    }
+}
+
+fn unit_suffix(unit: &str) -> String {
+    match unit {
+        "" | "share" => String::new(),
+        unit => format!(" {unit}"),
+    }
+}
+
+/// Entries added at run time (`extend`).
+static EXTENDED: RwLock<Vec<Setting>> = RwLock::new(Vec::new());
+
+/// Every setting: the compiled entries, then those added at run time.
+pub fn all() -> Vec<Setting> {
+    let extended = EXTENDED.read().unwrap_or_else(PoisonError::into_inner);
+    ENTRIES.iter().chain(extended.iter()).copied().collect()
+}
+
+/// The setting called `name`.
+pub fn find(name: &str) -> Option<Setting> {
+    all().into_iter().find(|s| s.name == name)
+}
+
+/// Adds `setting` to the schema for the rest of the process (a mod's setting, or a
+/// test's); refused when its name is taken or its default is not a value it may have.
+pub fn extend(setting: Setting) -> Result<(), String> {
+    if find(setting.name).is_some() {
+        return Err(format!("a setting is already called {}", setting.name));
+    }
+    let number = matches!(
+        setting.default,
+        DefaultValue::Int(_) | DefaultValue::Float(_)
+    );
+    match setting.range {
+        Some(range) if !(range.min <= range.max && range.step >= 0.0) => {
+            return Err(format!("{}: the range is empty", setting.name))
+        }
+        None if number => return Err(format!("{}: a number needs a range", setting.name)),
+        _ => {}
+    }
+    setting.check(&Value::from(setting.default))?;
+    EXTENDED
+        .write()
+        .unwrap_or_else(PoisonError::into_inner)
+        .push(setting);
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;

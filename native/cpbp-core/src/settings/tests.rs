@@ -1,0 +1,73 @@
+use super::*;
+
+#[test]
+fn every_entry_is_a_value_it_may_have_and_names_are_unique() {
+    let entries = all();
+    for (i, setting) in entries.iter().enumerate() {
+        setting
+            .check(&Value::from(setting.default))
+            .unwrap_or_else(|why| panic!("{why}"));
+        assert!(!setting.label.is_empty() && !setting.description.is_empty());
+        assert!(
+            entries[..i].iter().all(|s| s.name != setting.name),
+            "{} twice",
+            setting.name
+        );
+        for offered in setting.offered {
+            let r = setting.limit();
+            assert!(
+                (r.min..=r.max).contains(offered),
+                "{} offers {offered}",
+                setting.name
+            );
+        }
+    }
+}
+
+#[test]
+fn values_are_held_within_their_range_and_refuse_another_type() {
+    let mut values = SettingValues::of(|s| s.owner.on_the_node());
+    assert_eq!(values.number(&HORIZON_S), 1.2);
+    assert!(values.set("horizon", Value::Float(9.0)).unwrap().is_some());
+    assert_eq!(values.number(&HORIZON_S), 3.0);
+    assert!(values
+        .set("horizon", Value::Float(f64::NAN))
+        .unwrap()
+        .is_some());
+    assert_eq!(values.number(&HORIZON_S), 1.2);
+    assert_eq!(values.set("trajectories", Value::Float(9.6)), Ok(None));
+    assert_eq!(values.get("trajectories"), Some(&Value::Int(10)));
+    assert!(values.set("trajectories", Value::Bool(true)).is_err());
+    assert!(
+        values.set("camera", Value::Text("chase".into())).is_err(),
+        "not the node's"
+    );
+}
+
+#[test]
+fn an_entry_added_at_run_time_reaches_every_reader() {
+    let throwaway = Setting {
+        name: "throwaway_rust_test",
+        label: "Throwaway",
+        description: "A test's.",
+        default: DefaultValue::Float(0.5),
+        range: Some(Range::new(0.0, 1.0, 0.1)),
+        owner: Owner::Planner,
+        player: true,
+        menu: "Planner",
+        unit: "",
+        offered: &[],
+    };
+    extend(throwaway).unwrap();
+    assert!(extend(throwaway).is_err(), "the name is taken");
+    assert_eq!(find("throwaway_rust_test"), Some(throwaway));
+    let values = SettingValues::of(|s| s.owner.on_the_node());
+    assert_eq!(values.get("throwaway_rust_test"), Some(&Value::Float(0.5)));
+    assert!(schema_json().contains("\"name\":\"throwaway_rust_test\""));
+    let out_of_range = Setting {
+        name: "throwaway_bad",
+        default: DefaultValue::Float(2.0),
+        ..throwaway
+    };
+    assert!(extend(out_of_range).is_err());
+}

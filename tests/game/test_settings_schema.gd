@@ -1,0 +1,81 @@
+extends TestCase
+## A setting is one entry of the native schema: a throwaway one added at run time reaches
+## the game node's properties, the player's settings file, the pause menu and the tools'
+## JSON, with its range and default, and nothing else is written for it.
+
+const THROWAWAY := {
+	name = &"throwaway_setting",
+	label = "Throwaway",
+	description = "A test's setting, in no build.",
+	unit = "cm",
+	default = 2.5,
+	min = 0.0,
+	max = 10.0,
+	step = 0.5,
+	owner = "planner",
+	player = true,
+	menu = "Planner",
+}
+
+
+func before_all() -> void:
+	var refusal := SettingsSchema.extend(THROWAWAY)
+	assert_true(refusal.is_empty() or refusal.contains("already"), refusal)
+
+
+func before_each() -> void:
+	SettingsSandbox.enter()
+
+
+func after_each() -> void:
+	SettingsSandbox.leave()
+
+
+func test_the_node_has_it_as_a_property_with_its_range_and_default() -> void:
+	var bike := BikeSimulation.new()
+	var found := bike.get_property_list().filter(
+		func(p: Dictionary) -> bool: return p.name == "throwaway_setting"
+	)
+	assert_eq(found.size(), 1)
+	assert_eq(found[0].type, TYPE_FLOAT)
+	assert_eq(found[0].hint, PROPERTY_HINT_RANGE)
+	assert_eq(found[0].hint_string, "0,10,0.5,suffix:cm")
+	assert_eq(bike.get(&"throwaway_setting"), 2.5)
+	bike.set(&"throwaway_setting", 4.0)
+	assert_eq(bike.get(&"throwaway_setting"), 4.0)
+	assert_eq(bike.property_get_revert(&"throwaway_setting"), 2.5)
+	bike.free()
+
+
+func test_the_players_file_keeps_it() -> void:
+	Settings.reload()
+	assert_eq(Settings.get_value(&"throwaway_setting"), 2.5)
+	Settings.set_value(&"throwaway_setting", 3.0)
+	var saved := ConfigFile.new()
+	assert_eq(saved.load(SettingsSandbox.SETTINGS), OK)
+	assert_eq(saved.get_value(Settings.SECTION, "throwaway_setting"), 3.0)
+	expect_error("it is within 0–10 cm")
+	Settings.set_value(&"throwaway_setting", 11.0)
+	assert_eq(Settings.get_value(&"throwaway_setting"), 3.0)
+
+
+func test_the_pause_menu_shows_a_slider_over_its_range() -> void:
+	Settings.reload()
+	var menu: PauseMenu = load("res://scenes/ui/pause_menu.tscn").instantiate()
+	add_child(menu)
+	var slider := menu.control_of(&"throwaway_setting") as HSlider
+	assert_not_null(slider)
+	assert_eq([slider.min_value, slider.max_value, slider.step], [0.0, 10.0, 0.5])
+	slider.value = 6.5
+	assert_eq(Settings.get_value(&"throwaway_setting"), 6.5, "moving it saves it")
+	menu.free()
+
+
+func test_the_tools_json_lists_it() -> void:
+	var schema: Dictionary = JSON.parse_string(SettingsSchema.to_json())
+	var found: Array = schema.settings.filter(
+		func(e: Dictionary) -> bool: return e.name == "throwaway_setting"
+	)
+	assert_eq(found.size(), 1)
+	assert_eq(found[0].range, [0.0, 10.0, 0.5])
+	assert_eq(found[0].owner, "planner")
