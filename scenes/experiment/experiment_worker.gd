@@ -144,7 +144,7 @@ func _measure_planning(args: ExperimentArgs) -> void:
 			# The first plans build the rollout worlds; they are not what a rider waits for.
 			if step >= 5 and _bike.get_planning_ms() > 0.0:
 				samples.append(_bike.get_planning_ms())
-			if _level.judge(_bike, 1.0 / 30.0) != Level.RIDING:
+			if _level.judge(_bike, SettingsSchema.control_period()) != Level.RIDING:
 				break
 		samples.sort()
 		var timing := {

@@ -162,20 +162,33 @@ fn registry_json() -> String {
     )
 }
 
-#[test]
-fn the_tools_copy_of_the_registry_is_current() {
-    let path =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tools/cpbp_experiment/controllers.json");
-    let expected = registry_json();
+/// Holds the tools' copy `file` (in tools/cpbp_experiment/) equal to `expected`, what
+/// `source` makes of it; with UPDATE_REGISTRY set, writes it first.
+fn assert_tools_copy_is_current(file: &str, expected: &str, source: &str) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../tools/cpbp_experiment")
+        .join(file);
     if std::env::var_os("UPDATE_REGISTRY").is_some() {
-        std::fs::write(&path, &expected).expect("write the tools' registry");
+        std::fs::write(&path, expected).expect("write the tools' copy");
     }
     let committed = std::fs::read_to_string(&path).unwrap_or_default();
     assert_eq!(
         committed,
         expected,
-        "{} differs from ControllerKind::ALL: run `UPDATE_REGISTRY=1 tools/cargo test \
-         --release -p cpbp-core --test registry` and commit it",
+        "{} differs from {source}: run `UPDATE_REGISTRY=1 tools/cargo test --release -p \
+         cpbp-core --test registry` and commit it",
         path.display()
     );
+}
+
+#[test]
+fn the_tools_copy_of_the_registry_is_current() {
+    assert_tools_copy_is_current("controllers.json", &registry_json(), "ControllerKind::ALL");
+}
+
+/// The settings schema as the Python tools read it (tools/cpbp_experiment/settings.json).
+#[test]
+fn the_tools_copy_of_the_settings_schema_is_current() {
+    let schema = cpbp_core::settings::schema_json();
+    assert_tools_copy_is_current("settings.json", &schema, "cpbp_core::settings");
 }

@@ -20,7 +20,7 @@ static func ride(
 	bike.reset_to(spawn.spawn_transform())
 	level.begin_attempt(bike, seed_value)
 	level.attempt_time_limit = level.time_limit_at(speed_kmh)
-	var dt := 1.0 / 30.0
+	var dt := SettingsSchema.control_period()
 	var outcome := Level.RIDING
 	var planning_ms := 0.0
 	var plans := 0
