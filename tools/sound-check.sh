@@ -18,4 +18,4 @@ timeout 600 xvfb-run -a -s "-screen 0 1280x720x24" tools/godot --path . --render
   || { cat "$log" >&2; die "the sound capture failed"; }
 tools/check-godot-log "$log"
 rm -f "$out"/ride[0-9]*.png
-PYTHONPATH=tools .venv/bin/python -m sound_check "$out/ride.wav" "$out/ride.csv"
+.venv/bin/sound-check "$out/ride.wav" "$out/ride.csv"

@@ -63,18 +63,20 @@ step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot --
 step "learned pipeline and controller rides (release)" tools/cargo test --release \
   -p cpbp-learn -p cpbp-core --bin cpbp-learn --test rides --test auto_trajectories
 # The benchmark bicycle built from the game's bodies and tyres is the paper's bicycle.
-step "bicycle benchmark"    env PYTHONPATH=tools .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
+step "bicycle benchmark"    .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
 # The experiment's statistics, results file and scheduling (no Godot needed).
-step "experiment unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest discover -s tools/cpbp_experiment/tests -t tools
+step "experiment unit tests" .venv/bin/python -m unittest discover -s tools/cpbp_experiment/tests -t tools
 # The sound check's pitch tracking, on made-up signals.
-step "sound check unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest sound_check.tests.test_sound_check
+step "sound check unit tests" .venv/bin/python -m unittest sound_check.tests.test_sound_check
 # The doc check itself, on made-up rows: a figure changed by hand fails, a missing file,
 # heading or section fails.
-step "doc check unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest doc_check.tests.test_doc_check
+step "doc check unit tests" .venv/bin/python -m unittest doc_check.tests.test_doc_check
 # The committed docs: every marked figure equals the rows and every reference resolves.
 step "docs against the rows and the tree" tools/doc-check
 # The scenario tool's rows and paired statistics.
-step "planner scenario unit tests" env PYTHONPATH=tools .venv/bin/python -m unittest planner_scenarios.tests.test_planner_scenarios
+step "planner scenario unit tests" .venv/bin/python -m unittest planner_scenarios.tests.test_planner_scenarios
+# The learned controller's report tables and the upkeep of its evaluation's rows.
+step "learned tools unit tests" .venv/bin/python -m unittest discover -s tools/learned_tools/tests -t tools
 # Every GDScript file passes gdlint.
 step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdlint"
 # Every GDScript file is formatted as gdformat writes it.
@@ -88,13 +90,13 @@ step "GDScript suites"      godot_suites
 # Settings, records and a ghost saved in a loop and killed with SIGKILL read back whole.
 step "saves survive kill -9" tools/kill-test.sh 8
 # Quick mode with real workers: a run killed part-way resumes with nothing lost or doubled.
-step "experiment quick run" env PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_quick_run
+step "experiment quick run" .venv/bin/python -m unittest -v cpbp_experiment.tests.check_quick_run
 # An attempt repeats exactly (fresh or after other rides, 1 or 2 threads); platforms do not
 # mix unasked; verify catches a tampered row.
-step "experiment reproducibility" env PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_reproducible
+step "experiment reproducibility" .venv/bin/python -m unittest -v cpbp_experiment.tests.check_reproducible
 # On a Dask cluster of two workers: the driver, then a worker process killed part-way;
 # nothing lost or doubled, and the rows equal the local pool's.
-step "experiment on a Dask cluster" env PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_cluster
+step "experiment on a Dask cluster" .venv/bin/python -m unittest -v cpbp_experiment.tests.check_cluster
 screenshots() {
   local game=res://scenes/game/game.tscn levels=res://scenes/levels
   tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/start-menu.png \

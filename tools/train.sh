@@ -76,7 +76,7 @@ mv "$MODEL.partial" "$MODEL"
 minutes=$(( ($(date +%s) - started + 59) / 60 ))
 
 report() {
-  .venv/bin/python tools/learned_report.py --data "$LEARN_DATA" --rounds "$ROUNDS" \
+  .venv/bin/learned-report --data "$LEARN_DATA" --rounds "$ROUNDS" \
     --model "$MODEL" --out "$REPORT" --minutes "$minutes"
 }
 report
@@ -84,7 +84,7 @@ report
 if [ "$EVALUATE" != 0 ]; then
   tools/build.sh
   # Rows of learned and guided ridden with an earlier model step aside (superseded/).
-  .venv/bin/python tools/learned_evaluation.py --model "$MODEL"
+  .venv/bin/learned-evaluation --model "$MODEL"
   tools/experiment run --out docs/experiment --tries 30 --allow-mixed \
     --controllers arcade:exact,learned:exact,guided-4:exact,guided-5:exact,combined-5:exact,combined-15:exact
   tools/experiment report --out docs/experiment

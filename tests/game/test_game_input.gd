@@ -126,14 +126,7 @@ func test_reset_puts_the_bike_back_at_the_spawn_point() -> void:
 
 
 func test_lift_stands_a_fallen_bike_up() -> void:
-	_game.bike.controller = "manual"
-	Input.action_press(&"throttle")
-	await wait_physics_frames(60)
-	# A nudge of the bar: an upright bike nobody balances stays up only while nothing
-	# disturbs it (the exact physics has no solver noise to tip it).
-	Input.action_press(&"steer_left", 0.5)
-	await wait_physics_frames(10)
-	Input.action_release(&"steer_left")
+	await GameFixture.ride_unbalanced_and_nudge(self, _game)
 	await wait_physics_frames(230)
 	assert_true(_game.bike.is_crashed(), "nobody balancing: it fell")
 	Input.action_release(&"throttle")
@@ -169,14 +162,11 @@ func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
 			assert_eq(paths.size(), 5, "one path per trajectory")
 			await get_tree().process_frame
 			assert_eq(view.drawn_count(), paths.size(), "every trajectory is drawn")
-	assert_eq(
-		seen,
-		(
-			["sampling", "mppi", "learned", "guided", "optimizer", "combined", "arcade"]
-			as Array[String]
-		),
-		"the registry's order, wrapping round",
-	)
+	var names := BikeSimulation.controller_names()
+	var expected: Array[String] = []
+	for i in names.size():
+		expected.append(names[(names.find("arcade") + 1 + i) % names.size()])
+	assert_eq(seen, expected, "the registry's order from arcade, wrapping round")
 	await get_tree().process_frame
 	assert_eq(view.drawn_count(), 0, "no trajectories while the arcade controller drives")
 	assert_false(_game.bike.is_crashed(), "switching controllers while riding keeps it up")

@@ -3,8 +3,6 @@ extends TestCase
 ## from the pause menu with the game paused underneath, pauses, slows down, scrubs and
 ## shows the player's inputs as they were; leaving it brings the live bike back.
 
-const GAME := preload("res://scenes/game/game.tscn")
-
 ## Longest a brake from riding pace to a foot put down may take (physics frames).
 const MOST_FRAMES_TO_STOP := 600
 
@@ -12,14 +10,7 @@ var _game: Game
 
 
 func before_each() -> void:
-	# Nothing held over from another suite: a held turn would scrub the replay.
-	for action: StringName in InputMap.get_actions():
-		Input.action_release(action)
-	SettingsSandbox.enter()
-	_game = GAME.instantiate() as Game
-	_game.level_path = "res://scenes/levels/track/track.tscn"
-	add_child(_game)
-	await wait_physics_frames(2)
+	_game = await GameFixture.start(self)
 
 
 func after_each() -> void:

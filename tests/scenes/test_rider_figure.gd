@@ -3,7 +3,6 @@ extends TestCase
 ## hands, feet on the simulated feet, elbows and knees bent towards the simulated ones,
 ## the head turned into a turn; after a crash the drawn rider follows the tumbling bodies.
 
-const GAME := preload("res://scenes/game/game.tscn")
 ## How close (m) the IK puts a hand or foot to where the simulation has it.
 const REACH := 0.02
 const SIDES: Array[float] = [-1.0, 1.0]
@@ -12,13 +11,7 @@ var _game: Game
 
 
 func before_each() -> void:
-	for action: StringName in InputMap.get_actions():
-		Input.action_release(action)
-	SettingsSandbox.enter()
-	_game = GAME.instantiate() as Game
-	_game.level_path = "res://scenes/levels/track/track.tscn"
-	add_child(_game)
-	await wait_physics_frames(2)
+	_game = await GameFixture.start(self)
 
 
 ## Stops the game and lets the drawn rider's IK pose it on the bodies as they are now.
@@ -128,12 +121,7 @@ func test_hands_and_feet_are_where_the_simulation_has_them_in_a_turn() -> void:
 
 func test_a_fallen_rider_is_drawn_on_the_tumbling_bodies() -> void:
 	# Nobody balancing and a nudge of the bar: the bike falls and the rider lets go.
-	_game.bike.controller = "manual"
-	Input.action_press(&"throttle")
-	await wait_physics_frames(60)
-	Input.action_press(&"steer_left", 0.5)
-	await wait_physics_frames(10)
-	Input.action_release(&"steer_left")
+	await GameFixture.ride_unbalanced_and_nudge(self, _game)
 	for frame in 400:
 		await wait_physics_frames(1)
 		if not _game.bike.is_rider_on():

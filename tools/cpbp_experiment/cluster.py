@@ -24,8 +24,8 @@ from dataclasses import dataclass
 
 from .fingerprint import COMPARED, fingerprint, identity
 from .progress import Progress
-from .runner import (PROJECT_ROOT, SILENCE_LIMIT_S, Block, Platform, WorkerError, _attempt_of,
-                     _tail, block_arguments, start_worker)
+from .runner import (PROJECT_ROOT, SILENCE_LIMIT_S, Block, Platform, WorkerError, attempt_of,
+                     log_tail, block_arguments, start_worker)
 from .results import ResultsFile
 
 # How often the driver looks for lines and finished tasks.
@@ -82,7 +82,7 @@ def ride_block(arguments: list[str], count: int, queue_name: str, tag: str) -> i
             elif time.monotonic() - heard > SILENCE_LIMIT_S:
                 raise WorkerError(f"a worker on {os.uname().nodename} said nothing for "
                                   f"{SILENCE_LIMIT_S:.0f} s and was stopped; see {log}:\n"
-                                  f"{_tail(log)}")
+                                  f"{log_tail(log)}")
             if text.startswith("PLATFORM "):
                 description = node_description(text[9:].strip())
                 lines_out.put(f"{tag} PLATFORM {identity(description)} "
@@ -96,7 +96,7 @@ def ride_block(arguments: list[str], count: int, queue_name: str, tag: str) -> i
     code = process.wait()
     if code != 0 or ridden < count:
         raise WorkerError(f"a worker on {os.uname().nodename} exited with code {code} after "
-                          f"{ridden} of {count} attempts; see {log} there:\n{_tail(log)}")
+                          f"{ridden} of {count} attempts; see {log} there:\n{log_tail(log)}")
     return ridden
 
 
@@ -148,7 +148,7 @@ class ClusterRun:
                         f"the node's {theirs.get(key, '?')}" for key in COMPARED
                         if self.platform.description.get(key) != theirs.get(key)))
             return
-        attempt = _attempt_of(payload, block, self.platform.identity)
+        attempt = attempt_of(payload, block, self.platform.identity)
         if attempt.key in self.done:
             # A task ran again after its worker was lost: the row is saved already.
             self.repeated += 1

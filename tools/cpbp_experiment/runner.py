@@ -157,7 +157,7 @@ def worker_platform(log: Path) -> dict:
         if text.startswith("PLATFORM "):
             return json.loads(text[9:])
     raise WorkerError(f"a worker did not describe its platform (exit code "
-                      f"{process.returncode}); see {log}:\n{_tail(log)}")
+                      f"{process.returncode}); see {log}:\n{log_tail(log)}")
 
 
 @dataclass(frozen=True)
@@ -228,7 +228,7 @@ def run_blocks(
                     failure = WorkerError(
                         f"a worker for {block.config.label} attempts {block.first}–"
                         f"{block.first + block.count - 1} exited with code {code} after "
-                        f"{reported[worker_id]} of them; see {log}:\n{_tail(log)}"
+                        f"{reported[worker_id]} of them; see {log}:\n{log_tail(log)}"
                     )
                 continue
             if text.startswith("PLATFORM ") and json.loads(text[9:]) != platform.worker:
@@ -237,7 +237,7 @@ def run_blocks(
                     f"a worker reported another platform than the run's: {text[9:].strip()}")
             elif text.startswith("TRY "):
                 reported[worker_id] += 1
-                attempt = _attempt_of(text[4:], block, platform.identity)
+                attempt = attempt_of(text[4:], block, platform.identity)
                 results.append(attempt)
                 progress.record(attempt)
                 progress.report(attempt, force=not pending and len(running) == 1)
@@ -254,12 +254,12 @@ def _silent_worker(running, heard, log: Path) -> WorkerError | None:
             process.kill()
             return WorkerError(
                 f"a worker for {block.config.label} said nothing for {SILENCE_LIMIT_S:.0f} s "
-                f"and was stopped; see {log}:\n{_tail(log)}"
+                f"and was stopped; see {log}:\n{log_tail(log)}"
             )
     return None
 
 
-def _attempt_of(payload: str, block: Block, platform: str) -> Attempt:
+def attempt_of(payload: str, block: Block, platform: str) -> Attempt:
     data = json.loads(payload)
     controller = block.config.controller
     ok = (
@@ -287,7 +287,7 @@ def _attempt_of(payload: str, block: Block, platform: str) -> Attempt:
     )
 
 
-def _tail(log: Path, lines: int = 8) -> str:
+def log_tail(log: Path, lines: int = 8) -> str:
     try:
         return "\n".join(log.read_text(encoding="utf-8", errors="replace").splitlines()[-lines:])
     except OSError:
@@ -318,7 +318,7 @@ def measure_planning(controller_kind: str, counts: list[int], steps: int, speed:
             rows.append(row)
     if process.wait() != 0:
         raise WorkerError(f"the timing worker exited with code {process.returncode}; "
-                          f"see {log}:\n{_tail(log)}")
+                          f"see {log}:\n{log_tail(log)}")
     return rows
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 from statistics import median
 from typing import Callable
 
-import learned_report
+from learned_tools import report as learned_report
 from cpbp_experiment.configs import Controller, display_order
 from cpbp_experiment.report import timing_table
 from cpbp_experiment.results import Attempt

@@ -44,3 +44,19 @@ fn it_settles_into_fast_lean_reversals_at_25_kmh() {
 fn a_right_turn_starts_with_a_left_counter_steer() {
     common::assert_counter_steers_into_a_right_turn(&mut arcade_at(20.0));
 }
+
+#[test]
+fn it_rides_a_bike_file_other_than_the_reference() {
+    // The pit bike the game's tests draw, read from its file as the Rust tools read bikes.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../tests/fixtures/bikes/pit_bike.tres");
+    let bike = cpbp_core::bike::read_bike_file(&path).unwrap();
+    assert_eq!(bike.params.wheelbase, 1.12);
+    let config = cpbp_core::simulation::SimulationConfig {
+        bike: bike.params,
+        ..Default::default()
+    };
+    let mut ride = Ride::new(common::flat_ride_with(config), ControllerKind::ARCADE);
+    ride.set_intent(cpbp_core::ride::Intent::cruise(15.0));
+    common::assert_rides_straight_for_20_seconds(&mut ride);
+}

@@ -1,52 +1,27 @@
 //! `BikeDescription`: a bike as data, a resource file a level designer or a modder
 //! edits in the inspector (bikes/*.tres). `BikeSimulation.bike` takes one; a second bike
-//! is a second file. Its defaults are the core's reference bike (`BikeParams::default()`).
+//! is a second file. Its defaults are the core's reference bike (`BikeParams::default()`);
+//! the Rust tools read the same file through `cpbp_core::bike::read_bike_file`.
 //! Its looks (paint, bodywork) are the drawing's alone: the core never sees them.
 
-use cpbp_core::bike::BikeParams;
+use cpbp_core::bike::{BikeParams, FIELDS};
 use godot::classes::{IResource, Resource};
 use godot::prelude::*;
+use godot::register::info::{PropertyHint, PropertyHintInfo, PropertyInfo, PropertyUsageFlags};
 
 /// The reference bike's paint.
 const STREET_ORANGE: Color = Color::from_rgb(0.92, 0.35, 0.08);
 
-/// Dimensions, masses and equipment of a bike and its rider.
+/// Dimensions, masses and equipment of a bike and its rider: every number of the core's
+/// `BikeParams` is a property, listed from the core's bike fields (`cpbp_core::bike::
+/// FIELDS`: name, unit, range), the parts' numbers grouped under suspension/, front_brake/,
+/// wheelie_control/, feet/ and rider/.
 #[derive(GodotClass)]
 #[class(base=Resource)]
 pub struct BikeDescription {
     /// The bike's name, for people: messages about the bike name it by this.
     #[export]
     name: GString,
-    /// Distance between the wheels' ground contact points (m).
-    #[export(range = (0.9, 2.0, 0.01, suffix = "m"))]
-    wheelbase: f64,
-    /// Wheel radius, tyre included (m).
-    #[export(range = (0.15, 0.5, 0.005, suffix = "m"))]
-    wheel_radius: f64,
-    /// Radius of the tyre's round cross-section (m): where a leaning wheel touches.
-    #[export(range = (0.02, 0.12, 0.005, suffix = "m"))]
-    tyre_crown: f64,
-    /// Angle of the steering axis from vertical.
-    #[export(range = (10.0, 40.0, 0.5, suffix = "°"))]
-    rake_deg: f64,
-    /// Ground distance from the front contact back to the steering axis (m).
-    #[export(range = (0.0, 0.2, 0.005, suffix = "m"))]
-    trail: f64,
-    /// Frame with engine and tank (kg).
-    #[export(range = (20.0, 300.0, 1.0, suffix = "kg"))]
-    frame_mass: f64,
-    /// Rear wheel with tyre and disc (kg).
-    #[export(range = (2.0, 40.0, 0.5, suffix = "kg"))]
-    rear_wheel_mass: f64,
-    /// Front wheel with tyre and disc (kg).
-    #[export(range = (2.0, 40.0, 0.5, suffix = "kg"))]
-    front_wheel_mass: f64,
-    /// Largest steering angle either way.
-    #[export(range = (10.0, 60.0, 1.0, suffix = "°"))]
-    steer_limit_deg: f64,
-    /// Coulomb friction of the tyres on the ground.
-    #[export(range = (0.3, 1.5, 0.05))]
-    tyre_friction: f64,
     /// Springs and dampers at the fork and the swingarm (off: the thesis's rigid bike,
     /// which then has no anti-wheelie, feet or front brake either).
     #[export]
@@ -58,70 +33,89 @@ pub struct BikeDescription {
     /// size); none draws the standard naked bodywork.
     #[export]
     bodywork: Option<Gd<Resource>>,
+    /// One number per bike field, in the field's file unit, as set (checked when built).
+    numbers: Vec<f64>,
     base: Base<Resource>,
+}
+
+/// Each field's value on the reference bike (every part present).
+fn reference_numbers() -> Vec<f64> {
+    let reference = BikeParams::default();
+    FIELDS
+        .iter()
+        .map(|f| f.value(&reference).unwrap_or(f.range.min))
+        .collect()
+}
+
+fn index_of(property: &StringName) -> Option<usize> {
+    let name = property.to_string();
+    FIELDS.iter().position(|f| f.name == name)
 }
 
 #[godot_api]
 impl IResource for BikeDescription {
     fn init(base: Base<Resource>) -> Self {
-        let reference = BikeParams::default();
         Self {
             name: GString::from("Street 350"),
-            wheelbase: reference.wheelbase,
-            wheel_radius: reference.wheel_radius,
-            tyre_crown: reference.tyre_crown,
-            rake_deg: reference.rake.to_degrees(),
-            trail: reference.trail,
-            frame_mass: reference.frame_mass,
-            rear_wheel_mass: reference.rear_wheel_mass,
-            front_wheel_mass: reference.front_wheel_mass,
-            steer_limit_deg: reference.steer_limit.to_degrees(),
-            tyre_friction: reference.tyre_friction,
-            suspension: reference.suspension.is_some(),
+            suspension: BikeParams::default().suspension.is_some(),
             paint: STREET_ORANGE,
             bodywork: None,
+            numbers: reference_numbers(),
             base,
         }
+    }
+
+    fn on_get_property_list(&mut self) -> Vec<PropertyInfo> {
+        FIELDS
+            .iter()
+            .map(|f| {
+                let suffix = if f.unit.is_empty() {
+                    String::new()
+                } else {
+                    format!(",suffix:{}", f.unit)
+                };
+                let hint = format!("{},{},{}{suffix}", f.range.min, f.range.max, f.range.step);
+                PropertyInfo {
+                    variant_type: VariantType::FLOAT,
+                    class_name: StringName::default(),
+                    property_name: f.name.into(),
+                    hint_info: PropertyHintInfo {
+                        hint: PropertyHint::RANGE,
+                        hint_string: GString::from(hint.as_str()),
+                    },
+                    usage: PropertyUsageFlags::DEFAULT,
+                }
+            })
+            .collect()
+    }
+
+    fn on_get(&self, property: StringName) -> Option<Variant> {
+        index_of(&property).map(|i| self.numbers[i].to_variant())
+    }
+
+    fn on_set(&mut self, property: StringName, value: Variant) -> bool {
+        let Some(i) = index_of(&property) else {
+            return false;
+        };
+        // Kept as given, a bad one too: building the bike refuses it, naming the field.
+        self.numbers[i] = value.try_to::<f64>().unwrap_or(f64::NAN);
+        true
+    }
+
+    fn on_property_get_revert(&self, property: StringName) -> Option<Variant> {
+        index_of(&property).map(|i| reference_numbers()[i].to_variant())
     }
 }
 
 impl BikeDescription {
-    /// The bike as the core builds it, or why it cannot be built (a value that is not a
-    /// number, or a geometry with no steering axis between the wheels).
+    /// The bike as the core builds it, or why it cannot be built (a number out of its
+    /// field's range, or a geometry the core refuses), naming the field.
     pub fn params(&self) -> Result<BikeParams, String> {
-        let numbers = [
-            ("wheelbase", self.wheelbase),
-            ("wheel_radius", self.wheel_radius),
-            ("tyre_crown", self.tyre_crown),
-            ("rake_deg", self.rake_deg),
-            ("trail", self.trail),
-            ("frame_mass", self.frame_mass),
-            ("rear_wheel_mass", self.rear_wheel_mass),
-            ("front_wheel_mass", self.front_wheel_mass),
-            ("steer_limit_deg", self.steer_limit_deg),
-            ("tyre_friction", self.tyre_friction),
-        ];
-        if let Some((name, value)) = numbers.iter().find(|(_, v)| !v.is_finite() || *v <= 0.0) {
-            return Err(format!("{name} must be a positive number, not {value}"));
-        }
-        if self.tyre_crown >= self.wheel_radius {
-            return Err("tyre_crown must be smaller than wheel_radius".into());
-        }
-        let reference = BikeParams::default();
-        let bike = BikeParams {
-            wheelbase: self.wheelbase,
-            wheel_radius: self.wheel_radius,
-            tyre_crown: self.tyre_crown,
-            rake: self.rake_deg.to_radians(),
-            trail: self.trail,
-            frame_mass: self.frame_mass,
-            rear_wheel_mass: self.rear_wheel_mass,
-            front_wheel_mass: self.front_wheel_mass,
-            steer_limit: self.steer_limit_deg.to_radians(),
-            tyre_friction: self.tyre_friction,
-            ..reference
-        };
-        Ok(if self.suspension { bike } else { bike.rigid() })
+        let values = FIELDS
+            .iter()
+            .map(|f| f.name)
+            .zip(self.numbers.iter().copied());
+        BikeParams::from_fields(values, self.suspension)
     }
 }
 

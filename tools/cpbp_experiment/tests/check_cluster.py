@@ -54,13 +54,12 @@ class Cluster:
 
     def __init__(self, directory: Path):
         dask = str(PROJECT_ROOT / ".venv" / "bin" / "dask")
-        environment = {**os.environ, "PYTHONPATH": str(PROJECT_ROOT / "tools")}
         self.file = directory / "scheduler.json"
         self.logs = [open(directory / f"{name}.log", "w")
                      for name in ("scheduler", "worker-1", "worker-2")]
         self.processes = [subprocess.Popen(
             [dask, "scheduler", "--scheduler-file", str(self.file), "--port", "0",
-             "--no-dashboard"], env=environment, stdout=subprocess.DEVNULL,
+             "--no-dashboard"], stdout=subprocess.DEVNULL,
             stderr=self.logs[0], start_new_session=True)]
         deadline = time.monotonic() + 60
         while not self.file.exists():
@@ -70,7 +69,7 @@ class Cluster:
         self.address = json.loads(self.file.read_text())["address"]
         self.processes += [subprocess.Popen(
             [dask, "worker", self.address, "--nthreads", "1", "--no-dashboard", "--name",
-             f"node-{n}"], env=environment, stdout=subprocess.DEVNULL,
+             f"node-{n}"], stdout=subprocess.DEVNULL,
             stderr=self.logs[n], start_new_session=True)
             for n in (1, 2)]
 

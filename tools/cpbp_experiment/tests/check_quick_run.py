@@ -1,7 +1,7 @@
 """The experiment's quick mode, end to end with real Godot workers (a `make test` step,
 after the build): a run killed part-way resumes with no attempt lost or repeated, and
 the report is written. Run alone:
-`PYTHONPATH=tools .venv/bin/python -m unittest -v cpbp_experiment.tests.check_quick_run`."""
+`.venv/bin/python -m unittest -v cpbp_experiment.tests.check_quick_run`."""
 
 import csv
 import os

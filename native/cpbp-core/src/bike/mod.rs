@@ -3,10 +3,12 @@
 //! ball joints at waist, shoulder and wrist, a passive ankle on the footpeg, a sprung fork
 //! and swingarm, and a foot each side for standing still.
 
+mod bike_file;
 mod controls;
 mod crash;
 mod drive;
 mod feet;
+mod fields;
 mod front_brake;
 mod layout;
 mod manual;
@@ -16,6 +18,7 @@ mod rider_position;
 mod suspension;
 mod wheelie_control;
 
+pub use bike_file::{parse_bike_file, read_bike_file, BikeFile};
 pub use controls::{
     index, Controls, ForceClass, CONTROL_DIM, DRIVE_ENTRIES, FORCE_TUNINGS, JOINT_TARGETS, LOWER,
     MAX_TORQUE, UPPER,
@@ -23,6 +26,7 @@ pub use controls::{
 pub use crash::{CrashCause, CrashMonitor};
 pub use drive::{DriveInput, TOP_SPEED_KMH};
 pub use feet::Feet;
+pub use fields::{field, BikeField, FIELDS};
 pub use front_brake::FrontBrake;
 pub use layout::Layout;
 pub use manual::{manual_controls, POSE_GAIN};

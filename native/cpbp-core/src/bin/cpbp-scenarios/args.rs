@@ -20,13 +20,16 @@ pub(crate) struct Args {
     pub skip: HashSet<String>,
     /// The learned network's model file (learned, guided).
     pub model: PathBuf,
+    /// The bike file ridden (a game's scenes/bike/bikes/*.tres); none: the reference bike.
+    pub bike: Option<PathBuf>,
 }
 
 pub(crate) const USAGE: &str =
     "cpbp-scenarios [--controllers K,K…] [--counts N,N…] [--seeds FIRST-LAST] \
-[--scenarios S,S…] [--physics classic|exact] [--skip FILE] [--model FILE]";
-const FLAGS: [&str; 7] = [
+[--scenarios S,S…] [--physics classic|exact] [--skip FILE] [--model FILE] [--bike FILE]";
+const FLAGS: [&str; 8] = [
     "--model",
+    "--bike",
     "--controllers",
     "--counts",
     "--seeds",
@@ -116,6 +119,7 @@ pub(crate) fn parse(arguments: Vec<String>) -> Result<Args, String> {
         physics,
         skip,
         model: value("--model")?.map_or_else(project_model, PathBuf::from),
+        bike: value("--bike")?.map(PathBuf::from),
     })
 }
 

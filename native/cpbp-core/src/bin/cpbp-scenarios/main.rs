@@ -1,6 +1,6 @@
 //! The planners side by side on scripted manoeuvres (issue 17): `cpbp-scenarios
 //! --controllers combined,optimizer,sampling,mppi --counts 5,10,20 --seeds 0-9
-//! [--scenarios turn,slalom,push,walk] [--physics exact] [--skip FILE]` rides every controller with every N on every
+//! [--scenarios turn,slalom,push,walk] [--physics exact] [--skip FILE] [--bike FILE]` rides every controller with every N on every
 //! scenario and seed, on flat ground, and prints one CSV row per ride as it ends (`tools/
 //! experiment scenarios` saves them and computes the paired statistics). Seed i sets the
 //! planner's seed, the bike's heading and the scenario's own draw (the push's strength
@@ -22,7 +22,7 @@ mod stops;
 
 use std::sync::{Arc, OnceLock};
 
-use cpbp_core::bike::{DriveInput, Placement};
+use cpbp_core::bike::{read_bike_file, BikeParams, DriveInput, Placement};
 use cpbp_core::control::learned::LoadedPolicy;
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
@@ -42,6 +42,8 @@ fn scenario_names() -> Vec<&'static str> {
 
 /// The network the learned and guided controllers ride with, loaded once.
 static POLICY: OnceLock<LoadedPolicy> = OnceLock::new();
+/// The bike every ride rides (`--bike`; the reference bike without it).
+static BIKE: OnceLock<BikeParams> = OnceLock::new();
 
 /// Who rides a scenario: the controller, its trajectory count N (0 for arcade), the seed
 /// (heading, planner and the scenario's draw) and the physics.
@@ -80,6 +82,18 @@ fn main() {
             std::process::exit(2);
         }
         POLICY.get_or_init(|| policy);
+    }
+    if let Some(path) = &args.bike {
+        match read_bike_file(path) {
+            Ok(bike) => {
+                eprintln!("cpbp-scenarios: riding {} ({})", bike.name, path.display());
+                BIKE.get_or_init(|| bike.params);
+            }
+            Err(why) => {
+                eprintln!("cpbp-scenarios: {why}");
+                std::process::exit(2);
+            }
+        }
     }
     println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms");
     for &scenario in &args.scenarios {
@@ -278,6 +292,7 @@ pub(crate) fn new_ride(rider: Rider, kmh: f64, slope: f64) -> Ride {
     };
     let config = SimulationConfig {
         physics,
+        bike: BIKE.get().cloned().unwrap_or_default(),
         ..SimulationConfig::default()
     };
     let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);

@@ -9,14 +9,12 @@ import argparse
 import csv
 import json
 import struct
-import sys
 from collections import defaultdict
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from cpbp_experiment.stats import mcnemar_exact, wilson_interval  # noqa: E402
-from planner_scenarios.report import METRICS  # noqa: E402
-from planner_scenarios.stats import paired_difference, t_interval  # noqa: E402
+from cpbp_experiment.stats import mcnemar_exact, wilson_interval
+from planner_scenarios.report import METRICS
+from planner_scenarios.stats import paired_difference, t_interval
 
 # (controller, N) in the exact physics, as the experiment's rows name them.
 RIDERS = (("arcade", 0), ("learned", 0), ("guided", 4), ("guided", 5), ("combined", 5),

@@ -1,5 +1,5 @@
 """The learned controllers' rows follow the model they were ridden with
-(tools/learned_evaluation.py)."""
+(tools/learned_tools/evaluation.py)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import tempfile
 import unittest
 from pathlib import Path
 
-import learned_evaluation as evaluation
+from learned_tools import evaluation
 
 EXPERIMENT = ("speed_kmh,controller,trajectories,attempt\n10,arcade,0,0\n10,learned,0,0\n"
               "10,guided,5,0\n15,combined,5,0\n")

@@ -79,7 +79,7 @@ def supersede(root: Path, model: Path) -> str:
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--model", type=Path, default=Path("models/policy.safetensors"))
-    parser.add_argument("--root", type=Path, default=Path(__file__).resolve().parents[1])
+    parser.add_argument("--root", type=Path, default=Path(__file__).resolve().parents[2])
     args = parser.parse_args()
     print(supersede(args.root, args.model if args.model.is_absolute()
                     else args.root / args.model))

@@ -1,0 +1,98 @@
+//! A bike file (scenes/bike/bikes/*.tres, a Godot `BikeDescription` resource) read
+//! without Godot, so the Rust tools ride the bike the game rides: the `[resource]`
+//! section's `key = value` lines, numbers by the `fields` table, `suspension` as a
+//! switch, `name` as the bike's name; the drawing's keys (paint, bodywork) are skipped.
+
+use std::path::Path;
+
+use super::BikeParams;
+
+/// A bike as its file describes it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BikeFile {
+    pub name: String,
+    pub params: BikeParams,
+}
+
+/// The keys a bike file holds for the drawing alone.
+const LOOKS: &[&str] = &["paint", "bodywork", "resource_name", "script"];
+
+/// Reads the bike file at `path`; the error names the file and the field.
+pub fn read_bike_file(path: &Path) -> Result<BikeFile, String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|why| format!("the bike {}: {why}", path.display()))?;
+    parse_bike_file(&text).map_err(|why| format!("the bike {}: {why}", path.display()))
+}
+
+/// A bike file's text as a bike.
+pub fn parse_bike_file(text: &str) -> Result<BikeFile, String> {
+    if !text
+        .trim_start()
+        .starts_with("[gd_resource type=\"BikeDescription\"")
+    {
+        return Err("not a BikeDescription resource".into());
+    }
+    let mut section = "";
+    let mut name = String::from("Street 350");
+    let mut sprung = true;
+    let mut values = Vec::new();
+    for (number, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.starts_with('[') {
+            section = line;
+            continue;
+        }
+        if section != "[resource]" || line.is_empty() || line.starts_with(';') {
+            continue;
+        }
+        let Some((key, value)) = line.split_once(" = ") else {
+            return Err(format!(
+                "line {}: not a key = value line: {line}",
+                number + 1
+            ));
+        };
+        match key {
+            "name" => name = value.trim_matches('"').to_owned(),
+            "suspension" => {
+                sprung = value
+                    .parse()
+                    .map_err(|_| format!("suspension must be true or false, not {value}"))?;
+            }
+            key if LOOKS.contains(&key) => {}
+            key => {
+                let number = value
+                    .parse::<f64>()
+                    .map_err(|_| format!("{key} must be a number, not {value}"))?;
+                values.push((key.to_owned(), number));
+            }
+        }
+    }
+    let params = BikeParams::from_fields(values.iter().map(|(k, v)| (k.as_str(), *v)), sprung)?;
+    Ok(BikeFile { name, params })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const REFERENCE: &str = include_str!("../../../../scenes/bike/bikes/street_350.tres");
+
+    #[test]
+    fn the_reference_file_is_the_reference_bike() {
+        let bike = parse_bike_file(REFERENCE).unwrap();
+        assert_eq!(bike.name, "Street 350");
+        assert_eq!(bike.params, BikeParams::default());
+    }
+
+    #[test]
+    fn a_bad_field_is_named() {
+        let broken = REFERENCE.replace("trail = 0.095", "trail = 0.0");
+        let why = parse_bike_file(&broken).unwrap_err();
+        assert!(why.contains("trail must be within"), "{why}");
+        let broken = REFERENCE.replace("wheelbase = 1.39", "wheelbase = long");
+        assert!(parse_bike_file(&broken)
+            .unwrap_err()
+            .contains("wheelbase must be a number"));
+        assert!(parse_bike_file("[gd_resource type=\"Mesh\"]").is_err());
+    }
+}

@@ -1,0 +1,61 @@
+"""The learned controller's report (tools/learned_tools/report.py): its tables from the
+experiment's and the scenarios' rows, and the model file's metadata."""
+
+from __future__ import annotations
+
+import json
+import struct
+import tempfile
+import unittest
+from pathlib import Path
+
+from learned_tools import report
+
+RESULTS = "speed_kmh,controller,trajectories,attempt,outcome,physics\n" + "".join(
+    f"10,{rider},0,{attempt},{outcome},exact\n"
+    for attempt in range(4)
+    for rider, outcome in (("arcade", "goal" if attempt else "fell"), ("learned", "goal"))
+) + "10,arcade,0,9,goal,classic\n"
+SCENARIOS = "scenario,controller,trajectories,seed,physics,fell,metric,planning_ms\n" + "".join(
+    f"turn,{rider},{n},{seed},exact,false,{metric + seed / 100:.3f},0\n"
+    for seed in range(3)
+    for rider, n, metric in (("arcade", 0, 0.05), ("learned", 0, 0.04))
+)
+
+
+class ReportTest(unittest.TestCase):
+    def setUp(self) -> None:
+        self.folder = Path(tempfile.mkdtemp())
+
+    def write(self, name: str, text: str) -> Path:
+        path = self.folder / name
+        path.write_text(text, "utf-8")
+        return path
+
+    def test_the_experiment_table_counts_goals_in_the_exact_model_only(self):
+        lines = report.experiment_tables(self.write("results.csv", RESULTS))
+        row = next(line for line in lines if line.startswith("| 10 km/h | 3/4"))
+        self.assertIn("| 4/4 (", row, "learned reached the goal every time")
+        pair = next(line for line in lines if "| learned | arcade |" in line)
+        self.assertIn("| 4 | 1 | 0 |", pair, "one attempt only learned finished")
+
+    def test_missing_rows_say_so(self):
+        self.assertIn("not been ridden", report.experiment_tables(self.folder / "none.csv")[0])
+        self.assertIn("not been ridden", report.scenario_tables(self.folder / "none.csv")[0])
+
+    def test_the_scenario_table_pairs_riders_on_the_same_seeds(self):
+        lines = report.scenario_tables(self.write("scenarios.csv", SCENARIOS))
+        learned = next(line for line in lines if line.startswith("| turn | learned |"))
+        arcade = next(line for line in lines if line.startswith("| turn | arcade |"))
+        self.assertIn("| 3 | 0 |", learned)
+        self.assertIn("learned − this:", arcade)
+
+    def test_the_models_metadata_is_read_from_its_header(self):
+        header = json.dumps({"__metadata__": {"training": "2 rounds"}}).encode()
+        path = self.folder / "model.safetensors"
+        path.write_bytes(struct.pack("<Q", len(header)) + header)
+        self.assertEqual(report.model_metadata(path), {"training": "2 rounds"})
+
+
+if __name__ == "__main__":
+    unittest.main()
