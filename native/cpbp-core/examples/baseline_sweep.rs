@@ -10,9 +10,13 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::Placement;
-use cpbp_core::control::{BaselineSettings, PlanWait};
+use cpbp_core::control::planner_parameters::{
+    BASELINE_KNOTS, BASELINE_NOISE, BASELINE_STEERING_ONLY, MPPI_TEMPERATURE,
+};
+use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::settings::Value;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
@@ -52,7 +56,7 @@ fn main() {
         let temperatures = if kind == ControllerKind::MPPI {
             temperatures.clone()
         } else {
-            vec![BaselineSettings::default().temperature]
+            vec![MPPI_TEMPERATURE.default_number()]
         };
         for dim in &dims {
             for (&noise, &knots) in noises
@@ -60,7 +64,7 @@ fn main() {
                 .flat_map(|n| knots.iter().map(move |k| (n, k)))
             {
                 for &temperature in &temperatures {
-                    let settings = BaselineSettings {
+                    let settings = Baseline {
                         knots: knots as usize,
                         noise,
                         temperature,
@@ -73,7 +77,15 @@ fn main() {
     }
 }
 
-fn report(kind: ControllerKind, n: usize, settings: &BaselineSettings) {
+/// One combination of the baselines' parameters.
+struct Baseline {
+    knots: usize,
+    noise: f64,
+    temperature: f64,
+    steering_only: bool,
+}
+
+fn report(kind: ControllerKind, n: usize, settings: &Baseline) {
     let walked = SEEDS
         .iter()
         .filter(|&&seed| {
@@ -112,7 +124,7 @@ fn report(kind: ControllerKind, n: usize, settings: &BaselineSettings) {
 }
 
 /// A ride in the game's physics on flat ground, full throttle towards `kmh`.
-fn ride(kind: ControllerKind, n: usize, settings: &BaselineSettings, seed: u64, kmh: f64) -> Ride {
+fn ride(kind: ControllerKind, n: usize, settings: &Baseline, seed: u64, kmh: f64) -> Ride {
     let spawn = Placement {
         position: DVec3::new(0.0, 0.02, 0.0),
         rotation: DQuat::from_rotation_y(0.3),
@@ -125,7 +137,18 @@ fn ride(kind: ControllerKind, n: usize, settings: &BaselineSettings, seed: u64, 
     let mut ride = Ride::new(sim, kind);
     ride.planner.optimizer.particles = n;
     ride.planner.optimizer.seed = seed;
-    ride.planner.optimizer.baseline = settings.clone();
+    let parameters = &mut ride.planner.optimizer.parameters;
+    for (setting, value) in [
+        (BASELINE_KNOTS, Value::Int(settings.knots as i64)),
+        (BASELINE_NOISE, Value::Float(settings.noise)),
+        (MPPI_TEMPERATURE, Value::Float(settings.temperature)),
+        (BASELINE_STEERING_ONLY, Value::Bool(settings.steering_only)),
+    ] {
+        parameters.include(&[setting]);
+        parameters
+            .set(setting.name, value)
+            .expect("within the parameter's range");
+    }
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(kmh));
     ride

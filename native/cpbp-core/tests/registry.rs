@@ -17,6 +17,7 @@ use cpbp_core::ode::WorldState;
 use cpbp_core::ride::{
     Controller, ControllerEntry, ControllerKind, Drives, Intent, Ride, RideState,
 };
+use cpbp_core::settings::{self, DefaultValue, Range, Setting, Value};
 
 /// A controller that leaves the bar alone and counts how often it was asked.
 struct HandsOff;
@@ -62,12 +63,21 @@ fn a_new_controller_is_an_entry_and_rides() {
     );
 }
 
-/// A planner that plans the bar held still for the whole horizon, at a cost it marks.
+/// A planner that plans the bar held still for the whole horizon, at a cost it marks:
+/// its own parameter, which the schema has nowhere else.
 struct StillBar {
     steps: usize,
+    cost: f64,
 }
 
-const STILL_BAR_COST: f64 = 42.0;
+const STILL_BAR_COST: Setting = Setting {
+    name: "still_bar_cost",
+    label: "Still bar's cost",
+    description: "The cost the still-bar planner marks its plans with (a test's).",
+    default: DefaultValue::Float(42.0),
+    range: Some(Range::new(0.0, 100.0, 1.0)),
+    ..settings::BASE
+};
 
 impl BikePlanner for StillBar {
     fn reset(&mut self) {}
@@ -91,10 +101,10 @@ impl BikePlanner for StillBar {
             .collect();
         PlanResult {
             control,
-            best_cost: STILL_BAR_COST,
+            best_cost: self.cost,
             best: 0,
             sequences: vec![chosen.clone()],
-            costs: vec![STILL_BAR_COST],
+            costs: vec![self.cost],
             chosen,
             resamples: 0,
             blowups: 0,
@@ -111,7 +121,11 @@ impl BikePlanner for StillBar {
 }
 
 static STILL_BAR_PLANNER: PlannerSpec = PlannerSpec {
-    build: |_config: &OptimizerConfig, steps| Box::new(StillBar { steps }),
+    parameters: &[STILL_BAR_COST],
+    build: |config: &OptimizerConfig, steps| {
+        let cost = config.parameters.number(&STILL_BAR_COST);
+        Box::new(StillBar { steps, cost })
+    },
     follows: Follows::Nothing,
 };
 
@@ -128,6 +142,13 @@ fn a_new_planner_is_a_spec_and_an_entry_and_plans_on_the_planning_thread() {
     let kind = ControllerKind::new(&STILL_BAR);
     assert!(kind.plans());
     let mut ride = Ride::new(common::flat_ride(), kind);
+    // Its own parameter is the ride's to set, as the schema's settings are.
+    let parameters = &mut ride.planner.optimizer.parameters;
+    assert_eq!(parameters.get("still_bar_cost"), Some(&Value::Float(42.0)));
+    assert_eq!(
+        parameters.set("still_bar_cost", Value::Float(7.0)),
+        Ok(None)
+    );
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(10.0));
     for _ in 0..6 {
@@ -135,8 +156,8 @@ fn a_new_planner_is_a_spec_and_an_entry_and_plans_on_the_planning_thread() {
     }
     let plan = ride.plan().expect("the ride draws its plan");
     assert_eq!(
-        plan.best_cost, STILL_BAR_COST,
-        "the plan is the new planner's"
+        plan.best_cost, 7.0,
+        "the plan is the new planner's, at its parameter"
     );
     assert!(!plan.sequence.is_empty());
     assert_eq!(ride.late_plans(), 0);

@@ -5,7 +5,7 @@
 
 use std::time::Duration;
 
-use cpbp_core::control::{BaselineSettings, CostTolerances, OptimizerConfig, PlanWait};
+use cpbp_core::control::{CostTolerances, OptimizerConfig, PlanWait};
 use cpbp_core::physics::{PhysicsModel, RolloutStepping};
 use cpbp_core::ride::PlannerSettings;
 use cpbp_core::settings::*;
@@ -49,12 +49,7 @@ impl BikeSimulation {
             },
             threads: values.count(&PLANNING_THREADS),
             seed: values.integer(&PLANNER_SEED) as u64,
-            baseline: BaselineSettings {
-                knots: values.count(&BASELINE_KNOTS),
-                noise: values.number(&BASELINE_NOISE),
-                temperature: values.number(&MPPI_TEMPERATURE),
-                steering_only: values.flag(&BASELINE_STEERING_ONLY),
-            },
+            parameters: values.clone(),
             policy: crate::policy_model::policy_at(&self.policy_model),
             ..OptimizerConfig::default()
         }

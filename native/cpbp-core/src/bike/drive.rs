@@ -4,7 +4,7 @@
 use super::controls::{index, Controls, ForceClass};
 
 /// The fastest full throttle may be set to drive towards (km/h): the speed setting's top
-/// (`ride::limits::MAX_SPEED_KMH`) and the bound every drive input is held to.
+/// (`settings::MAX_SPEED_KMH`) and the bound every drive input is held to.
 pub const TOP_SPEED_KMH: f64 = 90.0;
 
 /// What the player's triggers ask of the rear wheel.

@@ -10,6 +10,7 @@ mod lean;
 pub mod learned;
 mod optimizer;
 pub mod planner;
+pub mod planner_parameters;
 pub mod sampling;
 
 pub use anytime::{AnytimeOptimizer, HandoverStats, Plan, PlanWait};
@@ -19,5 +20,5 @@ pub use goal::Goal;
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };
-pub use optimizer::{BaselineSettings, BikeOptimizer, OptimizerConfig};
+pub use optimizer::{BikeOptimizer, OptimizerConfig};
 pub use planner::{BikePlanner, Follows, PlannerSpec};

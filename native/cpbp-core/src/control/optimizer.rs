@@ -12,36 +12,8 @@ use super::Goal;
 use crate::bike::Controls;
 use crate::ode::Solver;
 use crate::physics::{PhysicsModel, RolloutStepping};
-use crate::settings;
+use crate::settings::{self, SettingValues};
 use crate::simulation::Simulation;
-
-/// What the baseline planners (predictive sampling, MPPI) sample and how widely.
-#[derive(Clone, Debug, PartialEq)]
-pub struct BaselineSettings {
-    /// Knots of a plan over the horizon.
-    pub knots: usize,
-    /// A knot's perturbation σ as a share of the priors' static σ (steering: 4 rad/s).
-    pub noise: f64,
-    /// MPPI's temperature, relative to the spread of the totals (median − cheapest).
-    pub temperature: f64,
-    /// Plan the steering alone, the rider holding the riding pose with the pose PD (the
-    /// pose prior's mean), instead of every joint.
-    pub steering_only: bool,
-}
-
-impl Default for BaselineSettings {
-    /// Chosen with `examples/baseline_sweep` (docs/results-history.md, "Planners side by side"):
-    /// sampling every joint falls at walking pace; steering alone with 10 knots, σ = 2 rad/s
-    /// and MPPI at temperature 0.01 tracked a 15° turn best.
-    fn default() -> Self {
-        Self {
-            knots: settings::BASELINE_KNOTS.default_number() as usize,
-            noise: settings::BASELINE_NOISE.default_number(),
-            temperature: settings::MPPI_TEMPERATURE.default_number(),
-            steering_only: settings::BASELINE_STEERING_ONLY.default_number() != 0.0,
-        }
-    }
-}
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct OptimizerConfig {
@@ -60,8 +32,6 @@ pub struct OptimizerConfig {
     pub rollout_solver: Solver,
     /// How strictly the cost holds the lean (eq. 4.7's s, rad) and the rider's position (m).
     pub tolerances: CostTolerances,
-    /// Mutation scale of the followed sequences (σm = scale · σ0).
-    pub mutation_scale: f64,
     /// Weight of the control priors' cost against the lean cost when choosing the best
     /// trajectory: the 16 planned dimensions add about 48 prior terms per step against one
     /// lean term, and unweighted they decide which trajectory wins.
@@ -69,8 +39,9 @@ pub struct OptimizerConfig {
     pub seed: u64,
     /// Rollout threads (0: one per core).
     pub threads: usize,
-    /// Settings of the baseline planners (ignored by C-PBP).
-    pub baseline: BaselineSettings,
+    /// The planners' own parameters by name (`PlannerSpec::parameters`): each planner
+    /// reads its own, at its default where this holds none.
+    pub parameters: SettingValues,
     /// The network the guided planner's trajectory 1 follows (and the learned
     /// controller drives with).
     pub policy: LoadedPolicy,
@@ -84,11 +55,10 @@ impl Default for OptimizerConfig {
             rollout_stepping: RolloutStepping::uniform(4),
             rollout_solver: Solver::QuickStep,
             tolerances: CostTolerances::default(),
-            mutation_scale: 0.2,
             control_cost_weight: 0.01,
             seed: settings::PLANNER_SEED.default_number() as u64,
             threads: 0,
-            baseline: BaselineSettings::default(),
+            parameters: SettingValues::none(),
             policy: LoadedPolicy::default(),
         }
     }

@@ -8,9 +8,12 @@
 use super::bike_rollout::{bike_priors, BikeRollout};
 use super::cpbp::{PlanPhases, PlanResult, Planner, PlannerConfig, Priors, WarmStart};
 use super::optimizer::OptimizerConfig;
+use super::planner_parameters::*;
 use super::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
 use crate::bike::{index, CONTROL_DIM};
 use crate::ode::WorldState;
+use crate::ride::ControllerKind;
+use crate::settings::Setting;
 
 /// A planner over the bike's rollout worlds.
 pub trait BikePlanner: Send {
@@ -33,6 +36,10 @@ pub trait BikePlanner: Send {
 /// How to build a planner, and what its rollouts need.
 #[derive(Debug)]
 pub struct PlannerSpec {
+    /// The planner's own parameters, as settings-schema entries: the game node, the
+    /// settings files and the tools list them with the schema's; `build` reads their
+    /// values from `config.parameters`.
+    pub parameters: &'static [Setting],
     /// A new planner with `config`'s settings, planning `steps` control steps ahead.
     pub build: fn(config: &OptimizerConfig, steps: usize) -> Box<dyn BikePlanner>,
     /// The controller trajectory 1 rides with, live (combined and guided modes).
@@ -52,12 +59,14 @@ pub enum Follows {
 
 /// C-PBP alone; trajectory 1 replays the last plan's local refinement (thesis §4.3).
 pub static OPTIMIZER: PlannerSpec = PlannerSpec {
+    parameters: CPBP_PARAMETERS,
     build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Refinement)),
     follows: Follows::Nothing,
 };
 
 /// C-PBP warm-started with the arcade controller's trajectory (thesis §4.3.2).
 pub static COMBINED: PlannerSpec = PlannerSpec {
+    parameters: CPBP_PARAMETERS,
     build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Policy)),
     follows: Follows::Arcade,
 };
@@ -65,6 +74,7 @@ pub static COMBINED: PlannerSpec = PlannerSpec {
 /// C-PBP warm-started with the learned network's trajectory (issue 34): the network
 /// proposes, the planner checks and refines, so a few trajectories should do.
 pub static GUIDED: PlannerSpec = PlannerSpec {
+    parameters: CPBP_PARAMETERS,
     build: |config, steps| Box::new(Cpbp::new(config, steps, WarmRoute::Policy)),
     follows: Follows::Network,
 };
@@ -72,14 +82,16 @@ pub static GUIDED: PlannerSpec = PlannerSpec {
 /// MuJoCo MPC's predictive sampling: the cheapest of a nominal plan and its perturbations
 /// becomes the plan.
 pub static SAMPLING: PlannerSpec = PlannerSpec {
+    parameters: SAMPLING_PARAMETERS,
     build: |config, steps| Box::new(sampling(config, steps, SamplingUpdate::Best)),
     follows: Follows::Nothing,
 };
 
 /// MPPI: the cost-weighted average of the perturbations becomes the plan.
 pub static MPPI: PlannerSpec = PlannerSpec {
+    parameters: MPPI_PARAMETERS,
     build: |config, steps| {
-        let temperature = config.baseline.temperature;
+        let temperature = config.parameters.number(&MPPI_TEMPERATURE);
         Box::new(sampling(
             config,
             steps,
@@ -149,17 +161,17 @@ impl BikePlanner for Cpbp {
     }
 }
 
-/// Predictive sampling or MPPI as the baseline settings say.
+/// Predictive sampling or MPPI as their parameters say.
 fn sampling(config: &OptimizerConfig, steps: usize, update: SamplingUpdate) -> SamplingPlanner {
-    let baseline = &config.baseline;
-    let sampled = baseline
-        .steering_only
+    let values = &config.parameters;
+    let sampled = values
+        .flag(&BASELINE_STEERING_ONLY)
         .then(|| (0..CONTROL_DIM).map(|d| d == index::STEER).collect());
     let sampling_config = SamplingConfig {
         samples: config.particles.max(1),
         steps,
-        knots: baseline.knots.max(2),
-        noise: baseline.noise,
+        knots: values.count(&BASELINE_KNOTS).max(2),
+        noise: values.number(&BASELINE_NOISE),
         update,
         sampled,
         control_cost_weight: config.control_cost_weight,
@@ -193,5 +205,17 @@ impl BikePlanner for SamplingPlanner {
 }
 
 fn priors(config: &OptimizerConfig) -> Priors {
-    bike_priors(config.mutation_scale)
+    bike_priors(config.parameters.number(&MUTATION_SCALE))
+}
+
+/// Every parameter of the registered planners, each once, in the registry's order.
+pub fn registered_parameters() -> Vec<Setting> {
+    let mut all: Vec<Setting> = Vec::new();
+    let specs = ControllerKind::ALL.iter().filter_map(|k| k.planner());
+    for setting in specs.flat_map(|spec| spec.parameters) {
+        if all.iter().all(|s| s.name != setting.name) {
+            all.push(*setting);
+        }
+    }
+    all
 }

@@ -48,6 +48,9 @@ impl Ride {
     pub fn new(sim: Simulation, kind: ControllerKind) -> Self {
         let mut planner = PlannerSettings::default();
         planner.optimizer = planner.optimizer.rolling_out_in(sim.config().physics);
+        if let Some(spec) = kind.planner() {
+            planner.optimizer.parameters.include(spec.parameters);
+        }
         Self {
             sim,
             kind,

@@ -6,7 +6,8 @@ use super::{DefaultValue as D, Owner, Range, Setting};
 use crate::bike::TOP_SPEED_KMH;
 
 /// What an entry is unless it says otherwise: a planner's number, hidden from players.
-const BASE: Setting = Setting {
+/// A planner's own parameters (declared with its `PlannerSpec`) start from this too.
+pub const BASE: Setting = Setting {
     name: "",
     label: "",
     description: "",
@@ -165,38 +166,6 @@ pub const PLANNER_SEED: Setting = Setting {
     range: Some(Range::new(i64::MIN as f64, i64::MAX as f64, 1.0)),
     ..BASE
 };
-pub const BASELINE_KNOTS: Setting = Setting {
-    name: "baseline_knots",
-    label: "Baseline knots",
-    description: "The baseline planners (sampling, mppi): knots of a plan over the horizon.",
-    default: D::Int(10),
-    range: Some(Range::new(2.0, 36.0, 1.0)),
-    ..BASE
-};
-pub const BASELINE_NOISE: Setting = Setting {
-    name: "baseline_noise",
-    label: "Baseline noise",
-    description: "The baselines' knot perturbation, as a share of the steering prior's σ.",
-    default: D::Float(0.5),
-    range: Some(Range::new(0.05, 2.0, 0.05)),
-    ..BASE
-};
-pub const MPPI_TEMPERATURE: Setting = Setting {
-    name: "mppi_temperature",
-    label: "MPPI temperature",
-    description: "MPPI's temperature, relative to the spread of its candidates' costs.",
-    default: D::Float(0.01),
-    range: Some(Range::new(0.001, 1.0, 0.001)),
-    ..BASE
-};
-pub const BASELINE_STEERING_ONLY: Setting = Setting {
-    name: "baseline_steering_only",
-    label: "Baselines steer only",
-    description: "The baselines plan the steering alone, the rider on the pose PD (else \
-                  every joint).",
-    default: D::Bool(true),
-    ..BASE
-};
 
 // The game's own.
 
@@ -315,10 +284,6 @@ pub const ENTRIES: &[Setting] = &[
     ROLLOUT_SUBSTEPS,
     PLANNING_THREADS,
     PLANNER_SEED,
-    BASELINE_KNOTS,
-    BASELINE_NOISE,
-    MPPI_TEMPERATURE,
-    BASELINE_STEERING_ONLY,
     SUBSTEPS,
     PLAN_WAIT_MS,
     WAIT_FOR_EVERY_PLAN,

@@ -165,10 +165,17 @@ fn unit_suffix(unit: &str) -> String {
 /// Entries added at run time (`extend`).
 static EXTENDED: RwLock<Vec<Setting>> = RwLock::new(Vec::new());
 
-/// Every setting: the compiled entries, then those added at run time.
+/// Every setting: the compiled entries, the registered planners' own parameters, then
+/// those added at run time.
 pub fn all() -> Vec<Setting> {
     let extended = EXTENDED.read().unwrap_or_else(PoisonError::into_inner);
-    ENTRIES.iter().chain(extended.iter()).copied().collect()
+    let planners = crate::control::planner::registered_parameters();
+    ENTRIES
+        .iter()
+        .chain(planners.iter())
+        .chain(extended.iter())
+        .copied()
+        .collect()
 }
 
 /// The setting called `name`.

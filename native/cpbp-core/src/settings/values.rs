@@ -61,6 +61,22 @@ impl SettingValues {
         Self { entries }
     }
 
+    /// None held: every reader gets the defaults.
+    pub fn none() -> Self {
+        Self {
+            entries: Vec::new(),
+        }
+    }
+
+    /// Holds `settings` too (at their defaults), those it does not hold yet.
+    pub fn include(&mut self, settings: &[Setting]) {
+        for setting in settings {
+            if self.get(setting.name).is_none() {
+                self.entries.push((*setting, Value::from(setting.default)));
+            }
+        }
+    }
+
     /// The settings held, in the schema's order.
     pub fn settings(&self) -> impl Iterator<Item = &Setting> {
         self.entries.iter().map(|(s, _)| s)
