@@ -135,7 +135,7 @@ fn ride(kind: ControllerKind, n: usize, settings: &Baseline, seed: u64, kmh: f64
     };
     let sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
     let mut ride = Ride::new(sim, kind);
-    ride.planner.optimizer.particles = n;
+    ride.planner.optimizer.trajectories = n;
     ride.planner.optimizer.seed = seed;
     let parameters = &mut ride.planner.optimizer.parameters;
     for (setting, value) in [

@@ -54,7 +54,7 @@ fn main() {
         sim.step();
     }
     let config = OptimizerConfig {
-        particles: n,
+        trajectories: n,
         threads,
         ..OptimizerConfig::default()
     }

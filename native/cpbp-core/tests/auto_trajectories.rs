@@ -102,7 +102,7 @@ fn under_load_n_comes_down_until_plans_are_in_time_and_goes_back_up_after() {
         ControllerKind::COMBINED,
     );
     // The most the automatic choice allows: too many for two cores even unloaded.
-    ride.planner.optimizer.particles = limits::AUTO_TRAJECTORIES.max as usize;
+    ride.planner.optimizer.trajectories = limits::AUTO_TRAJECTORIES.max as usize;
     ride.planner.wait = PlanWait::AtMost(GAME_PLAN_WAIT);
     ride.planner.auto_trajectories = true;
     ride.set_intent(Intent::cruise(15.0));

@@ -41,7 +41,7 @@ impl BikeSimulation {
             .sim()
             .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
         let mut optimizer = OptimizerConfig {
-            particles: values.count(&TRAJECTORIES),
+            trajectories: values.count(&TRAJECTORIES),
             horizon: values.number(&HORIZON_S),
             tolerances: CostTolerances {
                 lean: values.number(&LEAN_TOLERANCE_DEG).to_radians(),

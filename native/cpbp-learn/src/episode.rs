@@ -186,7 +186,7 @@ pub fn ride(
 ) -> Records {
     let mut sim = episode.simulation();
     let config = OptimizerConfig {
-        particles: settings.trajectories,
+        trajectories: settings.trajectories,
         seed: episode.seed,
         threads: 1,
         ..OptimizerConfig::default().rolling_out_in(PhysicsModel::Exact)

@@ -51,7 +51,7 @@ fn fingerprint(physics: PhysicsModel, kind: ControllerKind, particles: usize) ->
     };
     let sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
     let mut ride = Ride::new(sim, kind);
-    ride.planner.optimizer.particles = particles;
+    ride.planner.optimizer.trajectories = particles;
     ride.planner.optimizer.threads = 2;
     ride.planner.optimizer.policy = project_policy();
     ride.planner.wait = PlanWait::EveryPlan;

@@ -306,7 +306,7 @@ fn plan_requests(
             // The automatic N moves N while riding: keep the planner, its memory and its
             // worlds rather than building them anew.
             Some(o) if o.config.differs_only_in_trajectories(&request.config) => {
-                o.set_trajectories(&replica, request.config.particles);
+                o.set_trajectories(&replica, request.config.trajectories);
                 o
             }
             slot => slot.insert(BikeOptimizer::new(&replica, spec, request.config.clone())),
@@ -324,7 +324,7 @@ fn plan_requests(
             step: request.step,
             sequence: optimizer.chosen_sequence(),
             best_cost: result.best_cost,
-            trajectories: optimizer.config.particles,
+            trajectories: optimizer.config.trajectories,
             resamples: result.resamples,
             blowups: result.blowups,
             planning_ms: started.elapsed().as_secs_f64() * 1000.0,

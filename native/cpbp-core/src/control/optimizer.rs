@@ -18,7 +18,7 @@ use crate::simulation::Simulation;
 #[derive(Clone, Debug, PartialEq)]
 pub struct OptimizerConfig {
     /// Trajectories (N).
-    pub particles: usize,
+    pub trajectories: usize,
     /// Planning horizon (s); the thesis used 1.2 s.
     pub horizon: f64,
     /// ODE steps per planning step in the rollouts; `Ride` takes the physics model's
@@ -50,7 +50,7 @@ pub struct OptimizerConfig {
 impl Default for OptimizerConfig {
     fn default() -> Self {
         Self {
-            particles: settings::TRAJECTORIES.default_number() as usize,
+            trajectories: settings::TRAJECTORIES.default_number() as usize,
             horizon: settings::HORIZON_S.default_number(),
             rollout_stepping: RolloutStepping::uniform(4),
             rollout_solver: Solver::QuickStep,
@@ -78,7 +78,7 @@ impl OptimizerConfig {
     /// can switch between the two without being built anew.
     pub fn differs_only_in_trajectories(&self, other: &Self) -> bool {
         Self {
-            particles: other.particles,
+            trajectories: other.trajectories,
             ..self.clone()
         } == *other
     }
@@ -114,15 +114,15 @@ impl BikeOptimizer {
     /// Plans with `n` trajectories from the next plan on, keeping the planner's memory;
     /// worlds are added when N grows past every N before (and kept when it shrinks).
     pub fn set_trajectories(&mut self, sim: &Simulation, n: usize) {
-        self.config.particles = n.max(1);
-        self.planner.set_trajectories(self.config.particles);
+        self.config.trajectories = n.max(1);
+        self.planner.set_trajectories(self.config.trajectories);
         self.add_rollouts(sim, sim.config().control_dt);
     }
 
     /// Rollout worlds like the master of `sim` until there is one per trajectory.
     fn add_rollouts(&mut self, sim: &Simulation, step_dt: f64) {
         let config = &self.config;
-        while self.rollouts.len() < config.particles.max(1) {
+        while self.rollouts.len() < config.trajectories.max(1) {
             let mut world = sim.new_world();
             world.set_solver(config.rollout_solver);
             self.rollouts.push(BikeRollout {

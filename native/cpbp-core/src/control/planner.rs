@@ -118,7 +118,7 @@ struct Cpbp {
 impl Cpbp {
     fn new(config: &OptimizerConfig, steps: usize, warm: WarmRoute) -> Self {
         let planner_config = PlannerConfig {
-            particles: config.particles.max(1),
+            particles: config.trajectories.max(1),
             steps,
             seed: config.seed,
             threads: config.threads,
@@ -168,7 +168,7 @@ fn sampling(config: &OptimizerConfig, steps: usize, update: SamplingUpdate) -> S
         .flag(&BASELINE_STEERING_ONLY)
         .then(|| (0..CONTROL_DIM).map(|d| d == index::STEER).collect());
     let sampling_config = SamplingConfig {
-        samples: config.particles.max(1),
+        samples: config.trajectories.max(1),
         steps,
         knots: values.count(&BASELINE_KNOTS).max(2),
         noise: values.number(&BASELINE_NOISE),

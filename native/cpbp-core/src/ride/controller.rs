@@ -91,7 +91,7 @@ pub trait Controller: Send {
 /// How the planners plan: the optimizer's settings and how long the ride waits for a plan.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlannerSettings {
-    /// `optimizer.particles` is N, or where the automatic choice starts from.
+    /// `optimizer.trajectories` is N, or where the automatic choice starts from.
     pub optimizer: OptimizerConfig,
     pub wait: PlanWait,
     /// Move N while riding to what this machine plans in time (`AutoTrajectories`).

@@ -151,7 +151,7 @@ impl PlannerDriver {
             anytime: AnytimeOptimizer::new(sim, spec, planner.wait),
             auto: None,
             timed_plan: None,
-            trajectories: planner.optimizer.particles,
+            trajectories: planner.optimizer.trajectories,
             follows_network: spec.follows == Follows::Network,
             failure: None,
             failure_state: (false, false),
@@ -161,7 +161,7 @@ impl PlannerDriver {
     /// The automatic N for the next request, while the settings ask for one (it starts
     /// afresh from the setting's N when that changes).
     fn automatic(&mut self, settings: &PlannerSettings, period_s: f64) -> Option<usize> {
-        let start = settings.optimizer.particles;
+        let start = settings.optimizer.trajectories;
         if !settings.picks_trajectories() {
             self.auto = None;
             return None;
@@ -214,9 +214,9 @@ impl Controller for PlannerDriver {
         let mut config = state.planner.optimizer.clone();
         let period = state.sim.config().control_dt;
         if let Some(n) = self.automatic(state.planner, period) {
-            config.particles = n;
+            config.trajectories = n;
         }
-        self.trajectories = config.particles;
+        self.trajectories = config.trajectories;
         let late_before = self.anytime.stats.late;
         let controls = self.anytime.controls(state.sim, &state.goal, &config);
         self.note_step(self.anytime.stats.late > late_before);

@@ -61,7 +61,7 @@ fn plans_made_before_a_reset_are_never_applied_after_it() {
     // The hand-over itself, below the ride: a reset drops plans already in flight.
     let mut sim = common::flat_ride();
     let config = OptimizerConfig {
-        particles: 5,
+        trajectories: 5,
         ..OptimizerConfig::default()
     };
     let mut anytime = AnytimeOptimizer::new(&sim, &planner::COMBINED, PlanWait::EveryPlan);

@@ -116,7 +116,7 @@ fn raw_controls_drive_until_the_next_intent() {
 )]
 fn a_planner_drives_with_plans_and_switching_forgets_them() {
     let mut ride = ride_with(ControllerKind::COMBINED);
-    ride.planner.optimizer.particles = 5;
+    ride.planner.optimizer.trajectories = 5;
     ride.planner.wait = PlanWait::EveryPlan;
     for _ in 0..30 {
         ride.step();

@@ -135,7 +135,7 @@ fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
         rolling_bike(terrain.clone(), PhysicsModel::default()),
         ControllerKind::COMBINED,
     );
-    ride.planner.optimizer.particles = n;
+    ride.planner.optimizer.trajectories = n;
     // At this N throughout: the automatic choice would move it.
     ride.planner.auto_trajectories = false;
     ride.planner.wait = PlanWait::AtMost(Duration::from_millis(10));

@@ -148,7 +148,7 @@ pub fn planning_ms(
     let model = sim.config().physics;
     let spec = kind.planner().expect("a planning controller");
     let config = OptimizerConfig {
-        particles: n,
+        trajectories: n,
         threads,
         policy: cpbp_core::control::learned::project_policy(),
         ..OptimizerConfig::default()

@@ -296,7 +296,7 @@ pub(crate) fn new_ride(rider: Rider, kmh: f64, slope: f64) -> Ride {
         ..SimulationConfig::default()
     };
     let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);
-    ride.planner.optimizer.particles = n;
+    ride.planner.optimizer.trajectories = n;
     ride.planner.optimizer.seed = seed;
     ride.planner.optimizer.policy = POLICY.get().cloned().unwrap_or_default();
     ride.planner.wait = PlanWait::EveryPlan;
