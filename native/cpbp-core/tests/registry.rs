@@ -9,9 +9,9 @@ use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use cpbp_core::bike::{Controls, CONTROL_DIM};
-use cpbp_core::control::cpbp::{PlanPhases, PlanResult};
 use cpbp_core::control::{
-    BikePlanner, BikeRollout, Follows, OptimizerConfig, PlanWait, PlannerSpec,
+    BikePlanner, BikeRollout, Diagnostics, Follows, OptimizerConfig, PlanPhases, PlanResult,
+    PlanWait, PlannerSpec, Trajectory,
 };
 use cpbp_core::ode::WorldState;
 use cpbp_core::ride::{
@@ -101,17 +101,17 @@ impl BikePlanner for StillBar {
             .collect();
         PlanResult {
             control,
-            best_cost: self.cost,
             best: 0,
-            sequences: vec![chosen.clone()],
-            costs: vec![self.cost],
+            best_cost: self.cost,
+            trajectories: vec![Trajectory {
+                controls: chosen.clone(),
+                cost: self.cost,
+                path: Vec::new(),
+            }],
             chosen,
-            resamples: 0,
             blowups: 0,
-            refined: None,
-            beliefs: vec![1.0],
-            paths: Vec::new(),
-            warm_started: false,
+            warm: None,
+            diagnostics: Diagnostics::default(),
         }
     }
 

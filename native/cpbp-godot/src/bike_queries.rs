@@ -145,7 +145,8 @@ impl BikeSimulation {
     /// Resampling steps in the last plan taken over.
     #[func]
     fn get_resample_count(&self) -> i64 {
-        self.current_plan().map_or(0, |p| p.resamples as i64)
+        self.current_plan()
+            .map_or(0, |p| p.diagnostics.count("resamples") as i64)
     }
 
     /// How the planning thread's plans reached the control steps since the ride was last

@@ -91,7 +91,7 @@ fn decisions(plan: &Plan) -> String {
         plan.step,
         plan.sequence,
         plan.best_cost,
-        plan.resamples,
+        plan.diagnostics.count("resamples"),
         plan.blowups,
         plan.paths,
         plan.best,

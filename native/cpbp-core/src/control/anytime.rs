@@ -15,8 +15,8 @@ use std::time::{Duration, Instant};
 use glam::DVec3;
 
 use super::arcade::ArcadeController;
-use super::cpbp::PlanPhases;
 use super::optimizer::{BikeOptimizer, OptimizerConfig};
+use super::plan_result::{Diagnostics, PlanPhases};
 use super::planner::PlannerSpec;
 use super::Goal;
 use crate::bike::Controls;
@@ -55,8 +55,9 @@ pub struct Plan {
     pub best_cost: f64,
     /// Trajectories it was planned with (N).
     pub trajectories: usize,
-    pub resamples: usize,
     pub blowups: usize,
+    /// The planner's own numbers about the plan (C-PBP: "resamples").
+    pub diagnostics: Diagnostics,
     pub planning_ms: f64,
     /// Where the planner's own time went (within `planning_ms`, which also counts the
     /// replica's prediction step and the hand-over's copies).
@@ -325,17 +326,17 @@ fn plan_requests(
             sequence: optimizer.chosen_sequence(),
             best_cost: result.best_cost,
             trajectories: optimizer.config.trajectories,
-            resamples: result.resamples,
             blowups: result.blowups,
+            diagnostics: result.diagnostics.clone(),
             planning_ms: started.elapsed().as_secs_f64() * 1000.0,
             phases: optimizer.phases(),
             paths: result
-                .paths
+                .trajectories
                 .iter()
-                .map(|p| p.iter().map(|x| DVec3::from_array(*x)).collect())
+                .map(|t| t.path.iter().map(|x| DVec3::from_array(*x)).collect())
                 .collect(),
             best: result.best,
-            warm: result.warm_started.then_some(1),
+            warm: result.warm,
         };
         if replies.send(plan).is_err() {
             return;

@@ -9,6 +9,7 @@ mod goal;
 mod lean;
 pub mod learned;
 mod optimizer;
+mod plan_result;
 pub mod planner;
 pub mod planner_parameters;
 pub mod sampling;
@@ -21,4 +22,5 @@ pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };
 pub use optimizer::{BikeOptimizer, OptimizerConfig};
+pub use plan_result::{Diagnostics, PlanPhases, PlanResult, Trajectory};
 pub use planner::{BikePlanner, Follows, PlannerSpec};

@@ -5,8 +5,8 @@
 
 use super::arcade::ArcadeController;
 use super::bike_rollout::{BikeRollout, CostTolerances, RolloutPolicy};
-use super::cpbp::{PlanPhases, PlanResult};
 use super::learned::LoadedPolicy;
+use super::plan_result::{PlanPhases, PlanResult};
 use super::planner::{BikePlanner, Follows, PlannerSpec};
 use super::Goal;
 use crate::bike::Controls;
@@ -169,7 +169,10 @@ impl BikeOptimizer {
     /// chosen one (for replaying the plan's rollouts without the planner).
     pub fn sequences(&self) -> Vec<Vec<Controls>> {
         self.last.as_ref().map_or_else(Vec::new, |plan| {
-            plan.sequences.iter().map(|s| self.as_controls(s)).collect()
+            plan.trajectories
+                .iter()
+                .map(|t| self.as_controls(&t.controls))
+                .collect()
         })
     }
 

@@ -6,8 +6,9 @@
 //! its spec and one line in the registry.
 
 use super::bike_rollout::{bike_priors, BikeRollout};
-use super::cpbp::{PlanPhases, PlanResult, Planner, PlannerConfig, Priors, WarmStart};
+use super::cpbp::{Planner, PlannerConfig, Priors, WarmStart};
 use super::optimizer::OptimizerConfig;
+use super::plan_result::{PlanPhases, PlanResult};
 use super::planner_parameters::*;
 use super::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
 use crate::bike::{index, CONTROL_DIM};
@@ -149,7 +150,7 @@ impl BikePlanner for Cpbp {
             WarmRoute::Refinement => WarmStart::Refinement,
             WarmRoute::Policy => WarmStart::Policy,
         };
-        self.planner.plan(rollouts, start, warm)
+        self.planner.plan(rollouts, start, warm).plan()
     }
 
     fn phases(&self) -> PlanPhases {

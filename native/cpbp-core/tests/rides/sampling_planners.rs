@@ -5,8 +5,9 @@ use crate::common;
 
 use common::pendulum::Pendulum;
 use common::{assert_rides_straight_for_20_seconds, ride_in};
-use cpbp_core::control::cpbp::{PlanResult, Priors, RolloutSystem};
+use cpbp_core::control::cpbp::{Priors, RolloutSystem};
 use cpbp_core::control::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
+use cpbp_core::control::PlanResult;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::ControllerKind;
 
@@ -28,15 +29,18 @@ fn planner(update: SamplingUpdate, threads: usize) -> SamplingPlanner {
     SamplingPlanner::new(config, Priors::uniform(1, 2.0, 1.0, 0.2, 4.0))
 }
 
+/// A plan and the weights the planner gave its candidates.
+type Weighed = (PlanResult, Vec<f64>);
+
 /// Plans and applies `frames` control steps on a pendulum starting at `tilt`; the plans.
-fn balance(mut planner: SamplingPlanner, tilt: f64, frames: usize) -> (Pendulum, Vec<PlanResult>) {
+fn balance(mut planner: SamplingPlanner, tilt: f64, frames: usize) -> (Pendulum, Vec<Weighed>) {
     let mut master = Pendulum::new(tilt);
     let mut systems: Vec<Pendulum> = (0..16).map(|_| Pendulum::new(tilt)).collect();
     let plans = (0..frames)
         .map(|_| {
             let result = planner.plan(&mut systems, &master.save());
             master.advance(result.control[0]);
-            result
+            (result, planner.weights.clone())
         })
         .collect();
     (master, plans)
@@ -77,19 +81,19 @@ fn a_fixed_seed_plans_the_same_on_one_thread_and_on_two() {
 #[test]
 fn mppi_applies_the_weighted_average_and_sampling_the_cheapest() {
     let (_, plans) = balance(planner(UPDATES[1], 2), 0.2, 3);
-    let plan = &plans[2];
+    let (plan, weights) = &plans[2];
     let average: f64 = plan
-        .sequences
+        .trajectories
         .iter()
-        .zip(&plan.beliefs)
-        .map(|(s, w)| s[0] * w)
+        .zip(weights)
+        .map(|(t, w)| t.controls[0] * w)
         .sum();
     assert!((plan.control[0] - average).abs() < 1e-12);
-    assert!((plan.beliefs.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+    assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-12);
     let (_, plans) = balance(planner(UPDATES[0], 2), 0.2, 3);
-    let plan = &plans[2];
-    assert_eq!(plan.chosen, plan.sequences[plan.best]);
-    assert!(plan.costs.iter().all(|&c| c >= plan.best_cost));
+    let (plan, _) = &plans[2];
+    assert_eq!(plan.chosen, plan.trajectories[plan.best].controls);
+    assert!(plan.trajectories.iter().all(|t| t.cost >= plan.best_cost));
 }
 
 /// A point mass whose simulation "blows up" (returns None) when pushed faster than 1.
@@ -132,9 +136,9 @@ fn blown_up_rollouts_are_costed_and_never_chosen() {
             .chosen
             .iter()
             .all(|u| u.is_finite() && u.abs() <= 3.0));
-        for (cost, weight) in result.costs.iter().zip(&result.beliefs) {
+        for (trajectory, weight) in result.trajectories.iter().zip(&planner.weights) {
             assert!(
-                *cost < 1e6 || *weight < 1e-12,
+                trajectory.cost < 1e6 || *weight < 1e-12,
                 "{update:?}: a blow-up has weight"
             );
         }

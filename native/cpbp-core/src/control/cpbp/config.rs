@@ -1,5 +1,7 @@
 //! The planner's settings, what particle 1 replays, and what a frame returns.
 
+use crate::control::{Diagnostics, PlanResult};
+
 /// Sizes and tuning of the planner; defaults are the specification's.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlannerConfig {
@@ -66,40 +68,10 @@ pub enum WarmStart<'a> {
     Policy,
 }
 
-/// Where a frame's time went (ms): rolling the trajectories out (the part that spreads over
-/// the threads), reading the plan back from them, and the rest (choosing what each
-/// trajectory follows, resampling, bookkeeping) on the planning thread alone.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct PlanPhases {
-    pub total_ms: f64,
-    pub rollouts_ms: f64,
-    pub conclude_ms: f64,
-}
-
-impl PlanPhases {
-    /// The phases of a frame that started at `started`, rolled out for `rollouts` and
-    /// began concluding at `concluding`.
-    pub fn measured(
-        started: std::time::Instant,
-        rollouts: std::time::Duration,
-        concluding: std::time::Instant,
-    ) -> Self {
-        Self {
-            total_ms: started.elapsed().as_secs_f64() * 1000.0,
-            rollouts_ms: rollouts.as_secs_f64() * 1000.0,
-            conclude_ms: concluding.elapsed().as_secs_f64() * 1000.0,
-        }
-    }
-
-    /// The planning thread's own share: neither rollouts nor concluding.
-    pub fn other_ms(&self) -> f64 {
-        (self.total_ms - self.rollouts_ms - self.conclude_ms).max(0.0)
-    }
-}
-
-/// What a frame found.
+/// What a C-PBP frame found: the plan (`plan()` gives it as every planner's) and what
+/// only C-PBP has, its resampling, refinement and beliefs.
 #[derive(Clone, Debug, PartialEq)]
-pub struct PlanResult {
+pub struct FrameResult {
     /// The best trajectory's first control: apply it now.
     pub control: Vec<f64>,
     /// Total (state + control) cost of the best trajectory.
@@ -124,4 +96,21 @@ pub struct PlanResult {
     pub paths: Vec<Vec<[f64; 3]>>,
     /// Whether particle 1 replayed a warm start.
     pub warm_started: bool,
+}
+
+impl FrameResult {
+    /// The frame as every planner's plan, its resampling count among the diagnostics.
+    pub fn plan(self) -> PlanResult {
+        PlanResult {
+            control: self.control,
+            chosen: self.chosen,
+            best: self.best,
+            best_cost: self.best_cost,
+            trajectories: PlanResult::trajectories_of(self.sequences, &self.costs, self.paths),
+            blowups: self.blowups,
+            // Particle 1 replays the warm start (`WarmStart`).
+            warm: self.warm_started.then_some(1),
+            diagnostics: Diagnostics(vec![("resamples", self.resamples as f64)]),
+        }
+    }
 }

@@ -15,7 +15,7 @@ mod refinement;
 mod rollout;
 mod sequences;
 
-pub use config::{PlanPhases, PlanResult, PlannerConfig, WarmStart, DEFAULT_SEED};
+pub use config::{FrameResult, PlannerConfig, WarmStart, DEFAULT_SEED};
 pub(crate) use frame::mix;
 pub(crate) use planner::rollout_pool;
 pub use planner::Planner;

@@ -8,13 +8,14 @@ use rand_pcg::Pcg64;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use super::config::{PlanPhases, PlanResult, PlannerConfig, WarmStart};
+use super::config::{FrameResult, PlannerConfig, WarmStart};
 use super::frame::{draw, lineages, mix, smoothed_beliefs};
 use super::frame::{Particles, StepRecord};
 use super::priors::{AppliedControls, Priors};
 use super::refinement::{refine, StepSamples};
 use super::rollout::RolloutSystem;
 use super::sequences::shift_one_step;
+use crate::control::PlanPhases;
 
 mod stepping;
 
@@ -90,7 +91,7 @@ impl Planner {
         systems: &mut [S],
         start: &S::State,
         warm: WarmStart<'_>,
-    ) -> PlanResult {
+    ) -> FrameResult {
         // The whole frame runs on the rollout threads: handing each of its K steps from the
         // caller's thread to the pool and back put the kernel's scheduler in every step.
         let pool = Arc::clone(&self.pool);
@@ -102,7 +103,7 @@ impl Planner {
         systems: &mut [S],
         start: &S::State,
         warm: WarmStart<'_>,
-    ) -> PlanResult {
+    ) -> FrameResult {
         let started = Instant::now();
         let mut rolling_out = Duration::ZERO;
         let n = self.config.particles.max(1).min(systems.len());
@@ -148,7 +149,7 @@ impl Planner {
         mut particles: Particles<State>,
         start_features: &[f64],
         warm_started: bool,
-    ) -> PlanResult {
+    ) -> FrameResult {
         let dim = self.priors.dim();
         let (sequences, paths) = lineages(&records);
         let end_weights = particles.normalise_weights();
@@ -164,7 +165,7 @@ impl Planner {
         };
         self.remember(&sequences, &end_weights, best, refined.clone(), dim);
         self.note_applied(&control);
-        PlanResult {
+        FrameResult {
             control,
             best_cost: totals[best],
             best,

@@ -13,8 +13,9 @@ use rayon::prelude::*;
 
 use super::spline::Knots;
 use crate::control::cpbp::{
-    mix, rollout_pool, AppliedControls, PlanPhases, PlanResult, Priors, RolloutSystem, DEFAULT_SEED,
+    mix, rollout_pool, AppliedControls, Priors, RolloutSystem, DEFAULT_SEED,
 };
+use crate::control::{Diagnostics, PlanPhases, PlanResult, Trajectory};
 
 /// How a frame's candidates make the next nominal plan.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -88,6 +89,9 @@ pub struct SamplingPlanner {
     frame: u64,
     /// Where the last frame's time went.
     pub phases: PlanPhases,
+    /// Each candidate's weight in the last frame's update (MPPI's; the best's alone is 1
+    /// for predictive sampling).
+    pub weights: Vec<f64>,
 }
 
 impl SamplingPlanner {
@@ -100,6 +104,7 @@ impl SamplingPlanner {
             nominal: None,
             frame: 0,
             phases: PlanPhases::default(),
+            weights: Vec::new(),
         }
     }
 
@@ -161,19 +166,26 @@ impl SamplingPlanner {
         let control = chosen[..self.priors.dim()].to_vec();
         self.note_applied(&control);
         self.phases = PlanPhases::measured(started, rolled_out, concluding);
+        self.weights = weights;
+        let blowups = rollouts.iter().filter(|r| r.blew_up).count();
+        let trajectories = rollouts
+            .into_iter()
+            .zip(&totals)
+            .map(|(r, &cost)| Trajectory {
+                controls: r.controls,
+                cost,
+                path: r.path,
+            })
+            .collect();
         PlanResult {
             control,
-            best_cost: totals[best],
-            best,
-            blowups: rollouts.iter().filter(|r| r.blew_up).count(),
-            sequences: rollouts.iter().map(|r| r.controls.clone()).collect(),
-            paths: rollouts.into_iter().map(|r| r.path).collect(),
-            costs: totals,
             chosen,
-            resamples: 0,
-            refined: None,
-            beliefs: weights,
-            warm_started: false,
+            best,
+            best_cost: totals[best],
+            trajectories,
+            blowups,
+            warm: None,
+            diagnostics: Diagnostics::default(),
         }
     }
 
