@@ -10,6 +10,8 @@ use cpbp_core::physics::{PhysicsModel, RolloutStepping};
 use cpbp_core::ride::PlannerSettings;
 use cpbp_core::settings::*;
 
+use godot::global::godot_warn;
+
 use crate::bike_simulation::BikeSimulation;
 
 impl BikeSimulation {
@@ -17,6 +19,15 @@ impl BikeSimulation {
     pub(crate) fn sync_settings(&mut self) {
         let kind = self.controller_kind();
         let planner = self.planner_settings();
+        if kind.uses_network() && !self.told_other_bike {
+            let other = self
+                .sim()
+                .and_then(|sim| planner.optimizer.policy.other_bike(&sim.config().bike));
+            if let Some(why) = other {
+                godot_warn!("BikeSimulation: {why}");
+                self.told_other_bike = true;
+            }
+        }
         if let Some(drive) = self.drive().filter(|d| *d != self.intent.drive) {
             self.intent.drive = drive;
             self.apply_intent();

@@ -70,6 +70,8 @@ pub struct BikeSimulation {
     pub(crate) previous_poses: Vec<(DVec3, DQuat)>,
     /// Whether the active controller's failure has been reported.
     pub(crate) failure_reported: bool,
+    /// Whether the player was told that the learned model was trained on another bike.
+    pub(crate) told_other_bike: bool,
     base: Base<Node3D>,
 }
 

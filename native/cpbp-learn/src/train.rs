@@ -261,6 +261,8 @@ pub fn train(
         output_mean: out_mean,
         output_std: out_std,
         training: format!("{description}, weights of epoch {best_epoch}"),
+        // The episodes ride the reference bike (`Episode::simulation`).
+        bike: cpbp_core::bike::BikeParams::default().identity(),
     })
     .map_err(|e| e.to_string())
 }

@@ -121,6 +121,16 @@ impl BikeParams {
         self.rider_masses.iter().sum()
     }
 
+    /// A short name for exactly these numbers (16 hex digits of an FNV-1a hash of their
+    /// exact notation): what a learned model records of the bike it was trained on.
+    pub fn identity(&self) -> String {
+        let text = format!("{self:?}");
+        let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+        });
+        format!("{hash:016x}")
+    }
+
     /// Distance from the front axle to the steering axis (m), from rake, trail and radius.
     pub fn fork_offset(&self) -> f64 {
         self.wheel_radius * self.rake.sin() - self.trail * self.rake.cos()

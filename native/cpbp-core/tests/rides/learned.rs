@@ -27,6 +27,7 @@ fn some_network() -> LoadedPolicy {
         output_mean: vec![0.0; OUTPUT_COUNT],
         output_std: vec![0.5; OUTPUT_COUNT],
         training: "a test's".into(),
+        bike: cpbp_core::bike::BikeParams::default().identity(),
     };
     LoadedPolicy::ready(PolicyNetwork::new(parts).expect("valid parts"))
 }

@@ -43,6 +43,9 @@ pub struct NetworkParts {
     pub output_std: Vec<f32>,
     /// How the model was made: the training run, data, seed (free text, shown to users).
     pub training: String,
+    /// The bike it was trained on (`BikeParams::identity`); models written before bikes
+    /// were recorded name none and were all trained on the reference bike.
+    pub bike: String,
 }
 
 /// Why a model file was refused.
@@ -195,6 +198,10 @@ impl PolicyNetwork {
             output_mean: tensor("output.mean")?,
             output_std: tensor("output.std")?,
             training: field("training").to_string(),
+            bike: match field("bike") {
+                "" => crate::bike::BikeParams::default().identity(),
+                bike => bike.to_string(),
+            },
         })
     }
 
@@ -230,6 +237,7 @@ impl PolicyNetwork {
             ("layers".into(), p.layers.len().to_string()),
             ("activation".into(), "tanh".into()),
             ("training".into(), p.training.clone()),
+            ("bike".into(), p.bike.clone()),
         ]);
         super::serialize_sorted(views, meta).expect("checked shapes serialise")
     }

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 
 use super::{ModelError, PolicyNetwork};
+use crate::bike::BikeParams;
 
 /// Where the model lives in the project (`res://` in the game; from the repository's
 /// root for the tools). `make train` writes it there.
@@ -71,6 +72,20 @@ impl LoadedPolicy {
     /// Why there is no network, if there is none.
     pub fn problem(&self) -> Option<&str> {
         self.0.as_ref().err().map(|why| &**why)
+    }
+
+    /// What to tell the player when the network was trained on another bike than `bike`
+    /// (it drives it all the same, as a controller tuned on one bike drives another).
+    pub fn other_bike(&self, bike: &BikeParams) -> Option<String> {
+        let network = self.network()?;
+        let trained_on = &network.parts().bike;
+        (*trained_on != bike.identity()).then(|| {
+            format!(
+                "the learned model was trained on another bike ({trained_on}, this one is {}): \
+                 it may ride it badly; `make train` trains one for this bike",
+                bike.identity()
+            )
+        })
     }
 }
 

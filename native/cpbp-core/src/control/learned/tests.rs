@@ -22,6 +22,7 @@ fn pass_through() -> NetworkParts {
         output_mean: vec![-1.0; OUTPUT_COUNT],
         output_std: vec![3.0; OUTPUT_COUNT],
         training: "by hand".into(),
+        bike: crate::bike::BikeParams::default().identity(),
     }
 }
 
@@ -40,6 +41,7 @@ fn two_layers() -> NetworkParts {
         output_mean: vec![0.0; OUTPUT_COUNT],
         output_std: vec![1.0; OUTPUT_COUNT],
         training: "test".into(),
+        bike: crate::bike::BikeParams::default().identity(),
     }
 }
 
@@ -263,4 +265,20 @@ fn the_committed_model_is_in_the_form_make_train_writes_it() {
         super::sort_header(bytes.clone()) == bytes,
         "header not sorted"
     );
+}
+
+#[test]
+fn a_model_says_which_bike_it_was_trained_on() {
+    let reference = crate::bike::BikeParams::default();
+    let policy = LoadedPolicy::parse(&PolicyNetwork::new(pass_through()).unwrap().to_bytes(), "m");
+    assert_eq!(policy.other_bike(&reference), None);
+    let other = crate::bike::BikeParams {
+        wheelbase: 1.2,
+        ..reference.clone()
+    };
+    let told = policy.other_bike(&other).expect("another bike is told");
+    assert!(told.contains(&reference.identity()) && told.contains(&other.identity()));
+    // A model written before bikes were recorded was trained on the reference bike.
+    let older = LoadedPolicy::parse(&with_metadata("bike", ""), "older");
+    assert_eq!(older.other_bike(&reference), None);
 }
