@@ -7,7 +7,7 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Placement, POSE_GAIN};
-use cpbp_core::control::{planner, BikeOptimizer, Goal, OptimizerConfig};
+use cpbp_core::control::{planner, Goal, PlanningConfig, PlanningSession};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
@@ -53,13 +53,13 @@ fn main() {
         sim.set_controls(controls);
         sim.step();
     }
-    let config = OptimizerConfig {
+    let config = PlanningConfig {
         trajectories: n,
         threads,
-        ..OptimizerConfig::default()
+        ..PlanningConfig::default()
     }
     .rolling_out_in(physics);
-    let mut optimizer = BikeOptimizer::new(&sim, &planner::COMBINED, config);
+    let mut optimizer = PlanningSession::new(&sim, &planner::COMBINED, config);
     let started = std::time::Instant::now();
     for _ in 0..plans {
         optimizer.controls(&sim, &Goal::riding(0.0, drive));

@@ -3,7 +3,7 @@
 
 use std::sync::{Arc, Mutex};
 
-use cpbp_core::control::cpbp::{Planner, PlannerConfig, Priors, RolloutSystem, WarmStart};
+use cpbp_core::control::cpbp::{CpbpConfig, CpbpPlanner, Priors, RolloutSystem, WarmStart};
 
 const DT: f64 = 0.1;
 const TARGET: f64 = 1.0;
@@ -37,19 +37,19 @@ impl RolloutSystem for PointMass {
     }
 }
 
-fn planner(seed: u64) -> Planner {
+fn planner(seed: u64) -> CpbpPlanner {
     planner_on_threads(seed, 0)
 }
 
-fn planner_on_threads(seed: u64, threads: usize) -> Planner {
+fn planner_on_threads(seed: u64, threads: usize) -> CpbpPlanner {
     let priors = Priors::uniform(1, 3.0, 1.0, 0.2, 4.0);
-    Planner::new(
-        PlannerConfig {
+    CpbpPlanner::new(
+        CpbpConfig {
             particles: 16,
             steps: 20,
             seed,
             threads,
-            ..PlannerConfig::default()
+            ..CpbpConfig::default()
         },
         priors,
     )
@@ -58,7 +58,7 @@ fn planner_on_threads(seed: u64, threads: usize) -> Planner {
 /// Runs `frames` frames: plan from the master, apply the first control to it. Returns the
 /// master, the applied controls, the blow-ups, and the positions after each frame.
 fn ride(
-    planner: &mut Planner,
+    planner: &mut CpbpPlanner,
     frames: usize,
     explodes_beyond: f64,
 ) -> (PointMass, Vec<f64>, usize) {
@@ -67,7 +67,7 @@ fn ride(
 }
 
 fn ride_tracking(
-    planner: &mut Planner,
+    planner: &mut CpbpPlanner,
     frames: usize,
     explodes_beyond: f64,
 ) -> (PointMass, Vec<f64>, usize, Vec<f64>) {

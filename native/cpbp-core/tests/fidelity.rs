@@ -5,7 +5,7 @@ mod common;
 
 use common::{ask_lean, ride_at, FRAMES_PER_SECOND};
 use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
-use cpbp_core::control::OptimizerConfig;
+use cpbp_core::control::PlanningConfig;
 use cpbp_core::ode::Solver;
 use cpbp_core::physics::RolloutStepping;
 use cpbp_core::ride::{ControllerKind, Ride};
@@ -39,7 +39,7 @@ fn the_optimizers_rollouts_predict_the_master_far_better_than_two_substeps_do() 
     // Two QuickStep substeps per control step predicted a less stable bike and the
     // planners fell at 10 km/h with them: the default rollouts must do much better.
     let (ride, recording) = recorded_ride();
-    let config = OptimizerConfig::default();
+    let config = PlanningConfig::default();
     let chosen = RolloutPhysics {
         solver: config.rollout_solver,
         stepping: config.rollout_stepping,

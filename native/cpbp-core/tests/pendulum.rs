@@ -4,17 +4,17 @@
 mod common;
 
 use common::pendulum::{Pendulum, DT};
-use cpbp_core::control::cpbp::{Planner, PlannerConfig, Priors, RolloutSystem, WarmStart};
+use cpbp_core::control::cpbp::{CpbpConfig, CpbpPlanner, Priors, RolloutSystem, WarmStart};
 
-fn planner() -> Planner {
+fn planner() -> CpbpPlanner {
     let priors = Priors::uniform(1, 2.0, 1.0, 0.2, 4.0);
-    let config = PlannerConfig {
+    let config = CpbpConfig {
         particles: 16,
         steps: 24,
         seed: 1,
-        ..PlannerConfig::default()
+        ..CpbpConfig::default()
     };
-    Planner::new(config, priors)
+    CpbpPlanner::new(config, priors)
 }
 
 #[test]

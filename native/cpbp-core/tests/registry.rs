@@ -10,8 +10,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use cpbp_core::bike::{Controls, CONTROL_DIM};
 use cpbp_core::control::{
-    BikePlanner, BikeRollout, Diagnostics, Follows, OptimizerConfig, PlanPhases, PlanResult,
-    PlanWait, PlannerSpec, Trajectory,
+    BikePlanner, BikeRollout, Diagnostics, Follows, PlanPhases, PlanResult, PlanWait, PlannerSpec,
+    PlanningConfig, Trajectory,
 };
 use cpbp_core::ode::WorldState;
 use cpbp_core::ride::{
@@ -122,7 +122,7 @@ impl BikePlanner for StillBar {
 
 static STILL_BAR_PLANNER: PlannerSpec = PlannerSpec {
     parameters: &[STILL_BAR_COST],
-    build: |config: &OptimizerConfig, steps| {
+    build: |config: &PlanningConfig, steps| {
         let cost = config.parameters.number(&STILL_BAR_COST);
         Box::new(StillBar { steps, cost })
     },

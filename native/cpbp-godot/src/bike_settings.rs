@@ -5,7 +5,7 @@
 
 use std::time::Duration;
 
-use cpbp_core::control::{CostTolerances, OptimizerConfig, PlanWait};
+use cpbp_core::control::{CostTolerances, PlanWait, PlanningConfig};
 use cpbp_core::physics::{PhysicsModel, RolloutStepping};
 use cpbp_core::ride::PlannerSettings;
 use cpbp_core::settings::*;
@@ -51,7 +51,7 @@ impl BikeSimulation {
         let physics = self
             .sim()
             .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
-        let mut optimizer = OptimizerConfig {
+        let mut optimizer = PlanningConfig {
             trajectories: values.count(&TRAJECTORIES),
             horizon: values.number(&HORIZON_S),
             tolerances: CostTolerances {
@@ -62,7 +62,7 @@ impl BikeSimulation {
             seed: values.integer(&PLANNER_SEED) as u64,
             parameters: values.clone(),
             policy: crate::policy_model::policy_at(&self.policy_model),
-            ..OptimizerConfig::default()
+            ..PlanningConfig::default()
         }
         .rolling_out_in(physics);
         let rollout_substeps = values.count(&ROLLOUT_SUBSTEPS);

@@ -12,7 +12,7 @@ use cpbp_core::control::learned::{
     features, output_entries, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT,
 };
 use cpbp_core::control::planner::COMBINED;
-use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig, TurnIntent};
+use cpbp_core::control::{Goal, PlanningConfig, PlanningSession, TurnIntent};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece};
@@ -185,13 +185,13 @@ pub fn ride(
     learner: Option<&PolicyNetwork>,
 ) -> Records {
     let mut sim = episode.simulation();
-    let config = OptimizerConfig {
+    let config = PlanningConfig {
         trajectories: settings.trajectories,
         seed: episode.seed,
         threads: 1,
-        ..OptimizerConfig::default().rolling_out_in(PhysicsModel::Exact)
+        ..PlanningConfig::default().rolling_out_in(PhysicsModel::Exact)
     };
-    let mut expert = BikeOptimizer::new(&sim, &COMBINED, config);
+    let mut expert = PlanningSession::new(&sim, &COMBINED, config);
     let mut noise = stream(episode.seed, Stream::Noise);
     let (turn, entries) = (TurnIntent::default(), output_entries());
     let mut records = Records {

@@ -1,6 +1,5 @@
 //! Controllers that turn the player's intent into joint motor targets.
 
-mod anytime;
 mod arcade;
 mod bike_rollout;
 pub mod cpbp;
@@ -8,19 +7,20 @@ pub mod fidelity;
 mod goal;
 mod lean;
 pub mod learned;
-mod optimizer;
 mod plan_result;
 pub mod planner;
 pub mod planner_parameters;
+mod planning_session;
+mod planning_thread;
 pub mod sampling;
 
-pub use anytime::{AnytimeOptimizer, HandoverStats, Plan, PlanWait};
 pub use arcade::{eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
 pub use bike_rollout::{bike_priors, BikeRollout, CostTolerances, RolloutPolicy};
 pub use goal::Goal;
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };
-pub use optimizer::{BikeOptimizer, OptimizerConfig};
 pub use plan_result::{Diagnostics, PlanPhases, PlanResult, Trajectory};
 pub use planner::{BikePlanner, Follows, PlannerSpec};
+pub use planning_session::{PlanningConfig, PlanningSession};
+pub use planning_thread::{HandoverStats, Plan, PlanWait, PlanningThread};

@@ -6,10 +6,10 @@
 //! its spec and one line in the registry.
 
 use super::bike_rollout::{bike_priors, BikeRollout};
-use super::cpbp::{Planner, PlannerConfig, Priors, WarmStart};
-use super::optimizer::OptimizerConfig;
+use super::cpbp::{CpbpConfig, CpbpPlanner, Priors, WarmStart};
 use super::plan_result::{PlanPhases, PlanResult};
 use super::planner_parameters::*;
+use super::planning_session::PlanningConfig;
 use super::sampling::{SamplingConfig, SamplingPlanner, SamplingUpdate};
 use crate::bike::{index, CONTROL_DIM};
 use crate::ode::WorldState;
@@ -42,7 +42,7 @@ pub struct PlannerSpec {
     /// values from `config.parameters`.
     pub parameters: &'static [Setting],
     /// A new planner with `config`'s settings, planning `steps` control steps ahead.
-    pub build: fn(config: &OptimizerConfig, steps: usize) -> Box<dyn BikePlanner>,
+    pub build: fn(config: &PlanningConfig, steps: usize) -> Box<dyn BikePlanner>,
     /// The controller trajectory 1 rides with, live (combined and guided modes).
     pub follows: Follows,
 }
@@ -112,13 +112,13 @@ enum WarmRoute {
 
 /// C-PBP with the warm start its mode takes.
 struct Cpbp {
-    planner: Planner,
+    planner: CpbpPlanner,
     warm: WarmRoute,
 }
 
 impl Cpbp {
-    fn new(config: &OptimizerConfig, steps: usize, warm: WarmRoute) -> Self {
-        let planner_config = PlannerConfig {
+    fn new(config: &PlanningConfig, steps: usize, warm: WarmRoute) -> Self {
+        let planner_config = CpbpConfig {
             particles: config.trajectories.max(1),
             steps,
             seed: config.seed,
@@ -127,10 +127,10 @@ impl Cpbp {
             // mode would cost without being used.
             refine: warm == WarmRoute::Refinement,
             control_cost_weight: config.control_cost_weight,
-            ..PlannerConfig::default()
+            ..CpbpConfig::default()
         };
         Self {
-            planner: Planner::new(planner_config, priors(config)),
+            planner: CpbpPlanner::new(planner_config, priors(config)),
             warm,
         }
     }
@@ -163,7 +163,7 @@ impl BikePlanner for Cpbp {
 }
 
 /// Predictive sampling or MPPI as their parameters say.
-fn sampling(config: &OptimizerConfig, steps: usize, update: SamplingUpdate) -> SamplingPlanner {
+fn sampling(config: &PlanningConfig, steps: usize, update: SamplingUpdate) -> SamplingPlanner {
     let values = &config.parameters;
     let sampled = values
         .flag(&BASELINE_STEERING_ONLY)
@@ -205,7 +205,7 @@ impl BikePlanner for SamplingPlanner {
     }
 }
 
-fn priors(config: &OptimizerConfig) -> Priors {
+fn priors(config: &PlanningConfig) -> Priors {
     bike_priors(config.parameters.number(&MUTATION_SCALE))
 }
 

@@ -6,7 +6,7 @@
 use std::time::Duration;
 
 use crate::bike::{Controls, DriveInput, RiderPosition};
-use crate::control::{Goal, HandoverStats, OptimizerConfig, Plan, PlanWait};
+use crate::control::{Goal, HandoverStats, Plan, PlanWait, PlanningConfig};
 use crate::settings;
 use crate::simulation::Simulation;
 
@@ -92,7 +92,7 @@ pub trait Controller: Send {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlannerSettings {
     /// `optimizer.trajectories` is N, or where the automatic choice starts from.
-    pub optimizer: OptimizerConfig,
+    pub optimizer: PlanningConfig,
     pub wait: PlanWait,
     /// Move N while riding to what this machine plans in time (`AutoTrajectories`).
     /// Only where the ride waits at most a while for a plan: a ride that waits for every
@@ -116,7 +116,7 @@ impl Default for PlannerSettings {
     /// The game's: the optimizer's defaults, waiting at most `GAME_PLAN_WAIT` at a step.
     fn default() -> Self {
         Self {
-            optimizer: OptimizerConfig::default(),
+            optimizer: PlanningConfig::default(),
             wait: PlanWait::AtMost(GAME_PLAN_WAIT),
             auto_trajectories: settings::AUTO_TRAJECTORIES.default_number() != 0.0,
         }

@@ -5,9 +5,7 @@ use super::auto_trajectories::AutoTrajectories;
 use super::controller::{Controller, Intent, PlannerSettings, RideState};
 use crate::bike::{manual_controls, Controls};
 use crate::control::learned::{LeanTrim, LoadedPolicy, NonFiniteFeature, FEATURE_NAMES};
-use crate::control::{
-    AnytimeOptimizer, ArcadeController, Follows, HandoverStats, Plan, PlannerSpec,
-};
+use crate::control::{ArcadeController, Follows, HandoverStats, Plan, PlannerSpec, PlanningThread};
 use crate::simulation::Simulation;
 
 /// The arcade controller (thesis §4.3.2) on the master.
@@ -130,7 +128,7 @@ impl Controller for ManualDriver {
 
 /// A planner on its own thread, handed over at control steps.
 pub struct PlannerDriver {
-    anytime: AnytimeOptimizer,
+    anytime: PlanningThread,
     /// The automatic N, while the settings ask for it; it outlives resets (the machine
     /// did not change) but starts afresh when N's setting or the choice does.
     auto: Option<(usize, AutoTrajectories)>,
@@ -148,7 +146,7 @@ pub struct PlannerDriver {
 impl PlannerDriver {
     pub fn new(sim: &Simulation, spec: &'static PlannerSpec, planner: &PlannerSettings) -> Self {
         Self {
-            anytime: AnytimeOptimizer::new(sim, spec, planner.wait),
+            anytime: PlanningThread::new(sim, spec, planner.wait),
             auto: None,
             timed_plan: None,
             trajectories: planner.optimizer.trajectories,

@@ -1,5 +1,5 @@
 //! The entries themselves. Each constant is one setting; `ENTRIES` lists them in the order
-//! menus and the inspector show them. The core's own defaults (`OptimizerConfig`,
+//! menus and the inspector show them. The core's own defaults (`PlanningConfig`,
 //! `SimulationConfig`, the ride's clamps) read their constant here.
 
 use super::{DefaultValue as D, Owner, Range, Setting};

@@ -5,7 +5,7 @@ use crate::common;
 
 use std::time::Duration;
 
-use cpbp_core::control::{planner, AnytimeOptimizer, Goal, OptimizerConfig, PlanWait};
+use cpbp_core::control::{planner, Goal, PlanWait, PlanningConfig, PlanningThread};
 use cpbp_core::ride::ControllerKind;
 
 #[test]
@@ -60,14 +60,14 @@ fn a_planner_that_cannot_keep_up_never_stalls_the_game_or_drops_the_bike() {
 fn plans_made_before_a_reset_are_never_applied_after_it() {
     // The hand-over itself, below the ride: a reset drops plans already in flight.
     let mut sim = common::flat_ride();
-    let config = OptimizerConfig {
+    let config = PlanningConfig {
         trajectories: 5,
-        ..OptimizerConfig::default()
+        ..PlanningConfig::default()
     };
-    let mut anytime = AnytimeOptimizer::new(&sim, &planner::COMBINED, PlanWait::EveryPlan);
+    let mut anytime = PlanningThread::new(&sim, &planner::COMBINED, PlanWait::EveryPlan);
     let drive = common::auto_throttle(15.0);
     let ride =
-        |sim: &mut cpbp_core::simulation::Simulation, anytime: &mut AnytimeOptimizer, steps| {
+        |sim: &mut cpbp_core::simulation::Simulation, anytime: &mut PlanningThread, steps| {
             for _ in 0..steps {
                 let controls = anytime.controls(sim, &Goal::riding(0.0, drive), &config);
                 sim.set_controls(controls);

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use cpbp_core::bike::{Controls, DriveInput};
-use cpbp_core::control::{BikeOptimizer, Goal, OptimizerConfig};
+use cpbp_core::control::{Goal, PlanningConfig, PlanningSession};
 use cpbp_core::ode::World;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::ControllerKind;
@@ -147,14 +147,14 @@ pub fn planning_ms(
 ) -> (f64, Vec<Vec<Controls>>) {
     let model = sim.config().physics;
     let spec = kind.planner().expect("a planning controller");
-    let config = OptimizerConfig {
+    let config = PlanningConfig {
         trajectories: n,
         threads,
         policy: cpbp_core::control::learned::project_policy(),
-        ..OptimizerConfig::default()
+        ..PlanningConfig::default()
     }
     .rolling_out_in(model);
-    let mut optimizer = BikeOptimizer::new(sim, spec, config);
+    let mut optimizer = PlanningSession::new(sim, spec, config);
     let drive = DriveInput {
         throttle: 0.6,
         brake: 0.0,

@@ -4,7 +4,7 @@ use crate::control::{Diagnostics, PlanResult};
 
 /// Sizes and tuning of the planner; defaults are the specification's.
 #[derive(Clone, Debug, PartialEq)]
-pub struct PlannerConfig {
+pub struct CpbpConfig {
     /// N, the number of trajectories.
     pub particles: usize,
     /// K, the planning steps (horizon / step length).
@@ -35,7 +35,7 @@ pub struct PlannerConfig {
 /// and inputs give the same ride.
 pub const DEFAULT_SEED: u64 = 2015;
 
-impl Default for PlannerConfig {
+impl Default for CpbpConfig {
     fn default() -> Self {
         Self {
             particles: 32,

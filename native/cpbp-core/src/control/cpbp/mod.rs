@@ -15,10 +15,10 @@ mod refinement;
 mod rollout;
 mod sequences;
 
-pub use config::{FrameResult, PlannerConfig, WarmStart, DEFAULT_SEED};
+pub use config::{CpbpConfig, FrameResult, WarmStart, DEFAULT_SEED};
 pub(crate) use frame::mix;
 pub(crate) use planner::rollout_pool;
-pub use planner::Planner;
+pub use planner::CpbpPlanner;
 pub use priors::{AppliedControls, Priors};
 pub use rollout::RolloutSystem;
 pub use sequences::shift_one_step;

@@ -8,7 +8,7 @@ use rand_pcg::Pcg64;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use super::config::{FrameResult, PlannerConfig, WarmStart};
+use super::config::{CpbpConfig, FrameResult, WarmStart};
 use super::frame::{draw, lineages, mix, smoothed_beliefs};
 use super::frame::{Particles, StepRecord};
 use super::priors::{AppliedControls, Priors};
@@ -48,8 +48,8 @@ impl Guide {
 }
 
 /// The planner with its memory of the last frame.
-pub struct Planner {
-    pub config: PlannerConfig,
+pub struct CpbpPlanner {
+    pub config: CpbpConfig,
     pub priors: Priors,
     pool: Arc<rayon::ThreadPool>,
     memory: Option<Memory>,
@@ -59,8 +59,8 @@ pub struct Planner {
     pub phases: PlanPhases,
 }
 
-impl Planner {
-    pub fn new(config: PlannerConfig, priors: Priors) -> Self {
+impl CpbpPlanner {
+    pub fn new(config: CpbpConfig, priors: Priors) -> Self {
         Self {
             applied: AppliedControls::at_rest(&priors.mean),
             pool: Arc::new(rollout_pool(config.threads, "cpbp")),

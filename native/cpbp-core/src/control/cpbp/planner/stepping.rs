@@ -9,9 +9,9 @@ use rayon::prelude::*;
 
 use super::super::frame::{Outcome, Particles};
 use super::super::rollout::RolloutSystem;
-use super::{Guide, Planner};
+use super::{CpbpPlanner, Guide};
 
-impl Planner {
+impl CpbpPlanner {
     /// Every particle restores its parent's state, chooses a control, steps and saves,
     /// independently of the others: run them across the worker threads.
     pub(super) fn step_all<S: RolloutSystem>(

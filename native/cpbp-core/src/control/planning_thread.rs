@@ -15,9 +15,9 @@ use std::time::{Duration, Instant};
 use glam::DVec3;
 
 use super::arcade::ArcadeController;
-use super::optimizer::{BikeOptimizer, OptimizerConfig};
 use super::plan_result::{Diagnostics, PlanPhases};
 use super::planner::PlannerSpec;
+use super::planning_session::{PlanningConfig, PlanningSession};
 use super::Goal;
 use crate::bike::Controls;
 use crate::ode::WorldState;
@@ -38,7 +38,7 @@ struct Request {
     start: WorldState,
     applied: Controls,
     goal: Goal,
-    config: OptimizerConfig,
+    config: PlanningConfig,
     reset: bool,
 }
 
@@ -100,7 +100,7 @@ pub enum PlanWait {
 }
 
 /// The planning thread and the game thread's side of the hand-over.
-pub struct AnytimeOptimizer {
+pub struct PlanningThread {
     requests: Option<Sender<Message>>,
     replies: Receiver<Plan>,
     worker: Option<JoinHandle<()>>,
@@ -121,7 +121,7 @@ pub struct AnytimeOptimizer {
     failure: Option<String>,
 }
 
-impl AnytimeOptimizer {
+impl PlanningThread {
     /// Starts a planning thread with its own replica of `sim`, planning with the planner
     /// `spec` builds.
     pub fn new(sim: &Simulation, spec: &'static PlannerSpec, wait: PlanWait) -> Self {
@@ -177,12 +177,7 @@ impl AnytimeOptimizer {
     }
 
     /// The controls for the master's next step; call once per control step, then step.
-    pub fn controls(
-        &mut self,
-        sim: &Simulation,
-        goal: &Goal,
-        config: &OptimizerConfig,
-    ) -> Controls {
+    pub fn controls(&mut self, sim: &Simulation, goal: &Goal, config: &PlanningConfig) -> Controls {
         self.take_plan();
         // Run every step, used or not, so its memory is in step with the master whenever
         // a plan is missing.
@@ -272,7 +267,7 @@ impl AnytimeOptimizer {
     }
 }
 
-impl Drop for AnytimeOptimizer {
+impl Drop for PlanningThread {
     fn drop(&mut self) {
         // Closing the channel ends the thread's loop after the plan in hand.
         self.requests = None;
@@ -289,7 +284,7 @@ fn plan_requests(
     requests: Receiver<Message>,
     replies: Sender<Plan>,
 ) {
-    let mut optimizer: Option<BikeOptimizer> = None;
+    let mut optimizer: Option<PlanningSession> = None;
     for message in requests {
         let request = match message {
             Message::Plan(request) => request,
@@ -310,7 +305,7 @@ fn plan_requests(
                 o.set_trajectories(&replica, request.config.trajectories);
                 o
             }
-            slot => slot.insert(BikeOptimizer::new(&replica, spec, request.config.clone())),
+            slot => slot.insert(PlanningSession::new(&replica, spec, request.config.clone())),
         };
         if request.reset {
             optimizer.reset();

@@ -16,7 +16,7 @@ use crate::settings::{self, SettingValues};
 use crate::simulation::Simulation;
 
 #[derive(Clone, Debug, PartialEq)]
-pub struct OptimizerConfig {
+pub struct PlanningConfig {
     /// Trajectories (N).
     pub trajectories: usize,
     /// Planning horizon (s); the thesis used 1.2 s.
@@ -47,7 +47,7 @@ pub struct OptimizerConfig {
     pub policy: LoadedPolicy,
 }
 
-impl Default for OptimizerConfig {
+impl Default for PlanningConfig {
     fn default() -> Self {
         Self {
             trajectories: settings::TRAJECTORIES.default_number() as usize,
@@ -64,7 +64,7 @@ impl Default for OptimizerConfig {
     }
 }
 
-impl OptimizerConfig {
+impl PlanningConfig {
     /// This configuration rolling out as `physics` prescribes (solver and stepping).
     pub fn rolling_out_in(self, physics: PhysicsModel) -> Self {
         Self {
@@ -85,8 +85,8 @@ impl OptimizerConfig {
 }
 
 /// The planner, its rollout worlds, and the arcade controller it can lean on.
-pub struct BikeOptimizer {
-    pub config: OptimizerConfig,
+pub struct PlanningSession {
+    pub config: PlanningConfig,
     spec: &'static PlannerSpec,
     planner: Box<dyn BikePlanner>,
     rollouts: Vec<BikeRollout>,
@@ -94,9 +94,9 @@ pub struct BikeOptimizer {
     last: Option<PlanResult>,
 }
 
-impl BikeOptimizer {
+impl PlanningSession {
     /// The planner `spec` builds, with N rollout worlds like the master of `sim`.
-    pub fn new(sim: &Simulation, spec: &'static PlannerSpec, config: OptimizerConfig) -> Self {
+    pub fn new(sim: &Simulation, spec: &'static PlannerSpec, config: PlanningConfig) -> Self {
         let dt = sim.config().control_dt;
         let steps = (config.horizon / dt).round().max(1.0) as usize;
         let mut optimizer = Self {
