@@ -22,8 +22,8 @@ play: build ## Launch the game window
 test: build ## Run every check: Rust fmt/clippy/tests, gdlint, GDScript suites, screenshots, export
 	@tools/test.sh
 
-bench: build ## Print the performance figures, planning and frame time (see docs/benchmarks.md)
-	@tools/cargo run --release --quiet -p cpbp-core --bin cpbp-bench
+bench: build ## Print the performance figures, planning and frame time (see docs/benchmarks.md); BIKE=FILE for another bike
+	@tools/cargo run --release --quiet -p cpbp-core --bin cpbp-bench -- $(if $(BIKE),--bike $(abspath $(BIKE)))
 	@tools/frame-time.sh
 
 experiment: build ## The thesis's evaluation on the game's physics, headless (docs/experiment.md; ARGS="--out docs/experiment")

@@ -24,6 +24,20 @@ pub fn read_bike_file(path: &Path) -> Result<BikeFile, String> {
     parse_bike_file(&text).map_err(|why| format!("the bike {}: {why}", path.display()))
 }
 
+/// Takes `--bike FILE` out of a tool's `arguments` and reads that bike (None without
+/// the flag: the tool rides the reference bike).
+pub fn take_bike_argument(arguments: &mut Vec<String>) -> Result<Option<BikeFile>, String> {
+    let Some(at) = arguments.iter().position(|a| a == "--bike") else {
+        return Ok(None);
+    };
+    if at + 1 >= arguments.len() {
+        return Err("--bike needs a bike file (scenes/bike/bikes/*.tres)".into());
+    }
+    let path = arguments.remove(at + 1);
+    arguments.remove(at);
+    read_bike_file(Path::new(&path)).map(Some)
+}
+
 /// A bike file's text as a bike.
 pub fn parse_bike_file(text: &str) -> Result<BikeFile, String> {
     if !text
@@ -82,6 +96,25 @@ mod tests {
         let bike = parse_bike_file(REFERENCE).unwrap();
         assert_eq!(bike.name, "Street 350");
         assert_eq!(bike.params, BikeParams::default());
+    }
+
+    #[test]
+    fn a_tools_bike_argument_is_taken_out_of_its_arguments() {
+        let fixture = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../tests/fixtures/bikes/pit_bike.tres"
+        );
+        let mut arguments: Vec<String> = ["planning", "--bike", fixture, "5"]
+            .map(String::from)
+            .into();
+        let bike = take_bike_argument(&mut arguments).unwrap().unwrap();
+        assert_eq!(bike.params.wheelbase, 1.12);
+        assert_eq!(arguments, ["planning", "5"]);
+        assert_eq!(take_bike_argument(&mut arguments), Ok(None));
+        let mut bare = vec!["--bike".to_string()];
+        assert!(take_bike_argument(&mut bare)
+            .unwrap_err()
+            .contains("needs a bike file"));
     }
 
     #[test]

@@ -18,7 +18,7 @@ mod rider_position;
 mod suspension;
 mod wheelie_control;
 
-pub use bike_file::{parse_bike_file, read_bike_file, BikeFile};
+pub use bike_file::{parse_bike_file, read_bike_file, take_bike_argument, BikeFile};
 pub use controls::{
     index, Controls, ForceClass, CONTROL_DIM, DRIVE_ENTRIES, FORCE_TUNINGS, JOINT_TARGETS, LOWER,
     MAX_TORQUE, UPPER,

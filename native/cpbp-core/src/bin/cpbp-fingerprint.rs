@@ -5,9 +5,10 @@
 //! state (guided with the project's model, `models/policy.safetensors`, as it is). Run it
 //! before and after a change; the lines must be identical. Hashes are of
 //! the exact bits, so they hold on one platform (compare like with like: the experiment's
-//! platform fingerprint says which).
+//! platform fingerprint says which). `cpbp-fingerprint [N] [--bike FILE]`: N trajectories
+//! (10), another bike than the reference (a bike file, scenes/bike/bikes/*.tres).
 
-use cpbp_core::bike::Placement;
+use cpbp_core::bike::{take_bike_argument, BikeParams, Placement};
 use cpbp_core::control::learned::project_policy;
 use cpbp_core::control::{Plan, PlanWait};
 use cpbp_core::physics::PhysicsModel;
@@ -22,13 +23,26 @@ const STEPS: u64 = 90;
 const LEAN_FROM: u64 = 30;
 
 fn main() {
-    let particles = std::env::args()
-        .nth(1)
+    let mut arguments: Vec<String> = std::env::args().skip(1).collect();
+    let bike = match take_bike_argument(&mut arguments) {
+        Ok(bike) => bike,
+        Err(why) => {
+            eprintln!("cpbp-fingerprint: {why}");
+            std::process::exit(2);
+        }
+    };
+    let particles = arguments
+        .first()
         .map_or(10, |n| n.parse().expect("a trajectory count N"));
     println!("plans of a 3 s ride, N = {particles}, 2 threads (FNV-1a 64 of their exact bits)");
+    if let Some(bike) = &bike {
+        // Only another bike is named, so the reference's output stays as it always was.
+        println!("bike: {} ({})", bike.name, bike.params.identity());
+    }
+    let bike = bike.map_or_else(BikeParams::default, |b| b.params);
     for physics in PhysicsModel::ALL {
         for kind in ControllerKind::ALL.iter().copied().filter(|k| k.plans()) {
-            let (plans, hash) = fingerprint(physics, kind, particles);
+            let (plans, hash) = fingerprint(physics, kind, particles, &bike);
             println!(
                 "{:<8} {:<10} {plans:>3} plans {hash:016x}",
                 physics.name(),
@@ -40,9 +54,15 @@ fn main() {
 
 /// Rides `kind` at 10 km/h, asking for 10° of right lean after 1 s; returns the number of
 /// plans and the hash over them and the final state.
-fn fingerprint(physics: PhysicsModel, kind: ControllerKind, particles: usize) -> (usize, u64) {
+fn fingerprint(
+    physics: PhysicsModel,
+    kind: ControllerKind,
+    particles: usize,
+    bike: &BikeParams,
+) -> (usize, u64) {
     let config = SimulationConfig {
         physics,
+        bike: bike.clone(),
         ..SimulationConfig::default()
     };
     let spawn = Placement {

@@ -2,6 +2,7 @@
 //! Timings are medians of several runs so one noisy run does not move them.
 //! `cpbp-bench planning` prints only the game physics' planning table, for comparing two
 //! builds run alternately; `cpbp-bench learned` only the learned controller's cost.
+//! `--bike FILE` (`make bench BIKE=FILE`) measures another bike than the reference.
 
 mod fidelity;
 mod learned;
@@ -9,10 +10,10 @@ mod planning;
 
 use planning::{planning_ms, planning_table};
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 use std::time::{Duration, Instant};
 
-use cpbp_core::bike::{Controls, DriveInput, Placement};
+use cpbp_core::bike::{take_bike_argument, BikeParams, Controls, DriveInput, Placement};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::physics::PhysicsModel;
@@ -24,6 +25,9 @@ use glam::{DQuat, DVec3};
 const RUNS: usize = 7;
 const ODE_DT: f64 = 1.0 / 120.0;
 
+/// The bike every figure rides (`--bike FILE`; the reference bike without it).
+static BIKE: OnceLock<BikeParams> = OnceLock::new();
+
 fn main() {
     let info = cpbp_core::build_info();
     println!(
@@ -32,9 +36,21 @@ fn main() {
         threads()
     );
     println!("ODE: {}", info.ode.raw);
+    let mut arguments: Vec<String> = std::env::args().skip(1).collect();
+    match take_bike_argument(&mut arguments) {
+        Ok(Some(bike)) => {
+            println!("bike: {} ({})", bike.name, bike.params.identity());
+            BIKE.get_or_init(|| bike.params);
+        }
+        Ok(None) => {}
+        Err(why) => {
+            eprintln!("cpbp-bench: {why}");
+            std::process::exit(2);
+        }
+    }
     println!();
     let row = |name: &str, value: String| println!("{name:<58} {value:>14}");
-    match std::env::args().nth(1).as_deref() {
+    match arguments.first().map(String::as_str) {
         Some("planning") => return planning_table(PhysicsModel::default(), None),
         Some("learned") => {
             let sim = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
@@ -224,6 +240,7 @@ fn rolling_bike(terrain: Arc<Terrain>, physics: PhysicsModel) -> Simulation {
     };
     let config = SimulationConfig {
         physics,
+        bike: BIKE.get().cloned().unwrap_or_default(),
         ..SimulationConfig::default()
     };
     let mut sim = Simulation::new(config, terrain, spawn);
