@@ -7,7 +7,9 @@
 use cpbp_core::bike::{BikeParams, FIELDS};
 use godot::classes::{IResource, Resource};
 use godot::prelude::*;
-use godot::register::info::{PropertyHint, PropertyHintInfo, PropertyInfo, PropertyUsageFlags};
+use godot::register::info::{PropertyInfo, PropertyUsageFlags};
+
+use crate::node_settings::range_hint;
 
 /// The reference bike's paint.
 const STREET_ORANGE: Color = Color::from_rgb(0.92, 0.35, 0.08);
@@ -68,23 +70,12 @@ impl IResource for BikeDescription {
     fn on_get_property_list(&mut self) -> Vec<PropertyInfo> {
         FIELDS
             .iter()
-            .map(|f| {
-                let suffix = if f.unit.is_empty() {
-                    String::new()
-                } else {
-                    format!(",suffix:{}", f.unit)
-                };
-                let hint = format!("{},{},{}{suffix}", f.range.min, f.range.max, f.range.step);
-                PropertyInfo {
-                    variant_type: VariantType::FLOAT,
-                    class_name: StringName::default(),
-                    property_name: f.name.into(),
-                    hint_info: PropertyHintInfo {
-                        hint: PropertyHint::RANGE,
-                        hint_string: GString::from(hint.as_str()),
-                    },
-                    usage: PropertyUsageFlags::DEFAULT,
-                }
+            .map(|f| PropertyInfo {
+                variant_type: VariantType::FLOAT,
+                class_name: StringName::default(),
+                property_name: f.name.into(),
+                hint_info: range_hint(f.range, f.unit),
+                usage: PropertyUsageFlags::DEFAULT,
             })
             .collect()
     }

@@ -3,7 +3,7 @@
 //! unit, default to revert to), so the inspector, scenes and scripts reach each of them
 //! with no field written out for it. The schema itself goes to GDScript as dictionaries.
 
-use cpbp_core::settings::{self, DefaultValue, Setting, SettingValues, Value};
+use cpbp_core::settings::{self, DefaultValue, Range, Setting, SettingValues, Value};
 use godot::prelude::*;
 use godot::register::info::{PropertyHint, PropertyHintInfo, PropertyInfo, PropertyUsageFlags};
 
@@ -43,19 +43,17 @@ fn variant_type(setting: &Setting) -> VariantType {
     }
 }
 
-fn range_hint(setting: &Setting) -> PropertyHintInfo {
-    let Some(range) = setting.range else {
-        return PropertyHintInfo::none();
-    };
-    let suffix = match setting.unit {
+/// The inspector's range hint of a number in `range`, with `unit` after it ("share", a
+/// 0–1 fraction, shows none). Settings and bike fields both use it.
+pub(crate) fn range_hint(range: Range, unit: &str) -> PropertyHintInfo {
+    let suffix = match unit {
         "" | "share" => String::new(),
         unit => format!(",suffix:{unit}"),
     };
+    let hint = format!("{},{},{}{suffix}", range.min, range.max, range.step);
     PropertyHintInfo {
         hint: PropertyHint::RANGE,
-        hint_string: GString::from(
-            format!("{},{},{}{suffix}", range.min, range.max, range.step).as_str(),
-        ),
+        hint_string: GString::from(hint.as_str()),
     }
 }
 
@@ -73,7 +71,9 @@ pub(crate) fn property_list(values: &SettingValues) -> Vec<PropertyInfo> {
             variant_type: variant_type(setting),
             class_name: StringName::default(),
             property_name: setting.name.into(),
-            hint_info: range_hint(setting),
+            hint_info: setting
+                .range
+                .map_or_else(PropertyHintInfo::none, |r| range_hint(r, setting.unit)),
             usage: PropertyUsageFlags::DEFAULT,
         });
     }
