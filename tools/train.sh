@@ -16,6 +16,10 @@
 # episodes from R*100000 + 50001 and carving from R*100000 + 70001, so no two episodes
 # of a run share a seed.
 # EPOCHS and SEED override the trainer's defaults (cpbp-learn train --help).
+# BIKE=FILE (a bike file) trains a network of that bike: its episodes, checkpoints and
+# report go to a folder and a model of the bike's own (models/policy-<name>.safetensors,
+# docs/learned/<name>, <name> the bike file's), and the game's evaluation, which rides
+# the reference bike, is left out.
 # Every step resumes: episodes already saved are not ridden again, a finished round's
 # model is kept, and the experiment and scenario runs resume. Data and checkpoints live
 # in the cache (LEARN_DATA), never in git; `make clean` leaves them, `make clean-learn`
@@ -34,6 +38,14 @@ EVALUATE="${EVALUATE:-1}"
 LEARN_DATA="${LEARN_DATA:-$CACHE_ROOT/learn}"
 MODEL=models/policy.safetensors
 REPORT=docs/learned
+bike=()
+if [ -n "${BIKE:-}" ]; then
+  [ -f "$BIKE" ] || die "BIKE=$BIKE: no such bike file"
+  name=$(basename "$BIKE" .tres)
+  bike=(--bike "$BIKE")
+  LEARN_DATA="$LEARN_DATA-$name" MODEL="models/policy-$name.safetensors" REPORT="$REPORT/$name"
+  EVALUATE=0
+fi
 learn=native/target/release/cpbp-learn
 
 started=$(date +%s)
@@ -53,11 +65,12 @@ train_round() {
 ride_round() {
   local base=$(($1 * 100000)) learner=()
   [ -n "${6:-}" ] && learner=(--learner "$6")
-  "$learn" generate --out "$2" --episodes "$((base + 1))-$((base + $3))" "${learner[@]}"
+  "$learn" generate --out "$2" --episodes "$((base + 1))-$((base + $3))" "${learner[@]}" \
+    "${bike[@]}"
   "$learn" generate --out "$2-logs" --family logs \
-    --episodes "$((base + 50001))-$((base + 50000 + $4))" "${learner[@]}"
+    --episodes "$((base + 50001))-$((base + 50000 + $4))" "${learner[@]}" "${bike[@]}"
   "$learn" generate --out "$2-carving" --family carving \
-    --episodes "$((base + 70001))-$((base + 70000 + $5))" "${learner[@]}"
+    --episodes "$((base + 70001))-$((base + 70000 + $5))" "${learner[@]}" "${bike[@]}"
 }
 
 ride_round 0 "$LEARN_DATA/expert" "$EPISODES" "$LOG_EPISODES" "$CARVING_EPISODES"

@@ -37,7 +37,7 @@ func test_the_same_seed_lays_the_same_bumps() -> void:
 	assert_ne(_bump_positions(bumps), first, "another seed, other bumps")
 	bumps.regenerate(7)
 	assert_eq(_bump_positions(bumps), first, "seed 7 again")
-	assert_eq(first.size(), bumps.count)
+	assert_eq(first.size(), bumps.field.count)
 
 
 func test_the_limit_leaves_time_to_reach_the_goal_at_walking_pace() -> void:

@@ -42,7 +42,7 @@ def _parser() -> argparse.ArgumentParser:
                     "(a turn, a long hard turn at speed (carve), a slalom, lean reversals, a push, walking "
                     "pace; hard stops, slopes and hill "
                     "starts: stop10, stop25, stop40, brake-turn, slope5, slope10, slope15, "
-                    "downhill15), paired by seed. Rows are "
+                    "downhill15; the test level's logs: logs), paired by seed. Rows are "
                     "appended to OUT/scenarios.csv as each ride ends; rerunning resumes.")
     parser.add_argument("command", nargs="?", choices=("all", "run", "report"), default="all")
     parser.add_argument("--out", default="docs/scenarios", help="directory of scenarios.csv "

@@ -24,6 +24,7 @@ METRICS = {
     "slope10": "stop on a 10° slope, stand, hill start: rolled back (m)",
     "slope15": "stop on a 15° slope, stand, hill start: rolled back (m)",
     "downhill15": "stop facing down a 15° slope, stand, ride off: crept on the brake (m)",
+    "logs": "RMS lean over the test level's logs at 15 km/h (°)",
 }
 ORDER = ("combined", "guided", "optimizer", "sampling", "mppi", "learned", "arcade")
 REFERENCE = "combined"

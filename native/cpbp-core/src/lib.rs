@@ -5,6 +5,7 @@ pub mod benchmark_bicycle;
 pub mod bike;
 mod build_info;
 pub mod control;
+pub mod grounds;
 pub mod physics;
 pub mod ride;
 pub mod settings;

@@ -11,6 +11,7 @@ mod bike_simulation;
 mod bike_synth;
 mod controller_choice;
 mod convert;
+mod log_field_description;
 mod native_info;
 mod node_settings;
 mod ode_world;

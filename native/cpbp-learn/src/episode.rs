@@ -7,7 +7,7 @@
 
 use std::sync::Arc;
 
-use cpbp_core::bike::{Controls, DriveInput, Placement, RiderPosition};
+use cpbp_core::bike::{BikeParams, Controls, DriveInput, Placement, RiderPosition};
 use cpbp_core::control::learned::{
     features, output_entries, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT,
 };
@@ -40,8 +40,8 @@ pub fn stream(seed: u64, which: Stream) -> Pcg64 {
     Pcg64::seed_from_u64(seed.wrapping_mul(4).wrapping_add(which as u64))
 }
 
-/// How the expert rides and how the episode is shaped.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// How the expert rides, on which bike, and how the episode is shaped.
+#[derive(Clone, Debug, PartialEq)]
 pub struct ExpertSettings {
     /// The planner's trajectories: large enough to be reliable, not real time.
     pub trajectories: usize,
@@ -52,6 +52,8 @@ pub struct ExpertSettings {
     pub noise: f64,
     /// What kind of episode each seed draws.
     pub family: Family,
+    /// The bike every episode rides (`--bike FILE`; the reference bike without it).
+    pub bike: BikeParams,
 }
 
 impl Default for ExpertSettings {
@@ -61,6 +63,7 @@ impl Default for ExpertSettings {
             seconds: 12.0,
             noise: 0.03,
             family: Family::Mixed,
+            bike: BikeParams::default(),
         }
     }
 }
@@ -73,7 +76,7 @@ pub enum Ground {
     Slope(f64),
     /// A height map of bumps up to this height (m).
     Bumps(f64),
-    /// Flat ground with this many logs across the way ahead (the test level's).
+    /// Flat ground with this many of the test level's log fields one after another ahead.
     Logs(usize),
 }
 
@@ -83,7 +86,7 @@ impl Ground {
             Self::Flat => "flat".into(),
             Self::Slope(angle) => format!("slope {:+.1}°", angle.to_degrees()),
             Self::Bumps(height) => format!("bumps {:.0} mm", height * 1000.0),
-            Self::Logs(count) => format!("{count} logs"),
+            Self::Logs(fields) => format!("{fields} log fields"),
         }
     }
 }
@@ -136,8 +139,8 @@ impl Episode {
         settings.family.draw(seed, steps)
     }
 
-    /// The simulation at the start: the bike at rest on the episode's ground.
-    pub fn simulation(&self) -> Simulation {
+    /// The simulation at the start: `bike` at rest on the episode's ground.
+    pub fn simulation(&self, bike: &BikeParams) -> Simulation {
         let heading = DQuat::from_rotation_y(self.heading);
         let (terrain, rotation) = match self.ground {
             Ground::Flat => (Terrain::flat(), heading),
@@ -147,7 +150,7 @@ impl Episode {
                 (Terrain::new(vec![plane]).expect("a plane"), rotation)
             }
             Ground::Bumps(height) => (bump_field(self.seed, height), heading),
-            Ground::Logs(count) => (log_field(self.seed, heading, count), heading),
+            Ground::Logs(fields) => (log_field(self.seed, heading, fields), heading),
         };
         let lift = match self.ground {
             Ground::Bumps(height) => height + 0.02,
@@ -159,6 +162,7 @@ impl Episode {
         };
         let config = SimulationConfig {
             physics: PhysicsModel::Exact,
+            bike: bike.clone(),
             ..SimulationConfig::default()
         };
         Simulation::new(config, Arc::new(terrain), spawn)
@@ -184,7 +188,7 @@ pub fn ride(
     settings: &ExpertSettings,
     learner: Option<&PolicyNetwork>,
 ) -> Records {
-    let mut sim = episode.simulation();
+    let mut sim = episode.simulation(&settings.bike);
     let config = PlanningConfig {
         trajectories: settings.trajectories,
         seed: episode.seed,

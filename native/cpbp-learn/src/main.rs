@@ -3,7 +3,9 @@
 //! and each is saved as one shard in DIR (`episode-SEED.safetensors`). Episodes already
 //! saved are skipped, so a stopped run continues where it was; progress and an ETA are
 //! printed as episodes end. With `--learner MODEL` the network drives and the planner
-//! labels the states it leads to (a DAgger round).
+//! labels the states it leads to (a DAgger round). With `--bike FILE` (a bike file, as
+//! the game reads it) the episodes ride that bike; `train` then records it in the model
+//! and refuses data of two bikes.
 //!
 //! `cpbp-learn summary --out DIR`: what the saved episodes hold (rows, the speeds they
 //! cover, each output's mean and spread), every shard checked against this build's
@@ -21,13 +23,15 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
+use cpbp_core::bike::take_bike_argument;
 use cpbp_core::control::learned::{
     output_entries, PolicyNetwork, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT,
 };
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
-[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves]\n       \
+[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves] \
+[--bike FILE]\n       \
 cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S] \
 [--hidden W,W…] [--weight-decay D]\n       \
 cpbp-learn summary --out DIR";
@@ -63,9 +67,14 @@ fn main() {
 }
 
 fn parse(arguments: &[String]) -> Result<Generate, String> {
+    let mut arguments = arguments.to_vec();
+    let mut settings = ExpertSettings::default();
+    if let Some(bike) = take_bike_argument(&mut arguments)? {
+        println!("riding {}", bike.name);
+        settings.bike = bike.params;
+    }
     let mut out = None;
     let mut seeds = None;
-    let mut settings = ExpertSettings::default();
     let mut jobs = std::thread::available_parallelism().map_or(1, |n| n.get());
     let mut learner = None;
     let mut it = arguments.iter();
@@ -257,9 +266,24 @@ fn train_command(arguments: &[String]) -> Result<(), String> {
     }
     let (mut fit, mut held_out) = (train::Dataset::default(), train::Dataset::default());
     let mut episodes = 0;
+    // One network is one bike's: the shards must all have ridden the same one.
+    let mut bike: Option<(String, PathBuf)> = None;
     for dir in &data {
         for path in shard::shard_paths(dir)? {
             let shard = shard::read(&path)?.without_the_fall(FALL_STEPS);
+            match &bike {
+                Some((first, from)) if *first != shard.bike => {
+                    return Err(format!(
+                        "{} rode another bike ({}) than {} ({first}): train one bike's \
+                         episodes at a time",
+                        path.display(),
+                        shard.bike,
+                        from.display()
+                    ));
+                }
+                Some(_) => {}
+                None => bike = Some((shard.bike.clone(), path.clone())),
+            }
             let seed = shard::seed_of(&path)
                 .ok_or_else(|| format!("{}: no seed in its name", path.display()))?;
             let set = if seed % 10 == 0 {
@@ -292,13 +316,21 @@ fn train_command(arguments: &[String]) -> Result<(), String> {
         settings.seed
     );
     let mut losses = String::from("epoch,train,held_out\n");
-    let network = train::train(&fit, &held_out, &settings, &description, |epoch, loss| {
-        println!(
-            "epoch {epoch:>3}: train {:.4} · held out {:.4}",
-            loss.train, loss.validation
-        );
-        losses += &format!("{epoch},{:.6},{:.6}\n", loss.train, loss.validation);
-    })?;
+    let bike = bike.map(|(identity, _)| identity).unwrap_or_default();
+    let network = train::train(
+        &fit,
+        &held_out,
+        &settings,
+        &description,
+        &bike,
+        |epoch, loss| {
+            println!(
+                "epoch {epoch:>3}: train {:.4} · held out {:.4}",
+                loss.train, loss.validation
+            );
+            losses += &format!("{epoch},{:.6},{:.6}\n", loss.train, loss.validation);
+        },
+    )?;
     if let Some(path) = losses_path {
         std::fs::write(&path, losses).map_err(|e| format!("{}: {e}", path.display()))?;
     }

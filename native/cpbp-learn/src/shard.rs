@@ -8,6 +8,7 @@ use std::collections::HashMap;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use cpbp_core::bike::BikeParams;
 use cpbp_core::control::learned::{
     f32_bytes, f32_values, output_names, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES,
     OUTPUT_COUNT,
@@ -61,6 +62,7 @@ pub fn write(
         ("family".into(), settings.family.name().to_string()),
         ("driver".into(), records.driver.clone()),
         ("crashed".into(), records.crashed.to_string()),
+        ("bike".into(), settings.bike.identity()),
     ]);
     let bytes = cpbp_core::control::learned::serialize_sorted(views, meta)
         .map_err(std::io::Error::other)?;
@@ -79,6 +81,8 @@ pub struct ShardRows {
     pub rows: usize,
     /// Whether the episode ended in a crash.
     pub crashed: bool,
+    /// The identity of the bike it rode (`BikeParams::identity`).
+    pub bike: String,
 }
 
 impl ShardRows {
@@ -128,6 +132,11 @@ pub fn read(path: &Path) -> Result<ShardRows, String> {
         labels,
         rows,
         crashed: field("crashed") == "true",
+        // Shards from before bikes were recorded rode the reference bike.
+        bike: meta
+            .get("bike")
+            .cloned()
+            .unwrap_or_else(|| BikeParams::default().identity()),
     })
 }
 

@@ -8,7 +8,7 @@ use candle_core::{Device, Tensor};
 use super::episode::{ride, Episode, ExpertSettings, Family, Ground};
 use super::shard;
 use super::train::{train, Dataset, Layers, TrainSettings};
-use cpbp_core::bike::{LOWER, UPPER};
+use cpbp_core::bike::{read_bike_file, BikeParams, LOWER, UPPER};
 use cpbp_core::control::learned::{output_entries, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT};
 
 fn short() -> ExpertSettings {
@@ -17,6 +17,7 @@ fn short() -> ExpertSettings {
         seconds: 1.0,
         noise: 0.05,
         family: Family::Mixed,
+        bike: BikeParams::default(),
     }
 }
 
@@ -44,7 +45,7 @@ fn a_log_episode_rides_straight_at_one_speed_over_the_test_levels_logs() {
     };
     let episode = Episode::draw(200_001, &settings);
     assert_eq!(episode, Episode::draw(200_001, &settings));
-    let Ground::Logs(count) = episode.ground else {
+    let Ground::Logs(fields) = episode.ground else {
         panic!("not a log field: {:?}", episode.ground);
     };
     assert_eq!(episode.segments.len(), 1, "one request for the whole ride");
@@ -55,10 +56,19 @@ fn a_log_episode_rides_straight_at_one_speed_over_the_test_levels_logs() {
     );
     assert!((6.0..25.0).contains(&(segment.drive.max_speed * 3.6)));
     let heading = glam::DQuat::from_rotation_y(episode.heading);
-    let terrain = super::grounds::log_field(episode.seed, heading, count);
-    assert_eq!(terrain.len(), count + 1, "the logs and the ground");
+    let terrain = super::grounds::log_field(episode.seed, heading, fields);
+    let per_field = cpbp_core::grounds::LogField::test_level().count;
+    assert!((2..=4).contains(&fields));
+    assert_eq!(
+        terrain.len(),
+        fields * per_field + 1,
+        "the logs and the ground"
+    );
     assert!(
-        episode.simulation().crashed().is_none(),
+        episode
+            .simulation(&cpbp_core::bike::BikeParams::default())
+            .crashed()
+            .is_none(),
         "it starts upright, clear of logs"
     );
     // The mixed family's draws are the ones the committed data was made from.
@@ -94,8 +104,10 @@ fn a_ridden_episode_repeats_and_reads_back_from_its_shard() {
         labels,
         rows,
         crashed,
+        bike,
     } = shard::read(&path).unwrap();
     assert_eq!(crashed, records.crashed);
+    assert_eq!(bike, BikeParams::default().identity());
     assert_eq!(rows, 30);
     assert_eq!(
         &features[..records.features[0].len()],
@@ -135,6 +147,7 @@ fn tiny_run() -> (PolicyNetwork, Dataset) {
         &Dataset::default(),
         &training,
         "a test's",
+        &BikeParams::default().identity(),
         |_, loss| {
             assert!(loss.train.is_finite());
         },
@@ -220,7 +233,10 @@ fn a_carving_episode_turns_hard_and_long_at_speed() {
             })
             .collect();
         assert!(!turns.is_empty() && turns[0] >= 90, "{turns:?}");
-        assert!(episode.simulation().crashed().is_none());
+        assert!(episode
+            .simulation(&cpbp_core::bike::BikeParams::default())
+            .crashed()
+            .is_none());
     }
 }
 
@@ -235,7 +251,9 @@ fn adding_a_family_leaves_the_others_draws_as_they_were() {
     let logs = Episode::draw(50_002, &logs);
     assert_eq!((mixed.ground, mixed.segments.len()), (Ground::Flat, 7));
     assert!((mixed.heading - 2.876966).abs() < 1e-6, "{}", mixed.heading);
-    assert_eq!(logs.ground, Ground::Logs(44));
+    // The log episodes ride the level's own fields since issue 55 (the committed model's
+    // drew 44 logs of the trainer's own description here); the draws around it are kept.
+    assert_eq!(logs.ground, Ground::Logs(3));
     assert!((logs.segments[0].drive.max_speed - 6.056304).abs() < 1e-6);
     assert!((logs.heading - 3.349467).abs() < 1e-6, "{}", logs.heading);
     let carving = ExpertSettings {
@@ -278,6 +296,60 @@ fn a_shoves_episode_shoves_hard_and_often_at_a_riding_speed() {
             assert!(shove.stick.abs() < 0.4 && shove.lean.is_none());
             assert_eq!(shove.drive, first.drive, "one speed all the way");
         }
-        assert!(episode.simulation().crashed().is_none());
+        assert!(episode
+            .simulation(&cpbp_core::bike::BikeParams::default())
+            .crashed()
+            .is_none());
     }
+}
+
+#[test]
+fn episodes_ride_the_bike_asked_and_a_network_is_one_bikes() {
+    let fixture = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../tests/fixtures/bikes/pit_bike.tres"
+    );
+    let pit_bike = read_bike_file(std::path::Path::new(fixture)).expect("the fixture reads");
+    let root = std::env::temp_dir().join(format!("cpbp-learn-bikes-{}", std::process::id()));
+    let ride_into = |dir: &str, bike: &BikeParams| {
+        let settings = ExpertSettings {
+            bike: bike.clone(),
+            ..short()
+        };
+        let episode = Episode::draw(5, &settings);
+        let records = ride(&episode, &settings, None);
+        std::fs::create_dir_all(root.join(dir)).unwrap();
+        shard::write(&root.join(dir), &episode, &settings, &records).unwrap();
+        shard::read(&shard::shard_path(&root.join(dir), 5)).unwrap()
+    };
+    let pit = ride_into("pit", &pit_bike.params);
+    let street = ride_into("street", &BikeParams::default());
+    assert_eq!(pit.bike, pit_bike.params.identity());
+    assert_ne!(pit.features, street.features, "another bike, another ride");
+    let arguments = |data: &str| -> Vec<String> {
+        let model = root.join("model.safetensors");
+        [
+            "--data",
+            data,
+            "--model",
+            &model.to_string_lossy(),
+            "--epochs",
+            "1",
+            "--hidden",
+            "8",
+        ]
+        .map(String::from)
+        .to_vec()
+    };
+    let both = format!(
+        "{},{}",
+        root.join("pit").display(),
+        root.join("street").display()
+    );
+    let refused = super::train_command(&arguments(&both)).unwrap_err();
+    assert!(refused.contains("another bike"), "{refused}");
+    super::train_command(&arguments(&root.join("pit").to_string_lossy())).unwrap();
+    let model = PolicyNetwork::load(&root.join("model.safetensors")).unwrap();
+    assert_eq!(model.parts().bike, pit_bike.params.identity());
+    std::fs::remove_dir_all(&root).unwrap();
 }

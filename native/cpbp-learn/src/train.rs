@@ -185,6 +185,7 @@ pub fn train(
     validation: &Dataset,
     settings: &TrainSettings,
     description: &str,
+    bike: &str,
     mut report: impl FnMut(usize, EpochLoss),
 ) -> Result<PolicyNetwork, String> {
     let fail = |e: candle_core::Error| e.to_string();
@@ -261,8 +262,7 @@ pub fn train(
         output_mean: out_mean,
         output_std: out_std,
         training: format!("{description}, weights of epoch {best_epoch}"),
-        // The episodes ride the reference bike (`Episode::simulation`).
-        bike: cpbp_core::bike::BikeParams::default().identity(),
+        bike: bike.to_owned(),
     })
     .map_err(|e| e.to_string())
 }

@@ -3,32 +3,20 @@ class_name BumpField
 extends Node3D
 ## Seeded random bumps: logs lying half-buried across an area, each a static cylinder the
 ## simulation collides with. `regenerate(seed)` lays out a new set; the same seed always
-## gives the same bumps. The area is centred on this node, along its −z.
+## gives the same bumps. The area is centred on this node, along its −z. The native core
+## lays them (`LogFieldDescription.layout`), so the trainer and the scenario tool ride the
+## same logs from the same seed.
 
-## Area the bump centres fall in (m): width (x) × length (z).
-@export var area := Vector2(14.0, 20.0):
+## Where the logs fall and how big they are: a resource, so a level's field is one file
+## the tools read too (the test level's is scenes/levels/test_level/log_field.tres).
+## None lays no logs.
+@export var field: LogFieldDescription:
 	set(value):
-		area = value.max(Vector2(0.5, 0.5))
-		_rebuild_in_editor()
-## How many bumps.
-@export_range(0, 200) var count := 10:
-	set(value):
-		count = value
-		_rebuild_in_editor()
-## Bump radius range (m); they are buried to their axis, so this is their height.
-@export var radius_range := Vector2(0.06, 0.12):
-	set(value):
-		radius_range = value
-		_rebuild_in_editor()
-## Bump length range (m).
-@export var length_range := Vector2(1.0, 3.0):
-	set(value):
-		length_range = value
-		_rebuild_in_editor()
-## Largest angle (degrees) between a bump and the line across the area.
-@export_range(0.0, 90.0) var max_angle_deg := 35.0:
-	set(value):
-		max_angle_deg = value
+		if field != null and field.changed.is_connected(_rebuild_in_editor):
+			field.changed.disconnect(_rebuild_in_editor)
+		field = value
+		if field != null and Engine.is_editor_hint():
+			field.changed.connect(_rebuild_in_editor)
 		_rebuild_in_editor()
 ## Seed shown in the editor; games and experiments pass their own to `regenerate`.
 @export var preview_seed := 1:
@@ -51,22 +39,16 @@ func regenerate(seed_value: int) -> void:
 	for child in get_children():
 		remove_child(child)
 		child.queue_free()
-	var rng := RandomNumberGenerator.new()
-	rng.seed = seed_value
 	if _material == null:
 		_material = StandardMaterial3D.new()
 		_material.albedo_color = Color(0.42, 0.3, 0.2)
 		_material.roughness = 0.9
-	for i in count:
-		var radius := rng.randf_range(radius_range.x, radius_range.y)
-		var length := rng.randf_range(length_range.x, length_range.y)
-		var angle := deg_to_rad(rng.randf_range(-max_angle_deg, max_angle_deg))
-		var centre := Vector3(
-			rng.randf_range(-area.x / 2.0, area.x / 2.0),
-			0.0,
-			rng.randf_range(-area.y / 2.0, area.y / 2.0)
-		)
-		add_child(_bump(i, radius, length, angle, centre))
+	if field == null:
+		return
+	var logs := field.layout(seed_value)
+	for i in logs.size():
+		var placed: Dictionary = logs[i]
+		add_child(_bump(i, placed.radius, placed.length, placed.angle, placed.centre))
 
 
 ## The seed of the current bumps.

@@ -15,12 +15,15 @@ use std::time::{Duration, Instant};
 
 use cpbp_core::bike::{take_bike_argument, BikeParams, Controls, DriveInput, Placement};
 use cpbp_core::control::PlanWait;
+use cpbp_core::grounds::RollingBumps;
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::{Terrain, TerrainPiece, TerrainShape};
+use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
+use rand::SeedableRng;
+use rand_pcg::Pcg64;
 
 const RUNS: usize = 7;
 const ODE_DT: f64 = 1.0 / 120.0;
@@ -197,38 +200,13 @@ fn sphere_step_cost(bodies: usize, steps: usize) -> f64 {
     time_per_call(steps, || world.step(ODE_DT))
 }
 
-/// A 64 m × 64 m grid of 1 m cells with gentle bumps, as one triangle mesh.
+/// A 64 m × 64 m grid of 2 m cells of the core's rolling bumps, ±6 cm about the ground's
+/// level, as one triangle mesh (the levels' shape).
 fn bump_field() -> Arc<Terrain> {
-    let n = 32;
-    let cell = 2.0;
-    let height = |i: usize, j: usize| 0.06 * ((i as f64 * 1.3).sin() * (j as f64 * 0.7).cos());
-    let corner = |i: usize, j: usize| {
-        DVec3::new(i as f64 * cell - 32.0, height(i, j), j as f64 * cell - 32.0)
-    };
-    let mut vertices = Vec::new();
-    for i in 0..n {
-        for j in 0..n {
-            let (a, b, c, d) = (
-                corner(i, j),
-                corner(i + 1, j),
-                corner(i + 1, j + 1),
-                corner(i, j + 1),
-            );
-            vertices.extend([a, d, c, a, c, b]);
-        }
-    }
-    Arc::new(Terrain::new(vec![piece(TerrainShape::TriMesh { vertices })]).expect("valid mesh"))
-}
-
-fn piece(shape: TerrainShape) -> TerrainPiece {
-    TerrainPiece {
-        source: "bench".into(),
-        shape,
-        placement: Placement {
-            position: DVec3::ZERO,
-            rotation: DQuat::IDENTITY,
-        },
-    }
+    let bumps = RollingBumps::draw(&mut Pcg64::seed_from_u64(2015), 0.12);
+    let mut mesh = bumps.tri_mesh(32, 2.0);
+    mesh.placement.position.y = -0.06;
+    Arc::new(Terrain::new(vec![mesh]).expect("valid mesh"))
 }
 
 /// A simulation in `physics` whose bike is riding at 15 km/h with the rider holding the

@@ -14,10 +14,11 @@
 //! `reversals` (25 km/h, ±15° every 2 s for 12 s; the settled error: RMS over the second
 //! second of each gate after the first, once the lean has swung over), `push` (15 km/h, a
 //! sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h); the
-//! stops and hill starts of `stops.rs`. `arcade` and `learned` ride too, once per seed, as
+//! stops and hill starts of `stops.rs`; `logs`, the test level's ride (`logs.rs`). `arcade` and `learned` ride too, once per seed, as
 //! N = 0; `learned` and `guided` with the network in `--model` (the project's by default).
 
 mod args;
+mod logs;
 mod stops;
 
 use std::sync::{Arc, OnceLock};
@@ -37,7 +38,11 @@ const MANOEUVRES: [&str; 6] = ["turn", "carve", "slalom", "reversals", "push", "
 pub(crate) const STEPS_PER_SECOND: f64 = 30.0;
 
 fn scenario_names() -> Vec<&'static str> {
-    MANOEUVRES.into_iter().chain(stops::SCENARIOS).collect()
+    MANOEUVRES
+        .into_iter()
+        .chain(stops::SCENARIOS)
+        .chain([logs::SCENARIO])
+        .collect()
 }
 
 /// The network the learned and guided controllers ride with, loaded once.
@@ -119,6 +124,8 @@ fn main() {
                     };
                     let o = if stops::SCENARIOS.contains(&scenario) {
                         stops::ride(scenario, rider)
+                    } else if scenario == logs::SCENARIO {
+                        logs::ride(rider)
                     } else {
                         ride_scenario(scenario, rider)
                     };
@@ -256,40 +263,55 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
     Outcome {
         fell: ride.sim().crashed().is_some(),
         metric,
-        planning_ms: planning.iter().sum::<f64>() / planning.len().max(1) as f64,
+        planning_ms: mean_planning_ms(&planning),
     }
+}
+
+/// The mean planning time (ms) of a ride's plans; 0 for a controller that plans nothing
+/// (an empty float sum is −0.0, which the rows would print as "-0.000").
+pub(crate) fn mean_planning_ms(planning: &[f64]) -> f64 {
+    if planning.is_empty() {
+        return 0.0;
+    }
+    planning.iter().sum::<f64>() / planning.len() as f64
 }
 
 /// A ride heading where seed `seed` says, waiting for every plan so the outcome does not
 /// depend on the machine, full throttle towards `kmh`: on flat ground, or on an endless
 /// slope of `slope` (rad) rising ahead (falling for a negative slope).
 pub(crate) fn new_ride(rider: Rider, kmh: f64, slope: f64) -> Ride {
+    let heading = heading_of(rider.seed);
+    if slope == 0.0 {
+        let spawn = Placement {
+            position: DVec3::new(0.0, 0.02, 0.0),
+            rotation: heading,
+        };
+        return ride_on(rider, kmh, Terrain::flat(), spawn);
+    }
+    let rotation = heading * DQuat::from_rotation_z(slope);
+    let normal = rotation * DVec3::Y;
+    let ground = TerrainPiece::ground_through_origin("slope", normal);
+    let spawn = Placement {
+        position: normal * 0.02,
+        rotation,
+    };
+    let terrain = Terrain::new(vec![ground]).expect("a plane is valid terrain");
+    ride_on(rider, kmh, terrain, spawn)
+}
+
+/// The heading seed `seed` rides in.
+pub(crate) fn heading_of(seed: u64) -> DQuat {
+    DQuat::from_rotation_y(std::f64::consts::TAU * draw(seed, 0))
+}
+
+/// A ride from `spawn` on `terrain`, as `new_ride` sets it up.
+pub(crate) fn ride_on(rider: Rider, kmh: f64, terrain: Terrain, spawn: Placement) -> Ride {
     let Rider {
         kind,
         n,
         seed,
         physics,
     } = rider;
-    let heading = DQuat::from_rotation_y(std::f64::consts::TAU * draw(seed, 0));
-    let (spawn, terrain) = if slope == 0.0 {
-        let spawn = Placement {
-            position: DVec3::new(0.0, 0.02, 0.0),
-            rotation: heading,
-        };
-        (spawn, Terrain::flat())
-    } else {
-        let rotation = heading * DQuat::from_rotation_z(slope);
-        let normal = rotation * DVec3::Y;
-        let ground = TerrainPiece::ground_through_origin("slope", normal);
-        let spawn = Placement {
-            position: normal * 0.02,
-            rotation,
-        };
-        (
-            spawn,
-            Terrain::new(vec![ground]).expect("a plane is valid terrain"),
-        )
-    };
     let config = SimulationConfig {
         physics,
         bike: BIKE.get().cloned().unwrap_or_default(),

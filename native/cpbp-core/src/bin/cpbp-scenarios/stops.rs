@@ -16,7 +16,7 @@
 use cpbp_core::control::TurnIntent;
 use cpbp_core::ride::{Intent, Ride};
 
-use super::{new_ride, Outcome, Rider, STEPS_PER_SECOND};
+use super::{mean_planning_ms, new_ride, Outcome, Rider, STEPS_PER_SECOND};
 
 pub const SCENARIOS: [&str; 8] = [
     "stop10",
@@ -92,6 +92,6 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
     Outcome {
         fell: ride.sim().crashed().is_some(),
         metric,
-        planning_ms: planning.iter().sum::<f64>() / planning.len().max(1) as f64,
+        planning_ms: mean_planning_ms(&planning),
     }
 }
