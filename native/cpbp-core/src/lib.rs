@@ -7,6 +7,7 @@ mod build_info;
 pub mod control;
 pub mod grounds;
 pub mod physics;
+mod resource_file;
 pub mod ride;
 pub mod settings;
 pub mod simulation;

@@ -6,6 +6,7 @@
 use std::path::Path;
 
 use super::BikeParams;
+use crate::resource_file::resource_properties;
 
 /// A bike as its file describes it.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,31 +41,10 @@ pub fn take_bike_argument(arguments: &mut Vec<String>) -> Result<Option<BikeFile
 
 /// A bike file's text as a bike.
 pub fn parse_bike_file(text: &str) -> Result<BikeFile, String> {
-    if !text
-        .trim_start()
-        .starts_with("[gd_resource type=\"BikeDescription\"")
-    {
-        return Err("not a BikeDescription resource".into());
-    }
-    let mut section = "";
     let mut name = String::from("Street 350");
     let mut sprung = true;
     let mut values = Vec::new();
-    for (number, line) in text.lines().enumerate() {
-        let line = line.trim();
-        if line.starts_with('[') {
-            section = line;
-            continue;
-        }
-        if section != "[resource]" || line.is_empty() || line.starts_with(';') {
-            continue;
-        }
-        let Some((key, value)) = line.split_once(" = ") else {
-            return Err(format!(
-                "line {}: not a key = value line: {line}",
-                number + 1
-            ));
-        };
+    for (key, value) in resource_properties(text, "BikeDescription")? {
         match key {
             "name" => name = value.trim_matches('"').to_owned(),
             "suspension" => {

@@ -4,35 +4,15 @@
 //! as Godot leaves out a property at its default.
 
 use super::log_field::LogField;
+use crate::resource_file::resource_properties;
 
 /// The most logs a field may hold (the editor's range too).
 pub const MAX_LOGS: usize = 200;
 
 /// A log field file's text as a field, checked; the error names the key.
 pub fn parse_log_field(text: &str) -> Result<LogField, String> {
-    if !text
-        .trim_start()
-        .starts_with("[gd_resource type=\"LogFieldDescription\"")
-    {
-        return Err("not a LogFieldDescription resource".into());
-    }
     let mut field = LogField::default();
-    let mut section = "";
-    for (index, line) in text.lines().enumerate() {
-        let line = line.trim();
-        if line.starts_with('[') {
-            section = line;
-            continue;
-        }
-        if section != "[resource]" || line.is_empty() || line.starts_with(';') {
-            continue;
-        }
-        let Some((key, value)) = line.split_once(" = ") else {
-            return Err(format!(
-                "line {}: not a key = value line: {line}",
-                index + 1
-            ));
-        };
+    for (key, value) in resource_properties(text, "LogFieldDescription")? {
         match key {
             "area" => field.area = pair(key, value)?,
             "radius_range" => field.radius = pair(key, value)?,
