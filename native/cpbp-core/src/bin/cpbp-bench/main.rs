@@ -203,9 +203,11 @@ fn sphere_step_cost(bodies: usize, steps: usize) -> f64 {
 /// A 64 m × 64 m grid of 2 m cells of the core's rolling bumps, ±6 cm about the ground's
 /// level, as one triangle mesh (the levels' shape).
 fn bump_field() -> Arc<Terrain> {
-    let bumps = RollingBumps::draw(&mut Pcg64::seed_from_u64(2015), 0.12);
+    let height = 0.12;
+    let bumps = RollingBumps::draw(&mut Pcg64::seed_from_u64(2015), height);
     let mut mesh = bumps.tri_mesh(32, 2.0);
-    mesh.placement.position.y = -0.06;
+    // Crests and troughs about the ground's level, where the bike is spawned.
+    mesh.placement.position.y = -height / 2.0;
     Arc::new(Terrain::new(vec![mesh]).expect("valid mesh"))
 }
 
