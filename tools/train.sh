@@ -7,7 +7,8 @@
 #  3. DAgger, ROUNDS times: the latest network rides DAGGER_EPISODES new episodes,
 #     DAGGER_LOG_EPISODES over logs and DAGGER_CARVING_EPISODES of carving while the
 #     planner labels the states it visits, and a network is trained on everything so far.
-#  4. The last network becomes the project's model (models/policy.safetensors) and the
+#  4. The last network becomes the bike's model (models/policy-<bike>.safetensors, <bike>
+#     the bike file's name: street_350, the reference, without BIKE) and the
 #     training report is written (docs/learned/training.md, losses.png).
 #  5. Unless EVALUATE=0: learned and guided ride the test-level experiment and the
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
@@ -18,8 +19,8 @@
 # EPOCHS and SEED override the trainer's defaults (cpbp-learn train --help).
 # BIKE=FILE (a bike file) trains a network of that bike: its episodes, checkpoints and
 # report go to a folder and a model of the bike's own (models/policy-<name>.safetensors,
-# docs/learned/<name>, <name> the bike file's), and the game's evaluation, which rides
-# the reference bike, is left out.
+# docs/learned/<name>, <name> the bike file's, which the game and the tools load for that
+# bike), and the game's evaluation, which rides the reference bike, is left out.
 # Every step resumes: episodes already saved are not ridden again, a finished round's
 # model is kept, and the experiment and scenario runs resume. Data and checkpoints live
 # in the cache (LEARN_DATA), never in git; `make clean` leaves them, `make clean-learn`
@@ -36,7 +37,7 @@ CARVING_EPISODES="${CARVING_EPISODES:-40}"
 DAGGER_CARVING_EPISODES="${DAGGER_CARVING_EPISODES:-20}"
 EVALUATE="${EVALUATE:-1}"
 LEARN_DATA="${LEARN_DATA:-$CACHE_ROOT/learn}"
-MODEL=models/policy.safetensors
+MODEL=models/policy-street_350.safetensors
 REPORT=docs/learned
 bike=()
 if [ -n "${BIKE:-}" ]; then

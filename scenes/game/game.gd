@@ -133,8 +133,8 @@ func _unhandled_input(event: InputEvent) -> void:
 	elif event.is_action_pressed(&"previous_spawn"):
 		cycle_spawn(-1)
 	elif event.is_action_pressed(&"cycle_controller"):
-		var cycle := BikeSimulation.controller_names()
-		var current := cycle.find(Settings.get_value(&"controller"))
+		var cycle := bike.get_offered_controller_names()
+		var current := cycle.find(bike.controller)
 		Settings.set_value(&"controller", cycle[(current + 1) % cycle.size()])
 		_hud.announce("Controller: %s" % controller_name())
 	elif event.is_action_pressed(&"cycle_camera"):
@@ -240,7 +240,15 @@ func _apply_setting(key: StringName) -> void:
 	var value: Variant = Settings.get_value(key)
 	match key:
 		&"controller":
-			bike.controller = value
+			# A controller this bike does not offer (learned, on a bike without a model of
+			# its own) leaves the player's choice saved and rides with arcade.
+			if bike.get_offered_controller_names().has(value):
+				bike.controller = value
+			else:
+				bike.controller = &"arcade"
+				_hud.announce(
+					"%s is not offered on this bike: it has no learned model" % value.capitalize()
+				)
 		&"max_speed_kmh":
 			_driver.max_speed_kmh = value
 		&"auto_speed_kmh":

@@ -36,8 +36,11 @@ func _ride_reporting(model: String, controller: String, steps: int) -> Array[Str
 
 
 func test_the_project_ships_a_model_and_the_learned_controller_rides_with_it() -> void:
-	assert_true(FileAccess.file_exists(_bike.policy_model), "the model `make train` wrote")
-	var reasons := _ride_reporting(_bike.policy_model, "learned", 90)
+	var own := _bike.get_policy_model_path()
+	assert_eq(own, "res://models/policy-street_350.safetensors", "the reference bike's own")
+	assert_true(FileAccess.file_exists(own), "the model `make train` wrote")
+	assert_has(_bike.get_offered_controller_names(), "learned")
+	var reasons := _ride_reporting("", "learned", 90)
 	assert_eq(reasons, [] as Array[String])
 	assert_eq(_bike.get_controller_failure(), "", "the network drives")
 	assert_false(_bike.is_crashed())
@@ -64,3 +67,27 @@ func test_a_corrupt_model_is_refused_and_guided_plans_with_arcade() -> void:
 	assert_has(_bike.get_controller_failure(), "the arcade controller guides")
 	assert_gt(_bike.get_trajectory_paths().size(), 0, "the planner still plans")
 	assert_false(_bike.is_crashed())
+
+
+func test_a_bike_without_a_model_of_its_own_offers_no_learned_and_guided_plans_without() -> void:
+	var pit := BikeSimulation.new()
+	pit.bike = load("res://tests/fixtures/bikes/pit_bike.tres")
+	pit.transform = Transform3D(Basis(), Vector3(3, 0.02, 0))
+	_level.add_child(pit)
+	await wait_physics_frames(1)
+	pit.set_physics_process(false)
+	assert_eq(pit.get_policy_model_path(), "", "no model of its own")
+	var offered := pit.get_offered_controller_names()
+	assert_false(offered.has("learned"), "learned is not offered: %s" % [offered])
+	assert_has(offered, "guided")
+	assert_has(offered, "arcade")
+	var reasons: Array[String] = []
+	pit.controller_failed.connect(func(reason: String) -> void: reasons.append(reason))
+	pit.controller = "guided"
+	pit.trajectories = 4
+	pit.wait_for_every_plan = true
+	pit.set_drive(1.0, 0.0)
+	pit.advance(30)
+	assert_eq(reasons.size(), 1, "reported once: %s" % [reasons])
+	assert_has(pit.get_controller_failure(), "pit_bike has no learned model of its own")
+	assert_gt(pit.get_trajectory_paths().size(), 0, "the planner still plans")

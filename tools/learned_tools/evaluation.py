@@ -2,7 +2,7 @@
 
 The experiment and the scenario tool resume by skipping rows they already hold, so rows
 of `learned` and `guided` ridden with an earlier model would stand in for the new one.
-`make train` runs this before it rides them: when models/policy.safetensors is not the
+`make train` runs this before it rides them: when models/policy-street_350.safetensors (the reference bike's) is not the
 model named in docs/learned/evaluated-model.txt, their rows move to a superseded folder
 beside each table (as every other change of the riders does, docs/experiment/superseded)
 and the new model is recorded, so a resumed evaluation keeps what it rode with it."""
@@ -78,7 +78,7 @@ def supersede(root: Path, model: Path) -> str:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--model", type=Path, default=Path("models/policy.safetensors"))
+    parser.add_argument("--model", type=Path, default=Path("models/policy-street_350.safetensors"))
     parser.add_argument("--root", type=Path, default=Path(__file__).resolve().parents[2])
     args = parser.parse_args()
     print(supersede(args.root, args.model if args.model.is_absolute()

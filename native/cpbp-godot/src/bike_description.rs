@@ -99,6 +99,11 @@ impl IResource for BikeDescription {
 }
 
 impl BikeDescription {
+    /// The bike's name, for people.
+    pub fn name(&self) -> GString {
+        self.name.clone()
+    }
+
     /// The bike as the core builds it, or why it cannot be built (a number out of its
     /// field's range, or a geometry the core refuses), naming the field.
     pub fn params(&self) -> Result<BikeParams, String> {

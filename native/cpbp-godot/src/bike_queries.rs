@@ -51,6 +51,25 @@ impl BikeSimulation {
         controller_choice::offered_names()
     }
 
+    /// The controllers players may pick for this bike, in the menus' order: every one
+    /// `controller_names` lists, but `learned` (the network alone) only when the bike has
+    /// a learned model (`policy_model`, or the bike's own).
+    #[func]
+    fn get_offered_controller_names(&self) -> PackedStringArray {
+        let has_network = self.policy().network().is_some();
+        controller_choice::offered_names_where(|k| has_network || !k.uses_network() || k.plans())
+    }
+
+    /// The model file the learned controllers read: `policy_model`, or the bike's own;
+    /// empty, for a bike without one.
+    #[func]
+    fn get_policy_model_path(&self) -> GString {
+        if !self.policy_model.is_empty() {
+            return self.policy_model.clone();
+        }
+        crate::policy_model::bike_model(self.bike.as_ref()).unwrap_or_default()
+    }
+
     /// Control steps simulated since the bike was built or last placed.
     #[func]
     fn get_step_count(&self) -> i64 {

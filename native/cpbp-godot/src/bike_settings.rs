@@ -5,6 +5,7 @@
 
 use std::time::Duration;
 
+use cpbp_core::control::learned::LoadedPolicy;
 use cpbp_core::control::{CostTolerances, PlanWait, PlanningConfig};
 use cpbp_core::physics::{PhysicsModel, RolloutStepping};
 use cpbp_core::ride::PlannerSettings;
@@ -43,6 +44,18 @@ impl BikeSimulation {
         }
     }
 
+    /// The learned network the controllers ride with: the file `policy_model` names, or
+    /// the bike's own (none, with the reason, for a bike without one).
+    pub(crate) fn policy(&self) -> LoadedPolicy {
+        if !self.policy_model.is_empty() {
+            return crate::policy_model::policy_at(&self.policy_model);
+        }
+        match crate::policy_model::bike_model(self.bike.as_ref()) {
+            Ok(path) => crate::policy_model::policy_at(&path),
+            Err(why) => LoadedPolicy::missing(why),
+        }
+    }
+
     /// The planners' settings the node's settings ask for (each already within its
     /// range: `SettingValues` clamps what is set).
     fn planner_settings(&self) -> PlannerSettings {
@@ -61,7 +74,7 @@ impl BikeSimulation {
             threads: values.count(&PLANNING_THREADS),
             seed: values.integer(&PLANNER_SEED) as u64,
             parameters: values.clone(),
-            policy: crate::policy_model::policy_at(&self.policy_model),
+            policy: self.policy(),
             ..PlanningConfig::default()
         }
         .rolling_out_in(physics);

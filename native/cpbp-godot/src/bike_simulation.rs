@@ -38,7 +38,7 @@ pub struct BikeSimulation {
     /// ride is built (`_ready`); a description that cannot be built is an error and no
     /// ride is built.
     #[export]
-    bike: Option<Gd<BikeDescription>>,
+    pub(crate) bike: Option<Gd<BikeDescription>>,
     /// The physics model, by name: `classic` (QuickStep, the physics the thesis
     /// reproduction was evaluated on) or `exact` (direct solver, explicit wheel
     /// gyroscopics: the benchmark bicycle within 10 %, cheaper rollouts). Read when the
@@ -52,9 +52,11 @@ pub struct BikeSimulation {
     #[export]
     #[init(val = ControllerChoice(ControllerKind::ARCADE))]
     pub(crate) controller: ControllerChoice,
-    /// The learned network's model file (the `learned` and `guided` controllers).
+    /// The learned network's model file (the `learned` and `guided` controllers); empty:
+    /// the bike's own (`res://models/policy-<bike file's name>.safetensors`, which
+    /// `make train BIKE=` writes). A bike without one of its own does not offer `learned`
+    /// (`get_offered_controller_names`) and guided plans without it.
     #[export(file = "*.safetensors")]
-    #[init(val = crate::policy_model::default_model_path())]
     pub(crate) policy_model: GString,
     /// The ride's and the planners' settings (`cpbp_core::settings`), shown as the node's
     /// properties (node_settings.rs): each is clamped into its range when set.

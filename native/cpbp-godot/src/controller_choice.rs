@@ -86,9 +86,14 @@ impl Export for ControllerChoice {}
 
 /// The registry's names of the controllers players pick, in menu order.
 pub fn offered_names() -> PackedStringArray {
+    offered_names_where(|_| true)
+}
+
+/// The controllers players pick that `usable` lets through, by name, in the menus' order.
+pub fn offered_names_where(usable: impl Fn(ControllerKind) -> bool) -> PackedStringArray {
     ControllerKind::ALL
         .iter()
-        .filter(|k| k.offered())
+        .filter(|k| k.offered() && usable(**k))
         .map(|k| GString::from(k.name()))
         .collect()
 }

@@ -5,13 +5,42 @@
 
 use std::sync::Mutex;
 
-use cpbp_core::control::learned::{LoadedPolicy, MODEL_PATH};
+use cpbp_core::bike::REFERENCE_BIKE;
+use cpbp_core::control::learned::{model_path, no_model_of_its_own, LoadedPolicy};
 use godot::classes::FileAccess;
 use godot::prelude::*;
 
-/// The project's model, where `make train` writes it.
-pub(crate) fn default_model_path() -> GString {
-    GString::from(format!("res://{MODEL_PATH}").as_str())
+use crate::bike_description::BikeDescription;
+
+/// The model file of `bike` (none: the reference bike), where `make train BIKE=` writes
+/// it: named by the bike file's name (`cpbp_core::control::learned::model_path`). A
+/// bike built in code has no file and no model of its own: its name then.
+pub(crate) fn bike_model(bike: Option<&Gd<BikeDescription>>) -> Result<GString, String> {
+    let Some(bike) = bike else {
+        return Ok(res_path(REFERENCE_BIKE));
+    };
+    let path = bike.get_path().to_string();
+    let key = path
+        .rsplit('/')
+        .next()
+        .and_then(|file| file.strip_suffix(".tres"))
+        .unwrap_or_default();
+    if key.is_empty() {
+        return Err(format!(
+            "the bike {} has no file, so no learned model of its own",
+            bike.bind().name()
+        ));
+    }
+    let model = res_path(key);
+    if FileAccess::file_exists(&model) {
+        Ok(model)
+    } else {
+        Err(no_model_of_its_own(key))
+    }
+}
+
+fn res_path(bike: &str) -> GString {
+    GString::from(format!("res://{}", model_path(bike)).as_str())
 }
 
 /// The last file asked for and what it gave (a bike asks every physics tick).

@@ -197,7 +197,7 @@ pub fn ride(
     };
     let mut expert = PlanningSession::new(&sim, &COMBINED, config);
     let mut noise = stream(episode.seed, Stream::Noise);
-    let (turn, entries) = (TurnIntent::default(), output_entries());
+    let (turn, entries) = (TurnIntent::for_bike(&settings.bike), output_entries());
     let mut records = Records {
         driver: learner.map_or_else(
             || "expert".to_string(),

@@ -138,7 +138,8 @@ fn draw_carving(rng: &mut Pcg64, steps: usize) -> Drawn {
     let (drive, mut segments, mut start) = up_to_speed(rng, 0.2..1.0, 20.0..40.0);
     let mut side: f64 = if rng.random::<bool>() { 1.0 } else { -1.0 };
     while start < steps {
-        // Over 0.3 the stick asks the 30° limit from about 25 km/h on.
+        // Over 0.3 the stick asks the reference bike's 30° limit from about 25 km/h on
+        // (a bike's own, `max_lean_deg`, caps it: `TurnIntent::for_bike`).
         let stick = side * rng.random_range(0.3..1.0);
         let rider = if rng.random::<f64>() < 0.3 {
             RiderPosition {

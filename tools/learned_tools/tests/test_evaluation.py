@@ -20,10 +20,10 @@ class SupersedeTest(unittest.TestCase):
         for path, text in (("docs/experiment/results.csv", EXPERIMENT),
                            ("docs/experiment/platforms.json", "{}\n"),
                            ("docs/scenarios/scenarios.csv", SCENARIOS),
-                           ("models/policy.safetensors", "model one")):
+                           ("models/policy-street_350.safetensors", "model one")):
             (self.root / path).parent.mkdir(parents=True, exist_ok=True)
             (self.root / path).write_text(text)
-        self.model = self.root / "models/policy.safetensors"
+        self.model = self.root / "models/policy-street_350.safetensors"
 
     def read(self, path: str) -> str:
         return (self.root / path).read_text()

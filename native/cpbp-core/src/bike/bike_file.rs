@@ -12,8 +12,17 @@ use crate::resource_file::resource_properties;
 #[derive(Clone, Debug, PartialEq)]
 pub struct BikeFile {
     pub name: String,
+    /// The file's name without `.tres` ("street_350"): what the bike's own files (its
+    /// learned model, `control::learned::model_path`) are named by; empty for a text
+    /// read without a file.
+    pub key: String,
     pub params: BikeParams,
 }
+
+/// The reference bike's file name (scenes/bike/bikes/street_350.tres): the thesis's bike,
+/// `BikeParams::default()`, whose files (its learned model) the tools use without
+/// `--bike`.
+pub const REFERENCE_BIKE: &str = "street_350";
 
 /// The keys a bike file holds for the drawing alone.
 const LOOKS: &[&str] = &["paint", "bodywork", "resource_name", "script"];
@@ -22,7 +31,15 @@ const LOOKS: &[&str] = &["paint", "bodywork", "resource_name", "script"];
 pub fn read_bike_file(path: &Path) -> Result<BikeFile, String> {
     let text = std::fs::read_to_string(path)
         .map_err(|why| format!("the bike {}: {why}", path.display()))?;
-    parse_bike_file(&text).map_err(|why| format!("the bike {}: {why}", path.display()))
+    let bike =
+        parse_bike_file(&text).map_err(|why| format!("the bike {}: {why}", path.display()))?;
+    let key = path
+        .file_stem()
+        .map(|stem| stem.to_string_lossy().into_owned());
+    Ok(BikeFile {
+        key: key.unwrap_or_default(),
+        ..bike
+    })
 }
 
 /// Takes `--bike FILE` out of a tool's `arguments` and reads that bike (None without
@@ -62,7 +79,11 @@ pub fn parse_bike_file(text: &str) -> Result<BikeFile, String> {
         }
     }
     let params = BikeParams::from_fields(values.iter().map(|(k, v)| (k.as_str(), *v)), sprung)?;
-    Ok(BikeFile { name, params })
+    Ok(BikeFile {
+        name,
+        key: String::new(),
+        params,
+    })
 }
 
 #[cfg(test)]
@@ -89,6 +110,7 @@ mod tests {
             .into();
         let bike = take_bike_argument(&mut arguments).unwrap().unwrap();
         assert_eq!(bike.params.wheelbase, 1.12);
+        assert_eq!(bike.key, "pit_bike");
         assert_eq!(arguments, ["planning", "5"]);
         assert_eq!(take_bike_argument(&mut arguments), Ok(None));
         let mut bare = vec!["--bike".to_string()];

@@ -105,6 +105,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "swingarm_mass", "kg", 1.0, 20.0, 0.5, SAME, swingarm_mass },
     field! { "steer_limit_deg", "°", 10.0, 60.0, 1.0, DEG, steer_limit },
     field! { "tyre_friction", "", 0.3, 1.5, 0.05, SAME, tyre_friction },
+    field! { "max_lean_deg", "°", 15.0, 60.0, 0.5, DEG, max_lean },
     field! { "rider/lower_leg_mass", "kg", 2.0, 30.0, 0.05, SAME, [0] },
     field! { "rider/upper_leg_mass", "kg", 4.0, 40.0, 0.05, SAME, [1] },
     field! { "rider/torso_mass", "kg", 15.0, 100.0, 0.05, SAME, [2] },
@@ -119,6 +120,9 @@ pub const FIELDS: &[BikeField] = &[
     field! { "front_brake/max_torque", "N·m", 50.0, 3_000.0, 10.0, SAME, front_brake / max_torque },
     field! { "front_brake/full_above", "m", 0.0, 0.1, 0.001, SAME, front_brake / full_above },
     field! { "front_brake/none_below", "m", 0.0, 0.1, 0.001, SAME, front_brake / none_below },
+    field! { "front_brake/tipping_share", "", 0.0, 1.0, 0.01, SAME, front_brake / tipping_share },
+    field! { "front_brake/tipping_lookahead", "s", 0.0, 1.0, 0.01, SAME, front_brake / tipping_lookahead },
+    field! { "front_brake/ramp_time", "s", 0.0, 1.0, 0.01, SAME, front_brake / ramp_time },
     field! { "front_brake/hold_gain", "1/m", 0.0, 20.0, 0.1, SAME, front_brake / hold_gain },
     field! { "front_brake/hold_rate_gain", "s/m", 0.0, 10.0, 0.1, SAME, front_brake / hold_rate_gain },
     field! { "front_brake/rear_share", "", 0.0, 1.0, 0.05, SAME, front_brake / rear_share },
@@ -170,8 +174,8 @@ impl BikeParams {
     }
 
     /// Whether the fields make a bike the core can build: the tyre's crown within the
-    /// wheel, the steering axis between the wheels, the front brake's and the anti-
-    /// wheelie's thresholds in order.
+    /// wheel, the steering axis between the wheels, the front brake's (unless both are 0)
+    /// and the anti-wheelie's thresholds in order.
     pub fn check(&self) -> Result<(), String> {
         if self.tyre_crown >= self.wheel_radius {
             return Err("tyre_crown must be smaller than wheel_radius".into());
@@ -186,8 +190,13 @@ impl BikeParams {
             ));
         }
         if let Some(brake) = &self.front_brake {
-            if brake.none_below >= brake.full_above {
-                return Err("front_brake/none_below must be below front_brake/full_above".into());
+            let window_off = brake.full_above == 0.0 && brake.none_below == 0.0;
+            if brake.none_below >= brake.full_above && !window_off {
+                return Err(
+                    "front_brake/none_below must be below front_brake/full_above \
+                            (both 0: no compression window)"
+                        .into(),
+                );
             }
         }
         if let Some(control) = &self.wheelie_control {

@@ -2,7 +2,9 @@
 //! stops mostly with the front, whose grip grows with the load braking moves onto it
 //! (with ODE patch 04, up to about 1 g here). That much tips the rear up, so, as road
 //! bikes' rear-wheel lift-off mitigation does (e.g. Bosch's motorcycle stability control),
-//! the brake lets off as the rear suspension tops out. Asked for a stoppie (the rider's
+//! the brake lets off as the rear suspension tops out (the reference bike's rule), or is
+//! held below the force that tips the bike over its front tyre (`tipping_share`, from the
+//! bike's geometry at each physics step; off on the reference bike). Asked for a stoppie (the rider's
 //! weight forward with the brake on) it holds the rear up instead: the brake's torque keeps
 //! the centre of mass over a support point moved from the wheels' midpoint towards the
 //! front tyre, the balance point at full request, as the wheelie hold does at the rear.
@@ -21,13 +23,32 @@ pub struct FrontBrake {
     /// 660 N·m) with some to spare.
     pub max_torque: f64,
     /// Rear suspension compression (m, at the wheel) at or above which the brake acts in
-    /// full…
+    /// full… (0, with `none_below` 0 too: no compression window)
     pub full_above: f64,
     /// … and at or below which it lets off completely (its sag is 39 mm). The rear stays
     /// loaded with a margin: with the brake letting off only at 3 mm the rear hopped in a
     /// full brake, and stopping down a 15° slope it left the road, so the bike stood on
-    /// the front tyre and a foot and toppled along that line (3 of 6 stops).
+    /// the front tyre and a foot and toppled along that line (3 of 6 stops). The window
+    /// cannot see the last of the rear's load: the spring's preload tops the rear out while
+    /// its tyre still carries about 190 N, so it holds a full brake near 0.6 g.
     pub none_below: f64,
+    /// The tipping limit: the share (0–1) of the braking force that would tip the bike
+    /// over its front tyre that the brake may use; 0 turns the limit off. With the rear
+    /// unloaded, bike and rider turn about the front contact when the braking force F
+    /// times the centre of mass's height h above the road passes the load N times its
+    /// distance b behind the contact: F = N·b/h, about 1.08 g on the level here, and on a
+    /// slope N = m·g·cos(slope) while gravity pulls along the road (a 15° downhill leaves
+    /// about 0.78 g).
+    pub tipping_share: f64,
+    /// How far ahead (s) the tipping limit reads the centre of mass, moving over the
+    /// front tyre at its rate (the pitch rate's term; 0: where it is now). A full brake
+    /// dives the fork and folds the rider forward, and a limit that reads where the weight
+    /// is lets the rear up before it lets off.
+    pub tipping_lookahead: f64,
+    /// Seconds from no brake to the full brake (0: at once): a rider squeezes the lever
+    /// in a tenth of a second or two rather than striking it. It only slows the rise;
+    /// letting off (the rider, the lift-off limit) is at once.
+    pub ramp_time: f64,
     /// Holding a stoppie: brake share per metre the centre of mass is behind the shifted
     /// support point (1/m) and per m/s it falls back (s/m).
     pub hold_gain: f64,
@@ -50,6 +71,9 @@ impl Default for FrontBrake {
             max_torque: 700.0,
             full_above: 0.025,
             none_below: 0.012,
+            tipping_share: 0.0,
+            tipping_lookahead: 0.0,
+            ramp_time: 0.0,
             hold_gain: 3.6,
             hold_rate_gain: 0.9,
             rear_share: 0.3,
@@ -70,12 +94,64 @@ impl FrontBrake {
         }
     }
 
-    /// Share (0–1) of the asked braking let through with the rear compressed by `rear` (m).
+    /// Whether the compression window limits the brake (`full_above` > 0).
+    pub fn has_window(&self) -> bool {
+        self.full_above > 0.0
+    }
+
+    /// Whether the brake is set again before every physics step rather than once a
+    /// control period: the tipping limit and the ramp follow the bike within a period, as
+    /// an ABS unit's controller (hundreds of hertz) does. Set once a period the limit let
+    /// off a period late and the brake burst to 1.4 g and back. The reference bike's
+    /// window alone keeps the once-a-period setting it was evaluated with.
+    pub fn modulates(&self) -> bool {
+        self.tipping_share > 0.0 || self.ramp_time > 0.0
+    }
+
+    /// Share (0–1) of the asked braking let through with the rear compressed by `rear` (m);
+    /// all of it without a window.
     pub fn lift_off_share(&self, rear: f64) -> f64 {
+        if !self.has_window() {
+            return 1.0;
+        }
         if !rear.is_finite() {
             return 0.0;
         }
         ((rear - self.none_below) / (self.full_above - self.none_below)).clamp(0.0, 1.0)
+    }
+
+    /// Share (0–1) of the full torque, on a wheel of radius `radius`, that the tipping
+    /// limit allows with the centre of mass `over` the front tyre as `OverFrontTyre`
+    /// describes; all of it with the limit off, none with the weight already over the
+    /// tyre or a geometry that is not a number.
+    pub fn tipping_limit(&self, over: &OverFrontTyre, radius: f64) -> f64 {
+        if self.tipping_share <= 0.0 {
+            return 1.0;
+        }
+        let ahead = self.tipping_lookahead;
+        let behind = over.behind + over.behind_rate * ahead;
+        let height = over.height + over.height_rate * ahead;
+        let force = self.tipping_share * over.load * behind / height;
+        let share = force * radius / self.max_torque;
+        if share.is_finite() && height > 0.0 {
+            share.clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    }
+
+    /// The brake's torque (N·m) after `dt` seconds of lever towards `target` from
+    /// `current`: rising at most the full torque per `ramp_time`, falling at once.
+    pub fn ramped(&self, current: f64, target: f64, dt: f64) -> f64 {
+        if self.ramp_time <= 0.0 || target <= current {
+            return target;
+        }
+        let rise = self.max_torque * dt / self.ramp_time;
+        if rise.is_finite() {
+            target.min(current.max(0.0) + rise.max(0.0))
+        } else {
+            target
+        }
     }
 
     /// Share (0–1) of the full torque that holds a stoppie with the centre of mass `ahead`
@@ -91,6 +167,23 @@ impl FrontBrake {
     }
 }
 
+/// Where bike and rider's centre of mass is over the front tyre, in the road's frame
+/// (along the road and across it, in the plane of the wheels), as the tipping limit reads
+/// it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct OverFrontTyre {
+    /// How far (m) the centre of mass is behind the front tyre's contact along the road…
+    pub behind: f64,
+    /// … and how high (m) above the road.
+    pub height: f64,
+    /// How fast (m/s) each grows.
+    pub behind_rate: f64,
+    pub height_rate: f64,
+    /// The road's push on bike and rider (N) across it: the weight times the cosine of
+    /// the slope.
+    pub load: f64,
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -102,6 +195,107 @@ mod tests {
         assert_eq!(brake.lift_off_share(0.0), 0.0);
         assert!((brake.lift_off_share(0.0185) - 0.5).abs() < 1e-12);
         assert_eq!(brake.lift_off_share(f64::NAN), 0.0);
+    }
+
+    #[test]
+    fn without_a_window_the_compression_lets_all_through() {
+        let brake = FrontBrake {
+            full_above: 0.0,
+            none_below: 0.0,
+            ..FrontBrake::default()
+        };
+        assert_eq!(brake.lift_off_share(0.0), 1.0);
+        assert!(
+            !brake.modulates(),
+            "the reference's rules set it once a period"
+        );
+        assert!(!FrontBrake::default().modulates());
+    }
+
+    #[test]
+    fn the_tipping_limit_holds_the_brake_below_the_force_that_tips_the_bike() {
+        let brake = FrontBrake {
+            tipping_share: 0.95,
+            ..FrontBrake::default()
+        };
+        assert!(brake.modulates());
+        // 2200 N with b = h tips at 2200 N; 0.95 of that on a 0.3 m wheel is 627 N·m.
+        let level = OverFrontTyre {
+            behind: 0.6,
+            height: 0.6,
+            load: 2200.0,
+            ..OverFrontTyre::default()
+        };
+        let share = brake.tipping_limit(&level, 0.3);
+        assert!((share * brake.max_torque - 627.0).abs() < 1e-9, "{share}");
+        // Far behind: the brake's full torque; over or ahead of the tyre: none.
+        let far = OverFrontTyre {
+            behind: 3.0,
+            ..level
+        };
+        assert_eq!(brake.tipping_limit(&far, 0.3), 1.0);
+        let over = OverFrontTyre {
+            behind: -0.1,
+            ..level
+        };
+        assert_eq!(brake.tipping_limit(&over, 0.3), 0.0);
+        let flat = OverFrontTyre {
+            height: 0.0,
+            ..level
+        };
+        assert_eq!(brake.tipping_limit(&flat, 0.3), 0.0);
+        let nan = OverFrontTyre {
+            behind: f64::NAN,
+            ..level
+        };
+        assert_eq!(brake.tipping_limit(&nan, 0.3), 0.0);
+        // Off: no limit, whatever the geometry.
+        assert_eq!(FrontBrake::default().tipping_limit(&over, 0.3), 1.0);
+    }
+
+    #[test]
+    fn the_tipping_limit_reads_ahead_at_the_weights_rate() {
+        let brake = FrontBrake {
+            tipping_share: 1.0,
+            tipping_lookahead: 0.2,
+            max_torque: 10_000.0,
+            ..FrontBrake::default()
+        };
+        // Moving 0.5 m/s over the tyre and 0.1 m/s down: in 0.2 s b = 0.5, h = 0.58.
+        let diving = OverFrontTyre {
+            behind: 0.6,
+            height: 0.6,
+            behind_rate: -0.5,
+            height_rate: -0.1,
+            load: 2000.0,
+        };
+        let torque = brake.tipping_limit(&diving, 0.3) * brake.max_torque;
+        assert!(
+            (torque - 2000.0 * 0.5 / 0.58 * 0.3).abs() < 1e-9,
+            "{torque}"
+        );
+    }
+
+    #[test]
+    fn the_ramp_slows_the_rise_and_not_the_release() {
+        let brake = FrontBrake {
+            ramp_time: 0.2,
+            ..FrontBrake::default()
+        };
+        // 700 N·m in 0.2 s: 29.17 N·m in a 1/120 s step.
+        let step = brake.ramped(0.0, 700.0, 1.0 / 120.0);
+        assert!((step - 700.0 / 24.0).abs() < 1e-9, "{step}");
+        assert_eq!(
+            brake.ramped(690.0, 700.0, 1.0 / 120.0),
+            700.0,
+            "reaches the lever"
+        );
+        assert_eq!(
+            brake.ramped(700.0, 100.0, 1.0 / 120.0),
+            100.0,
+            "let off at once"
+        );
+        assert_eq!(FrontBrake::default().ramped(0.0, 700.0, 0.001), 700.0);
     }
 
     #[test]

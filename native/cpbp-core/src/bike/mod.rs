@@ -18,7 +18,9 @@ mod rider_position;
 mod suspension;
 mod wheelie_control;
 
-pub use bike_file::{parse_bike_file, read_bike_file, take_bike_argument, BikeFile};
+pub use bike_file::{
+    parse_bike_file, read_bike_file, take_bike_argument, BikeFile, REFERENCE_BIKE,
+};
 pub use controls::{
     index, Controls, ForceClass, CONTROL_DIM, DRIVE_ENTRIES, FORCE_TUNINGS, JOINT_TARGETS, LOWER,
     MAX_TORQUE, UPPER,
@@ -27,7 +29,7 @@ pub use crash::{CrashCause, CrashMonitor};
 pub use drive::{DriveInput, TOP_SPEED_KMH};
 pub use feet::Feet;
 pub use fields::{field, BikeField, FIELDS};
-pub use front_brake::FrontBrake;
+pub use front_brake::{FrontBrake, OverFrontTyre};
 pub use layout::Layout;
 pub use manual::{manual_controls, POSE_GAIN};
 pub use model::{Bike, Exploded, FootState, Part, PartShape, PeriodWatch, Placement, Shape, PARTS};

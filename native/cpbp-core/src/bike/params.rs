@@ -56,6 +56,11 @@ pub struct BikeParams {
     pub steer_limit: f64,
     /// Coulomb friction coefficient of tyres on the ground.
     pub tyre_friction: f64,
+    /// The deepest lean (rad) the turn command asks for (`TurnIntent::for_bike`): the
+    /// reference bike's 30°, where the thesis's arcade controller, with the rider upright
+    /// in the mid-plane, still holds long circles (it overshoots deeper leans and falls:
+    /// 45° within seconds, 35° at 20 km/h).
+    pub max_lean: f64,
     /// Fork and rear suspension; `None` builds the thesis's rigid frame and fork.
     pub suspension: Option<Suspension>,
     /// The drive's anti-wheelie, which reads the fork: only on a sprung bike.
@@ -85,6 +90,7 @@ impl Default for BikeParams {
             rider_masses: [9.15, 15.0, 43.35, 4.2, 3.3],
             steer_limit: 35f64.to_radians(),
             tyre_friction: 1.0,
+            max_lean: 30f64.to_radians(),
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),
             feet: Some(Feet::default()),
@@ -121,10 +127,21 @@ impl BikeParams {
         self.rider_masses.iter().sum()
     }
 
-    /// A short name for exactly these numbers (16 hex digits of an FNV-1a hash of their
-    /// exact notation): what a learned model records of the bike it was trained on.
+    /// A short name for exactly these numbers (16 hex digits of an FNV-1a hash): what a
+    /// learned model records of the bike it was trained on. It hashes, by name, the
+    /// fields (`FIELDS`) whose value differs from the reference bike's, in their exact
+    /// notation, so a field added to the model at the reference's value changes no
+    /// bike's identity and the reference's own is the hash of nothing.
     pub fn identity(&self) -> String {
-        let text = format!("{self:?}");
+        let reference = BikeParams::default();
+        let mut fields: Vec<_> = super::FIELDS.iter().collect();
+        fields.sort_by_key(|f| f.name);
+        let bits = |value: Option<f64>| value.map(f64::to_bits);
+        let text: String = fields
+            .into_iter()
+            .filter(|f| bits(f.value(self)) != bits(f.value(&reference)))
+            .map(|f| format!("{}={:?}\n", f.name, f.value(self)))
+            .collect();
         let hash = text.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
             (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
         });

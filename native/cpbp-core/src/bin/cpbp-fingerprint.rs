@@ -2,14 +2,14 @@
 //! change a single plan: `cpbp-fingerprint` rides 3 s with every planning controller in
 //! both physics models, waiting for every plan, and prints one hash per ride over every
 //! plan it made (chosen sequence, costs, resampling counts, drawn paths) and its final
-//! state (guided with the project's model, `models/policy.safetensors`, as it is). Run it
+//! state (guided with the bike's own model, `models/policy-<bike>.safetensors`, as it is). Run it
 //! before and after a change; the lines must be identical. Hashes are of
 //! the exact bits, so they hold on one platform (compare like with like: the experiment's
 //! platform fingerprint says which). `cpbp-fingerprint [N] [--bike FILE]`: N trajectories
 //! (10), another bike than the reference (a bike file, scenes/bike/bikes/*.tres).
 
-use cpbp_core::bike::{take_bike_argument, BikeParams, Placement};
-use cpbp_core::control::learned::project_policy;
+use cpbp_core::bike::{take_bike_argument, BikeParams, Placement, REFERENCE_BIKE};
+use cpbp_core::control::learned::{project_policy, LoadedPolicy};
 use cpbp_core::control::{Plan, PlanWait};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -39,10 +39,15 @@ fn main() {
         // Only another bike is named, so the reference's output stays as it always was.
         println!("bike: {} ({})", bike.name, bike.params.identity());
     }
+    let key = bike.as_ref().map_or(REFERENCE_BIKE, |b| b.key.as_str());
+    let policy = project_policy(key);
+    if let Some(why) = policy.problem() {
+        eprintln!("cpbp-fingerprint: {why}");
+    }
     let bike = bike.map_or_else(BikeParams::default, |b| b.params);
     for physics in PhysicsModel::ALL {
         for kind in ControllerKind::ALL.iter().copied().filter(|k| k.plans()) {
-            let (plans, hash) = fingerprint(physics, kind, particles, &bike);
+            let (plans, hash) = fingerprint(physics, kind, particles, (&bike, &policy));
             println!(
                 "{:<8} {:<10} {plans:>3} plans {hash:016x}",
                 physics.name(),
@@ -58,7 +63,7 @@ fn fingerprint(
     physics: PhysicsModel,
     kind: ControllerKind,
     particles: usize,
-    bike: &BikeParams,
+    (bike, policy): (&BikeParams, &LoadedPolicy),
 ) -> (usize, u64) {
     let config = SimulationConfig {
         physics,
@@ -73,7 +78,7 @@ fn fingerprint(
     let mut ride = Ride::new(sim, kind);
     ride.planner.optimizer.trajectories = particles;
     ride.planner.optimizer.threads = 2;
-    ride.planner.optimizer.policy = project_policy();
+    ride.planner.optimizer.policy = policy.clone();
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(10.0));
     let mut hash = Fnv::default();

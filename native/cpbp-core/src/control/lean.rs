@@ -4,6 +4,8 @@
 
 use glam::{DMat3, DVec3};
 
+use crate::bike::BikeParams;
+
 /// Desired lean θ (rad) for riding a circle of signed curvature `curvature` (1/m, positive
 /// to the right) at `speed` (m/s): tan θ = v²/(r g) (eq. 4.4), positive leaning right.
 pub fn desired_lean(speed: f64, curvature: f64, gravity: f64) -> f64 {
@@ -50,24 +52,29 @@ pub fn roll_lean_cost(desired: DVec3, current: DVec3, heading: DVec3, tolerance:
 }
 
 /// The player's turn: a stick value in [−1, 1] (positive right) scales the curvature up
-/// to `max_curvature`; the lean it asks for is limited to `max_lean` so the player cannot
-/// ask for more than the bike can hold at the current speed.
+/// to `max_curvature`; the lean it asks for is limited to `max_lean`, the bike's
+/// (`BikeParams::max_lean`), so the player cannot ask for more than the bike can hold at
+/// the current speed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TurnIntent {
     pub max_curvature: f64,
     pub max_lean: f64,
 }
 
-impl Default for TurnIntent {
-    /// Tightest circle 3 m in radius; at most 30° of lean: with the rider upright in the
-    /// mid-plane (no hanging off) the arcade controller overshoots deeper leans and falls
-    /// in long circles (45° within seconds; 35° at 20 km/h; 30° still at 25 km/h after
-    /// about 15 s).
-    fn default() -> Self {
+impl TurnIntent {
+    /// Tightest circle 3 m in radius; at most `bike`'s lean.
+    pub fn for_bike(bike: &BikeParams) -> Self {
         Self {
             max_curvature: 1.0 / 3.0,
-            max_lean: 30f64.to_radians(),
+            max_lean: bike.max_lean,
         }
+    }
+}
+
+impl Default for TurnIntent {
+    /// The reference bike's.
+    fn default() -> Self {
+        Self::for_bike(&BikeParams::default())
     }
 }
 
@@ -150,7 +157,13 @@ mod tests {
     }
 
     #[test]
-    fn the_stick_cannot_over_lean() {
+    fn the_stick_cannot_lean_past_the_bikes_limit() {
+        let deeper = BikeParams {
+            max_lean: 45f64.to_radians(),
+            ..BikeParams::default()
+        };
+        let lean = TurnIntent::for_bike(&deeper).lean_for(-1.0, 60.0 / 3.6, G);
+        assert!((lean + 45f64.to_radians()).abs() < 1e-12, "{lean}");
         let intent = TurnIntent::default();
         assert_eq!(intent.lean_for(0.0, 8.0, G), 0.0);
         assert!((intent.lean_for(1.0, 25.0 / 3.6, G) - 30f64.to_radians()).abs() < 1e-12);

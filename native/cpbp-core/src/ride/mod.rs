@@ -51,6 +51,7 @@ impl Ride {
         if let Some(spec) = kind.planner() {
             planner.optimizer.parameters.include(spec.parameters);
         }
+        let turn = TurnIntent::for_bike(&sim.config().bike);
         Self {
             sim,
             kind,
@@ -58,7 +59,7 @@ impl Ride {
             last_driver: None,
             intent: Intent::default(),
             raw_controls: None,
-            turn: TurnIntent::default(),
+            turn,
             planner,
             wait_for_throttle: false,
             started: false,

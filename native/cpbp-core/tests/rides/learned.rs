@@ -90,7 +90,7 @@ fn the_committed_network_holds_a_long_turn_on_the_asked_lean() {
     // Without the trim this model settled 0.26° short of a 15° turn at 20 km/h on every
     // seed; the arcade controller is 0.005° off.
     let mut learned = common::ride_in(PhysicsModel::Exact, ControllerKind::LEARNED, 20.0, 5);
-    learned.planner.optimizer.policy = project_policy();
+    learned.planner.optimizer.policy = project_policy(cpbp_core::bike::REFERENCE_BIKE);
     assert!(learned.planner.optimizer.policy.network().is_some());
     let rms = common::rms_lean_error_in_a_15_degree_turn(&mut learned);
     assert!(rms < 0.1, "RMS lean error {rms:.3}°");

@@ -45,3 +45,30 @@ fn a_rigid_bike_keeps_no_sprung_parts() {
     assert_eq!(rigid, BikeParams::default().rigid());
     assert_eq!(field("suspension/sag").unwrap().value(&rigid), None);
 }
+
+#[test]
+fn an_identity_names_what_differs_from_the_reference() {
+    let reference = BikeParams::default();
+    // The reference's is the hash of no differences (FNV-1a's offset basis).
+    assert_eq!(reference.identity(), "cbf29ce484222325");
+    let grippier = BikeParams::from_fields([("tyre_friction", 1.2)], true).unwrap();
+    assert_ne!(grippier.identity(), reference.identity());
+    assert_ne!(reference.rigid().identity(), reference.identity());
+    // A field set to the reference's value is no difference: adding a field to the model
+    // at that value changes no bike's identity.
+    let same =
+        BikeParams::from_fields([("tyre_friction", 1.2), ("max_lean_deg", 30.0)], true).unwrap();
+    assert_eq!(same.identity(), grippier.identity());
+}
+
+#[test]
+fn the_brake_window_may_be_switched_off_but_not_reversed() {
+    let off = [
+        ("front_brake/full_above", 0.0),
+        ("front_brake/none_below", 0.0),
+    ];
+    let bike = BikeParams::from_fields(off, true).unwrap();
+    assert!(!bike.front_brake.unwrap().has_window());
+    let why = BikeParams::from_fields([("front_brake/full_above", 0.01)], true).unwrap_err();
+    assert!(why.contains("none_below must be below"), "{why}");
+}

@@ -40,10 +40,6 @@ impl Bike {
     /// the only outside forces, so its change along up is the ground's blow beyond what
     /// carries the weight: about zero riding along, a spike on landing.
     pub fn momentum(&self, world: &World) -> DVec3 {
-        let mass: f64 = self
-            .own_parts()
-            .map(|p| world.body_mass(self.body(p)))
-            .sum();
-        self.center_of_mass_velocity(world) * mass
+        self.center_of_mass_velocity(world) * self.mass(world)
     }
 }

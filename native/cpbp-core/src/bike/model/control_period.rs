@@ -33,7 +33,8 @@ pub struct Exploded(pub String);
 impl Bike {
     /// Steps `world` one control period with `controls` held: the pitch `asked` for (as
     /// far as the bike's wheelie control holds it; `up` is against gravity), then
-    /// `substeps` ODE steps of `dt` each. The period stops at the first step that blows
+    /// `substeps` ODE steps of `dt` each (a modulating front brake set again before each,
+    /// `FrontBrake::modulates`). The period stops at the first step that blows
     /// the simulation up, before `watch` sees it. Returns the pitch held.
     pub fn step_control_period(
         &self,
@@ -48,6 +49,7 @@ impl Bike {
         self.apply_pitching(world, controls, held, up);
         watch.started(world);
         for _ in 0..substeps {
+            self.modulate_front_brake(world, controls, held, up, dt);
             world.step(dt);
             if let Some(reason) = self.explosion(world) {
                 return Err(Exploded(reason));

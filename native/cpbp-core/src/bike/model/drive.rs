@@ -3,9 +3,11 @@
 
 use glam::DVec3;
 
-use super::Bike;
+use super::{Bike, Part};
 use crate::bike::controls::{index, Controls, ForceClass, MAX_TORQUE};
 use crate::bike::drive::{brake_level, drives};
+use crate::bike::front_brake::{FrontBrake, OverFrontTyre};
+use crate::bike::params::GRAVITY;
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
 
@@ -90,27 +92,53 @@ impl Bike {
         }
     }
 
-    /// Sets the front brake: with the triggers' brake (the controls' rear wheel held still
+    /// Sets a modulating front brake again before a physics step of `dt` seconds
+    /// (outside a stoppie, whose hold keeps its setting for the period): the tipping
+    /// limit reads the bike as it is now and the ramp rises by `dt`. Other brakes keep the
+    /// period's setting, as the reference bike was evaluated.
+    pub(super) fn modulate_front_brake(
+        &self,
+        world: &mut World,
+        controls: &Controls,
+        held: PitchRequest,
+        up: DVec3,
+        dt: f64,
+    ) {
+        match &self.params.front_brake {
+            Some(brake) if brake.modulates() && held.stoppie == 0.0 => {
+                self.set_front_brake(world, controls, held, up, dt);
+            }
+            _ => {}
+        }
+    }
+
+    /// Sets the front brake `dt` seconds after its last setting (0 at the start of a
+    /// control period): with the triggers' brake (the controls' rear wheel held still
     /// with some force), lifting off as the rear unloads, or holding a stoppie when
     /// `held.stoppie` > 0; free otherwise. A bike without one keeps its front wheel free.
+    /// A brake that ramps may only let off at 0 s: `modulate_front_brake` raises it
+    /// before each physics step, so a bike stepped outside `step_control_period` does not
+    /// brake with a ramp.
     pub(super) fn set_front_brake(
         &self,
         world: &mut World,
         controls: &Controls,
         held: PitchRequest,
         up: DVec3,
+        dt: f64,
     ) {
         let Some(brake) = &self.params.front_brake else {
             return;
         };
         let level = brake_level(controls);
-        let share = if level == 0.0 {
-            0.0
+        let (share, ramps) = if level == 0.0 {
+            (0.0, false)
         } else if held.stoppie > 0.0 {
             let (ahead, rate) = self.weight_ahead_of_support(world, up, -held.stoppie);
-            brake.hold_share(ahead, rate)
+            (brake.hold_share(ahead, rate), false)
         } else {
-            level * brake.lift_off_share(self.suspension_compression(world).1)
+            let window = brake.lift_off_share(self.suspension_compression(world).1);
+            (level * window * self.tipping_limit(world, brake, up), true)
         };
         // ABS keeps the wheels turning, except in a stoppie the rider asked for: the hold
         // needs the wheel stopped to pitch the bike over it (the rear's ABS is off then too).
@@ -119,6 +147,43 @@ impl Bike {
         } else {
             brake.abs_floor(self.forward_speed(world, up), self.params.wheel_radius)
         };
-        world.set_motor(self.front_axle, 0, floor, brake.max_torque * share);
+        let mut torque = brake.max_torque * share;
+        if ramps && brake.modulates() {
+            let current = world.motor_state(self.front_axle).max_force[0];
+            torque = brake.ramped(current, torque, dt);
+        }
+        world.set_motor(self.front_axle, 0, floor, torque);
+    }
+
+    /// The share of the front brake's full torque its tipping limit allows now
+    /// (`FrontBrake::tipping_limit`; 1 with the limit off). The road runs through both
+    /// tyres' contacts; with the rear off the ground the bike is already tipping, and the
+    /// brake lets off.
+    fn tipping_limit(&self, world: &World, brake: &FrontBrake, up: DVec3) -> f64 {
+        if brake.tipping_share <= 0.0 {
+            return 1.0;
+        }
+        let (rear_down, front_down) = self.wheel_contacts(world);
+        if !rear_down {
+            return 0.0;
+        }
+        if !front_down {
+            return 1.0;
+        }
+        let (rear, front) = self.tyre_contacts(world, up);
+        let heading = self.heading(world, up);
+        let along = (front - rear).normalize_or(heading);
+        let across = heading.cross(up).cross(along).normalize_or(up);
+        let weight = self.center_of_mass(world) - front;
+        let velocity = self.center_of_mass_velocity(world)
+            - world.body_linear_velocity(self.body(Part::FrontWheel));
+        let over = OverFrontTyre {
+            behind: -weight.dot(along),
+            height: weight.dot(across),
+            behind_rate: -velocity.dot(along),
+            height_rate: velocity.dot(across),
+            load: self.mass(world) * GRAVITY * across.dot(up),
+        };
+        brake.tipping_limit(&over, self.params.wheel_radius)
     }
 }

@@ -215,7 +215,7 @@ impl Bike {
             controls.max_torque(ForceClass::Steering),
         );
         self.set_rear_motor(world, controls, held, up);
-        self.set_front_brake(world, controls, held, up);
+        self.set_front_brake(world, controls, held, up, 0.0);
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
         for axis in 0..3 {
@@ -288,6 +288,13 @@ impl Bike {
     /// Mass-weighted centre of all bodies.
     pub fn center_of_mass(&self, world: &World) -> DVec3 {
         self.mass_weighted(world, |b| world.body_position(b))
+    }
+
+    /// Bike and rider's mass (kg): the bodies of the parts that have their own.
+    pub fn mass(&self, world: &World) -> f64 {
+        self.own_parts()
+            .map(|part| world.body_mass(self.body(part)))
+            .sum()
     }
 
     /// Mass-weighted velocity of all bodies: only external forces change it.

@@ -1,8 +1,8 @@
 //! The learned controller's cost (issue 34): one control step's features and network
-//! against a plan's, with the project's model as `make train` left it.
+//! against a plan's, with the bike's own model as `make train` left it.
 
 use cpbp_core::bike::DriveInput;
-use cpbp_core::control::learned::{features, project_policy};
+use cpbp_core::control::learned::features;
 use cpbp_core::control::Goal;
 use cpbp_core::ride::ControllerKind;
 use cpbp_core::simulation::Simulation;
@@ -12,7 +12,7 @@ use super::{median, time_per_call};
 
 /// Prints the network's cost per control step and what the planners cost against it.
 pub fn inference_cost(sim: &Simulation, row: impl Fn(&str, String)) {
-    let policy = project_policy();
+    let policy = super::bike_policy();
     let Some(network) = policy.network() else {
         row(
             "learned controller: one control step",

@@ -13,7 +13,10 @@ use planning::{planning_ms, planning_table};
 use std::sync::{Arc, OnceLock};
 use std::time::{Duration, Instant};
 
-use cpbp_core::bike::{take_bike_argument, BikeParams, Controls, DriveInput, Placement};
+use cpbp_core::bike::{
+    take_bike_argument, BikeParams, Controls, DriveInput, Placement, REFERENCE_BIKE,
+};
+use cpbp_core::control::learned::{project_policy, LoadedPolicy};
 use cpbp_core::control::PlanWait;
 use cpbp_core::grounds::RollingBumps;
 use cpbp_core::ode::{Mass, World};
@@ -30,6 +33,13 @@ const ODE_DT: f64 = 1.0 / 120.0;
 
 /// The bike every figure rides (`--bike FILE`; the reference bike without it).
 static BIKE: OnceLock<BikeParams> = OnceLock::new();
+/// Its file's name, which names its learned model (`REFERENCE_BIKE` without `--bike`).
+static BIKE_KEY: OnceLock<String> = OnceLock::new();
+
+/// The learned network of the bike ridden (guided plans without one, and says so).
+fn bike_policy() -> LoadedPolicy {
+    project_policy(BIKE_KEY.get().map_or(REFERENCE_BIKE, String::as_str))
+}
 
 fn main() {
     let info = cpbp_core::build_info();
@@ -44,6 +54,10 @@ fn main() {
         Ok(Some(bike)) => {
             println!("bike: {} ({})", bike.name, bike.params.identity());
             BIKE.get_or_init(|| bike.params);
+            BIKE_KEY.get_or_init(|| bike.key);
+            if let Some(why) = bike_policy().problem() {
+                println!("{why}");
+            }
         }
         Ok(None) => {}
         Err(why) => {

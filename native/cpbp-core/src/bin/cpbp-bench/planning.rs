@@ -150,7 +150,7 @@ pub fn planning_ms(
     let config = PlanningConfig {
         trajectories: n,
         threads,
-        policy: cpbp_core::control::learned::project_policy(),
+        policy: crate::bike_policy(),
         ..PlanningConfig::default()
     }
     .rolling_out_in(model);

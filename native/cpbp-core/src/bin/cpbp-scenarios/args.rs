@@ -4,7 +4,6 @@
 use std::collections::HashSet;
 use std::path::PathBuf;
 
-use cpbp_core::control::learned::project_model;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::ControllerKind;
 
@@ -18,8 +17,8 @@ pub(crate) struct Args {
     pub physics: PhysicsModel,
     /// Rows already saved ("scenario,controller,N,seed,physics"): not ridden again.
     pub skip: HashSet<String>,
-    /// The learned network's model file (learned, guided).
-    pub model: PathBuf,
+    /// The learned network's model file (learned, guided); none: the bike's own.
+    pub model: Option<PathBuf>,
     /// The bike file ridden (a game's scenes/bike/bikes/*.tres); none: the reference bike.
     pub bike: Option<PathBuf>,
 }
@@ -118,7 +117,7 @@ pub(crate) fn parse(arguments: Vec<String>) -> Result<Args, String> {
         scenarios,
         physics,
         skip,
-        model: value("--model")?.map_or_else(project_model, PathBuf::from),
+        model: value("--model")?.map(PathBuf::from),
         bike: value("--bike")?.map(PathBuf::from),
     })
 }

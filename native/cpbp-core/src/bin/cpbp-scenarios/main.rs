@@ -23,8 +23,8 @@ mod stops;
 
 use std::sync::{Arc, OnceLock};
 
-use cpbp_core::bike::{read_bike_file, BikeParams, DriveInput, Placement};
-use cpbp_core::control::learned::LoadedPolicy;
+use cpbp_core::bike::{read_bike_file, BikeParams, DriveInput, Placement, REFERENCE_BIKE};
+use cpbp_core::control::learned::{project_policy, LoadedPolicy};
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -80,25 +80,37 @@ fn main() {
             std::process::exit(2);
         }
     };
-    if args.controllers.iter().any(|k| k.uses_network()) {
-        let policy = LoadedPolicy::load(&args.model);
-        if let Some(why) = policy.problem() {
-            eprintln!("cpbp-scenarios: {why}");
-            std::process::exit(2);
-        }
-        POLICY.get_or_init(|| policy);
-    }
+    let mut key = REFERENCE_BIKE.to_owned();
     if let Some(path) = &args.bike {
         match read_bike_file(path) {
             Ok(bike) => {
                 eprintln!("cpbp-scenarios: riding {} ({})", bike.name, path.display());
                 BIKE.get_or_init(|| bike.params);
+                key = bike.key;
             }
             Err(why) => {
                 eprintln!("cpbp-scenarios: {why}");
                 std::process::exit(2);
             }
         }
+    }
+    if args.controllers.iter().any(|k| k.uses_network()) {
+        let policy = match &args.model {
+            Some(path) => LoadedPolicy::load(path),
+            None => project_policy(&key),
+        };
+        if let Some(why) = policy.problem() {
+            eprintln!("cpbp-scenarios: {why}");
+            // The learned controller is the network; guided plans without it.
+            if args
+                .controllers
+                .iter()
+                .any(|k| k.uses_network() && !k.plans())
+            {
+                std::process::exit(2);
+            }
+        }
+        POLICY.get_or_init(|| policy);
     }
     println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms");
     for &scenario in &args.scenarios {

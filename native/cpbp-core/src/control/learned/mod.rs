@@ -16,7 +16,7 @@ pub use network::{
     f32_bytes, f32_values, output_entries, output_names, ModelError, NetworkParts,
     NonFiniteFeature, PolicyNetwork, MODEL_FORMAT, MODEL_FORMAT_VERSION, OUTPUT_COUNT,
 };
-pub use shared::{project_model, project_policy, LoadedPolicy, MODEL_PATH};
+pub use shared::{model_path, no_model_of_its_own, project_model, project_policy, LoadedPolicy};
 pub use sorted_header::{serialize_sorted, sort_header};
 pub use trim::{LeanTrim, TRIM_GAIN, TRIM_LIMIT, TRIM_MIN_SPEED, TRIM_WINDOW};
 

@@ -4,29 +4,53 @@
 
 use std::fmt;
 use std::path::{Path, PathBuf};
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex};
 
 use super::{ModelError, PolicyNetwork};
 use crate::bike::BikeParams;
 
-/// Where the model lives in the project (`res://` in the game; from the repository's
-/// root for the tools). `make train` writes it there.
-pub const MODEL_PATH: &str = "models/policy.safetensors";
-
-/// The model file in this source tree: what the headless tools (the scenario tool, the
-/// benchmarks, the fingerprint) ride with; the game reads `res://` + [`MODEL_PATH`].
-pub fn project_model() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(MODEL_PATH)
+/// Where a bike's learned model lives in the project, by the bike file's name without
+/// `.tres` (`BikeFile::key`; `REFERENCE_BIKE` for the reference bike): a model belongs
+/// to the bike it was trained on, so each bike file has its own, and `make train BIKE=`
+/// writes it there (`res://` + this in the game; from the repository's root for the
+/// tools).
+pub fn model_path(bike: &str) -> String {
+    format!("models/policy-{bike}.safetensors")
 }
 
-/// The network in [`project_model`], loaded on the first call and shared after.
-pub fn project_policy() -> LoadedPolicy {
-    static POLICY: OnceLock<LoadedPolicy> = OnceLock::new();
-    POLICY
-        .get_or_init(|| LoadedPolicy::load(&project_model()))
-        .clone()
+/// The model file of the bike called `bike` in this source tree: what the headless
+/// tools (the scenario tool, the benchmarks, the fingerprint) ride with.
+pub fn project_model(bike: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(model_path(bike))
+}
+
+/// The network of the bike called `bike` (`project_model`), loaded on the first call and
+/// shared after; a bike without a model of its own gets the reason, naming the bike.
+pub fn project_policy(bike: &str) -> LoadedPolicy {
+    static POLICIES: Mutex<Vec<(String, LoadedPolicy)>> = Mutex::new(Vec::new());
+    let mut loaded = POLICIES.lock().unwrap_or_else(|p| p.into_inner());
+    if let Some((_, policy)) = loaded.iter().find(|(name, _)| name == bike) {
+        return policy.clone();
+    }
+    let path = project_model(bike);
+    let policy = if path.exists() {
+        LoadedPolicy::load(&path)
+    } else {
+        LoadedPolicy::missing(no_model_of_its_own(bike))
+    };
+    loaded.push((bike.to_owned(), policy.clone()));
+    policy
+}
+
+/// What a bike without a model of its own is told, where the game and the tools load it.
+pub fn no_model_of_its_own(bike: &str) -> String {
+    format!(
+        "the bike {bike} has no learned model of its own ({} is missing; make train \
+         BIKE=<its file> trains one): guided plans without it and learned is not offered",
+        model_path(bike)
+    )
 }
 
 /// A loaded network, or why none could be.

@@ -260,7 +260,8 @@ fn the_features_of_a_bike_at_rest_read_as_expected() {
 #[test]
 fn the_committed_model_is_in_the_form_make_train_writes_it() {
     // Sorted header: a rerun of `make train` can be compared with it byte for byte.
-    let bytes = std::fs::read(super::project_model()).expect("the committed model");
+    let bytes = std::fs::read(super::project_model(crate::bike::REFERENCE_BIKE))
+        .expect("the committed model");
     assert!(
         super::sort_header(bytes.clone()) == bytes,
         "header not sorted"
@@ -281,4 +282,15 @@ fn a_model_says_which_bike_it_was_trained_on() {
     // A model written before bikes were recorded was trained on the reference bike.
     let older = LoadedPolicy::parse(&with_metadata("bike", ""), "older");
     assert_eq!(older.other_bike(&reference), None);
+}
+
+#[test]
+fn a_bike_without_a_model_of_its_own_is_told_so() {
+    let missing = super::project_policy("no_such_bike");
+    let why = missing.problem().expect("no model");
+    let path = super::model_path("no_such_bike");
+    assert!(why.contains(&format!("{path} is missing")), "{why}");
+    assert!(why.contains("make train BIKE="), "{why}");
+    let reference = super::project_policy(crate::bike::REFERENCE_BIKE);
+    assert!(reference.network().is_some(), "{:?}", reference.problem());
 }
