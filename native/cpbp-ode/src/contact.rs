@@ -37,6 +37,8 @@ pub(crate) struct CollideContext<'a> {
     pub(crate) contacts: ffi::dJointGroupID,
     pub(crate) surface: SurfaceParams,
     pub(crate) touching_static: &'a mut Vec<bool>,
+    /// Per body, the sum of the normals (ground to body) of its contacts with the terrain.
+    pub(crate) ground_normals: &'a mut Vec<Vec3>,
     pub(crate) tyres: &'a [Tyre],
     pub(crate) feet: &'a mut [Foot],
     /// The step's length (s): a foot's spring–damper depends on it.
@@ -198,8 +200,16 @@ pub(crate) unsafe extern "C" fn near_callback(
             ffi::dJointAttach(joint, b1, b2);
         }
         if !made.is_empty() && (b1.is_null() || b2.is_null()) {
-            let body = if b1.is_null() { b2 } else { b1 };
-            context.touching_static[ffi::dBodyGetData(body) as usize] = true;
+            // ODE's normal points into o1: towards the body when the body is o1's.
+            let (body, sign) = if b1.is_null() { (b2, -1.0) } else { (b1, 1.0) };
+            let index = ffi::dBodyGetData(body) as usize;
+            context.touching_static[index] = true;
+            let sum = &mut context.ground_normals[index];
+            for contact in &made {
+                for (axis, total) in sum.iter_mut().enumerate() {
+                    *total += sign * contact.normal[axis];
+                }
+            }
         }
     }
 }

@@ -45,6 +45,10 @@ pub struct WorldState {
     /// its own history.
     pub touching_static: Vec<bool>,
     pub feet_touching: Vec<bool>,
+    /// Per body, the sum of its contacts' normals with the terrain in the last step (from
+    /// the ground towards the body; zero where it touched none): the slope under a wheel,
+    /// which a step may read before it runs, as it reads the flags above.
+    pub ground_normals: Vec<Vec3>,
 }
 
 /// Restoring a snapshot into a world of a different shape.

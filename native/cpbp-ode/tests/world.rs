@@ -48,6 +48,27 @@ fn a_sphere_comes_to_rest_on_a_plane_with_either_solver() {
 }
 
 #[test]
+fn a_body_knows_the_slope_it_stands_on_and_a_snapshot_carries_it() {
+    let mut world = World::new(DVec3::new(0.0, -G, 0.0));
+    // A road falling 15° towards +x; the ball rolls down it.
+    let slope = DVec3::new(15f64.to_radians().sin(), 15f64.to_radians().cos(), 0.0);
+    world.add_plane(slope, 0.0);
+    let ball = world.add_body(Mass::sphere(2.0, 0.25), DVec3::new(0.0, 0.26, 0.0));
+    world.add_sphere(0.25, Some(ball));
+    assert_eq!(world.body_ground_normal(ball), None, "not stepped yet");
+    for _ in 0..10 {
+        world.step(1.0 / 120.0);
+    }
+    let normal = world.body_ground_normal(ball).expect("on the road");
+    assert!((normal - slope).length() < 1e-9, "{normal}");
+    let saved = world.snapshot();
+    world.forget_contacts();
+    assert_eq!(world.body_ground_normal(ball), None);
+    world.restore(&saved).unwrap();
+    assert_eq!(world.body_ground_normal(ball), Some(normal));
+}
+
+#[test]
 fn many_threads_step_their_own_worlds_with_contacts_at_once() {
     // The rollouts step one world per thread; this must be race-free (no shared
     // threading dispatcher, thread-local collision caches) and give identical results.

@@ -49,6 +49,12 @@ pub struct FrontBrake {
     /// in a tenth of a second or two rather than striking it. It only slows the rise;
     /// letting off (the rider, the lift-off limit) is at once.
     pub ramp_time: f64,
+    /// Below this forward speed (m/s; 0: never) the brake eases off towards `ease_to` of
+    /// itself at a standstill, as a rider eases the lever in the last metre of a stop:
+    /// stopping from a full brake the fork, deep in its travel, springs the bike back on
+    /// its pegs and feet, and the rear lifts as the feet come down.
+    pub ease_below: f64,
+    pub ease_to: f64,
     /// Holding a stoppie: brake share per metre the centre of mass is behind the shifted
     /// support point (1/m) and per m/s it falls back (s/m).
     pub hold_gain: f64,
@@ -74,6 +80,8 @@ impl Default for FrontBrake {
             tipping_share: 0.0,
             tipping_lookahead: 0.0,
             ramp_time: 0.0,
+            ease_below: 0.0,
+            ease_to: 1.0,
             hold_gain: 3.6,
             hold_rate_gain: 0.9,
             rear_share: 0.3,
@@ -105,7 +113,7 @@ impl FrontBrake {
     /// off a period late and the brake burst to 1.4 g and back. The reference bike's
     /// window alone keeps the once-a-period setting it was evaluated with.
     pub fn modulates(&self) -> bool {
-        self.tipping_share > 0.0 || self.ramp_time > 0.0
+        self.tipping_share > 0.0 || self.ramp_time > 0.0 || self.ease_below > 0.0
     }
 
     /// Share (0–1) of the asked braking let through with the rear compressed by `rear` (m);
@@ -137,6 +145,20 @@ impl FrontBrake {
             share.clamp(0.0, 1.0)
         } else {
             0.0
+        }
+    }
+
+    /// Share (0–1) of the lever the brake gives at forward speed `speed` (m/s): all of it
+    /// from `ease_below` up, `ease_to` of it at a standstill, in proportion between.
+    pub fn eased(&self, speed: f64) -> f64 {
+        if self.ease_below <= 0.0 {
+            return 1.0;
+        }
+        let share = self.ease_to + (1.0 - self.ease_to) * speed.abs() / self.ease_below;
+        if share.is_finite() {
+            share.min(1.0)
+        } else {
+            1.0
         }
     }
 
@@ -274,6 +296,25 @@ mod tests {
             (torque - 2000.0 * 0.5 / 0.58 * 0.3).abs() < 1e-9,
             "{torque}"
         );
+    }
+
+    #[test]
+    fn the_brake_eases_in_the_last_metre_when_asked() {
+        assert_eq!(
+            FrontBrake::default().eased(0.0),
+            1.0,
+            "not on the reference bike"
+        );
+        let brake = FrontBrake {
+            ease_below: 2.0,
+            ease_to: 0.4,
+            ..FrontBrake::default()
+        };
+        assert_eq!(brake.eased(5.0), 1.0);
+        assert!((brake.eased(1.0) - 0.7).abs() < 1e-12);
+        assert!((brake.eased(-1.0) - 0.7).abs() < 1e-12, "rolling back too");
+        assert!((brake.eased(0.0) - 0.4).abs() < 1e-12);
+        assert_eq!(brake.eased(f64::NAN), 1.0);
     }
 
     #[test]

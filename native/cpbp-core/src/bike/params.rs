@@ -52,6 +52,10 @@ pub struct BikeParams {
     pub swingarm_mass: f64,
     /// Rider segments: lower leg, upper leg, torso with head, upper arm, lower arm (kg).
     pub rider_masses: [f64; 5],
+    /// How hard the rider braces with the shoulders and elbows while braking: the share
+    /// of the arms' full strength reached at the full brake (`Bike::braced_arms`; 0: the
+    /// arms as the physics model has them, the reference bike's).
+    pub rider_brace: f64,
     /// Largest steering angle either way (rad).
     pub steer_limit: f64,
     /// Coulomb friction coefficient of tyres on the ground.
@@ -88,6 +92,7 @@ impl Default for BikeParams {
             frame_mass: 108.0,
             swingarm_mass: 6.0,
             rider_masses: [9.15, 15.0, 43.35, 4.2, 3.3],
+            rider_brace: 0.0,
             steer_limit: 35f64.to_radians(),
             tyre_friction: 1.0,
             max_lean: 30f64.to_radians(),

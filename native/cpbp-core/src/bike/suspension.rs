@@ -28,8 +28,12 @@ pub struct Suspension {
     pub front_travel: f64,
     /// Rear travel at the wheel (m).
     pub rear_travel: f64,
-    /// Share of each end's travel used at rest with the rider aboard.
+    /// Share of the fork's travel used at rest with the rider aboard…
     pub sag: f64,
+    /// … and of the rear's. Riders set the rear a little deeper (setup guides: 25–30 %
+    /// front, 30–35 % rear); braking hard the rear unloads and extends by its sag, and a
+    /// rear that tops out before the front has dived lifts its wheel off the road.
+    pub rear_sag: f64,
     /// Fork spring rate, both legs together, along the tubes (N/m).
     pub front_rate: f64,
     /// Rear spring rate at the wheel (N/m): the shock's rate over the lever ratio squared.
@@ -44,6 +48,7 @@ impl Default for Suspension {
             front_travel: 0.13,
             rear_travel: 0.13,
             sag: 0.30,
+            rear_sag: 0.30,
             front_rate: 18_000.0,
             rear_rate: 20_000.0,
             damping_ratio: 0.4,
@@ -61,7 +66,7 @@ impl Suspension {
     /// The swingarm's travel as an angle about the pivot (rad; extension positive, 0 as
     /// built) for a swingarm reaching `reach` (m) behind the pivot.
     pub fn rear_travel_range(&self, reach: f64) -> (f64, f64) {
-        let sag = self.sag * self.rear_travel / reach;
+        let sag = self.rear_sag * self.rear_travel / reach;
         (sag - self.rear_travel / reach, sag)
     }
 

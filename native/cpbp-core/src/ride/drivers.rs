@@ -216,7 +216,11 @@ impl Controller for PlannerDriver {
         }
         self.trajectories = config.trajectories;
         let late_before = self.anytime.stats.late;
-        let controls = self.anytime.controls(state.sim, &state.goal, &config);
+        let mut controls = self.anytime.controls(state.sim, &state.goal, &config);
+        // The triggers act at once, as they do for every controller: the plan was made
+        // a step ago, with the triggers as they were then.
+        let radius = state.sim.bike().params().wheel_radius;
+        state.goal.drive.apply(radius, &mut controls);
         self.note_step(self.anytime.stats.late > late_before);
         self.note_failure(&config.policy);
         controls

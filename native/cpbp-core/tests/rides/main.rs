@@ -23,5 +23,6 @@ mod ride;
 mod rider_position;
 mod sampling_planners;
 mod stopping;
+mod street_brakes;
 mod suspension;
 mod wheelie_control;

@@ -54,6 +54,8 @@ pub struct World {
     surface: SurfaceParams,
     /// Per body: whether it touched a static geom (terrain) in the last step.
     touching_static: Vec<bool>,
+    /// Per body: the sum of its terrain contacts' normals in the last step (ground to body).
+    ground_normals: Vec<crate::Vec3>,
     /// Torus tyres: sphere geoms whose contacts are moved to where a torus would touch.
     tyres: Vec<Tyre>,
     /// Feet: sphere geoms that stand on the terrain like a rider's foot (`add_foot`).
@@ -106,6 +108,7 @@ impl World {
                 geoms: Vec::new(),
                 surface: SurfaceParams::default(),
                 touching_static: Vec::new(),
+                ground_normals: Vec::new(),
                 tyres: Vec::new(),
                 feet: Vec::new(),
                 shared_meshes: Vec::new(),
@@ -146,6 +149,7 @@ impl World {
             ffi::dBodySetData(body, self.bodies.len() as *mut c_void);
             self.bodies.push(body);
             self.touching_static.push(false);
+            self.ground_normals.push([0.0; 3]);
         }
         BodyId(self.bodies.len() - 1)
     }
@@ -186,6 +190,13 @@ impl World {
     /// Whether a body touched a static geom (terrain) during the last step.
     pub fn body_touches_static(&self, body: BodyId) -> bool {
         self.touching_static[body.0]
+    }
+
+    /// The terrain's normal (unit, from the ground towards the body) under a body's
+    /// contacts in the last step, averaged over them; none if it touched no terrain.
+    pub fn body_ground_normal(&self, body: BodyId) -> Option<DVec3> {
+        let sum = DVec3::from_array(self.ground_normals[body.0]);
+        (self.touching_static[body.0] && sum.length_squared() > 0.0).then(|| sum.normalize())
     }
 
     /// Number of bodies.
@@ -248,6 +259,7 @@ impl World {
             random_seed: self.random_seed,
             touching_static: self.touching_static.clone(),
             feet_touching: self.feet.iter().map(|f| f.touching).collect(),
+            ground_normals: self.ground_normals.clone(),
         }
     }
 
@@ -257,6 +269,7 @@ impl World {
         if state.bodies.len() != self.bodies.len()
             || state.motors.len() != self.joints.len()
             || state.touching_static.len() != self.bodies.len()
+            || state.ground_normals.len() != self.bodies.len()
             || state.feet_touching.len() != self.feet.len()
         {
             return Err(StateMismatch {
@@ -282,6 +295,7 @@ impl World {
         }
         self.random_seed = state.random_seed;
         self.touching_static.copy_from_slice(&state.touching_static);
+        self.ground_normals.copy_from_slice(&state.ground_normals);
         for (foot, &touching) in self.feet.iter_mut().zip(&state.feet_touching) {
             foot.touching = touching;
         }
@@ -298,6 +312,7 @@ impl World {
     /// must not step on the history of the ride before it.
     pub fn forget_contacts(&mut self) {
         self.touching_static.iter_mut().for_each(|t| *t = false);
+        self.ground_normals.iter_mut().for_each(|n| *n = [0.0; 3]);
         self.feet.iter_mut().for_each(|f| f.touching = false);
     }
 
@@ -313,6 +328,7 @@ impl World {
             contacts: self.contacts,
             surface: self.surface,
             touching_static: &mut self.touching_static,
+            ground_normals: &mut self.ground_normals,
             tyres: &self.tyres,
             feet: &mut self.feet,
             dt,

@@ -138,7 +138,11 @@ impl Bike {
             (brake.hold_share(ahead, rate), false)
         } else {
             let window = brake.lift_off_share(self.suspension_compression(world).1);
-            (level * window * self.tipping_limit(world, brake, up), true)
+            let eased = brake.eased(self.forward_speed(world, up));
+            (
+                level * window * eased * self.tipping_limit(world, brake, up),
+                true,
+            )
         };
         // ABS keeps the wheels turning, except in a stoppie the rider asked for: the hold
         // needs the wheel stopped to pitch the bike over it (the rear's ABS is off then too).
@@ -156,33 +160,30 @@ impl Bike {
     }
 
     /// The share of the front brake's full torque its tipping limit allows now
-    /// (`FrontBrake::tipping_limit`; 1 with the limit off). The road runs through both
-    /// tyres' contacts; with the rear off the ground the bike is already tipping, and the
-    /// brake lets off.
+    /// (`FrontBrake::tipping_limit`; 1 with the limit off). The road is the terrain under
+    /// the front tyre as its contacts met it in the last step (`World::body_ground_normal`),
+    /// so the rule reads the slope and needs nothing of the rear wheel, which skims the
+    /// road near the limit; a front wheel in the air brakes nothing.
     fn tipping_limit(&self, world: &World, brake: &FrontBrake, up: DVec3) -> f64 {
         if brake.tipping_share <= 0.0 {
             return 1.0;
         }
-        let (rear_down, front_down) = self.wheel_contacts(world);
-        if !rear_down {
-            return 0.0;
-        }
-        if !front_down {
+        let front_wheel = self.body(Part::FrontWheel);
+        let Some(normal) = world.body_ground_normal(front_wheel) else {
             return 1.0;
-        }
-        let (rear, front) = self.tyre_contacts(world, up);
+        };
         let heading = self.heading(world, up);
-        let along = (front - rear).normalize_or(heading);
-        let across = heading.cross(up).cross(along).normalize_or(up);
-        let weight = self.center_of_mass(world) - front;
-        let velocity = self.center_of_mass_velocity(world)
-            - world.body_linear_velocity(self.body(Part::FrontWheel));
+        let along = (heading - normal * heading.dot(normal)).normalize_or(heading);
+        let (_, contact) = self.tyre_contacts(world, normal);
+        let weight = self.center_of_mass(world) - contact;
+        let velocity =
+            self.center_of_mass_velocity(world) - world.body_linear_velocity(front_wheel);
         let over = OverFrontTyre {
             behind: -weight.dot(along),
-            height: weight.dot(across),
+            height: weight.dot(normal),
             behind_rate: -velocity.dot(along),
-            height_rate: velocity.dot(across),
-            load: self.mass(world) * GRAVITY * across.dot(up),
+            height_rate: velocity.dot(normal),
+            load: self.mass(world) * GRAVITY * normal.dot(up),
         };
         brake.tipping_limit(&over, self.params.wheel_radius)
     }

@@ -218,9 +218,10 @@ impl Bike {
         self.set_front_brake(world, controls, held, up, 0.0);
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
+        let braced = self.braced_arms(controls, arms);
         for axis in 0..3 {
             world.set_motor(self.waist, axis, c[index::WAIST + axis], waist);
-            world.set_motor(self.shoulder, axis, c[index::SHOULDER + axis], arms);
+            world.set_motor(self.shoulder, axis, c[index::SHOULDER + axis], braced);
             world.set_motor(self.wrist, axis, c[index::WRIST + axis], arms);
         }
         world.set_motor(
@@ -229,7 +230,7 @@ impl Bike {
             c[index::KNEE],
             controls.max_torque(ForceClass::Knee),
         );
-        world.set_motor(self.elbow, 0, c[index::ELBOW], arms);
+        world.set_motor(self.elbow, 0, c[index::ELBOW], braced);
     }
 
     /// Puts every body back in its built pose at `placement`, at rest.

@@ -1,10 +1,11 @@
 //! The rider's side of a built bike: joint angles, the pose servo every controller starts
-//! from, and where the rider's weight is.
+//! from, where the rider's weight is, and how hard the arms hold while braking.
 
 use glam::DVec3;
 
 use super::{Bike, Part};
-use crate::bike::controls::{index, Controls};
+use crate::bike::controls::{index, Controls, ForceClass, MAX_TORQUE};
+use crate::bike::drive::brake_level;
 use crate::bike::rider_position::RIDER_JOINTS;
 use crate::ode::World;
 
@@ -61,5 +62,23 @@ impl Bike {
         let local =
             self.frame_rotation(world).inverse() * (now / mass - world.body_position(frame));
         local - frame_rest_rotation.inverse() * (rest / mass - frame_rest)
+    }
+
+    /// The shoulders' and elbows' torque limit (N·m): `arms`, or braking, towards the
+    /// bike's `rider_brace` share of the arms' full strength (`MAX_TORQUE`) with the
+    /// brake's level. A rider braking hard holds the body up against the deceleration,
+    /// with the knees on the tank and the arms; this rider has no knees on the tank, and
+    /// with the exact model's weak arms (`PhysicsModel::arm_strength`) the body pivots on
+    /// the pegs towards the bars, carrying the centre of mass 0.1–0.15 m forward over the
+    /// front tyre, which lowers what tips the bike by a sixth. The wrists stay as they
+    /// are, so the bar still steers. None on the reference bike (`rider_brace` 0).
+    pub(super) fn braced_arms(&self, controls: &Controls, arms: f64) -> f64 {
+        let brace = self.params.rider_brace;
+        let level = brake_level(controls);
+        if brace <= 0.0 || level.is_nan() || level <= 0.0 {
+            return arms;
+        }
+        let braced = MAX_TORQUE[ForceClass::Arms as usize] * brace;
+        arms + (braced - arms).max(0.0) * level.min(1.0)
     }
 }

@@ -1,0 +1,135 @@
+//! The game's street bike (scenes/bike/bikes/street_390.tres) brakes as a road bike with
+//! ABS does: a full brake from 60 km/h averages 0.9 g or more from the moment the trigger
+//! is pulled, the rear tyre stays on the road, no step of it speeds the bike up, and it
+//! ends standing; with the weight forward the same trigger still lifts a stoppie.
+
+use std::path::Path;
+
+use crate::common;
+
+use cpbp_core::bike::{read_bike_file, BikeParams, DriveInput, RiderPosition};
+use cpbp_core::control::PlanWait;
+use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::simulation::SimulationConfig;
+
+fn street_bike() -> BikeParams {
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../scenes/bike/bikes/street_390.tres"
+    );
+    read_bike_file(Path::new(file)).unwrap().params
+}
+
+/// A `kind` ride of the street bike at `kmh`, planners at N = 5 waiting for every plan.
+fn street_ride(kind: ControllerKind, kmh: f64) -> Ride {
+    let sim = common::flat_ride_with(SimulationConfig {
+        bike: street_bike(),
+        ..SimulationConfig::default()
+    });
+    let mut ride = Ride::new(sim, kind);
+    ride.planner.optimizer.trajectories = 5;
+    ride.planner.wait = PlanWait::EveryPlan;
+    ride.set_intent(Intent::cruise(kmh));
+    common::ride(&mut ride, kmh / 3.6 / 2.0 + 3.0, 0.0);
+    ride
+}
+
+fn speed(ride: &Ride) -> f64 {
+    let sim = ride.sim();
+    sim.bike().forward_speed(sim.world(), sim.up())
+}
+
+/// What a full brake did: its mean deceleration (g, v₀²/2d from the trigger), the
+/// highest the rear tyre rose off the road (m) and the least a step slowed the bike (g).
+struct Stop {
+    mean_g: f64,
+    rear_lift: f64,
+    least_step_g: f64,
+}
+
+fn full_brake(ride: &mut Ride) -> Stop {
+    let dt = ride.sim().config().control_dt;
+    let g = ride.sim().config().gravity.length();
+    let start = speed(ride);
+    let mut brake = *ride.intent();
+    brake.drive = DriveInput {
+        throttle: 0.0,
+        brake: 1.0,
+        max_speed: brake.drive.max_speed,
+    };
+    ride.set_intent(brake);
+    let (mut distance, mut last) = (0.0, start);
+    let mut stop = Stop {
+        mean_g: 0.0,
+        rear_lift: 0.0,
+        least_step_g: f64::INFINITY,
+    };
+    while last > 0.05 {
+        ride.step();
+        let sim = ride.sim();
+        assert_eq!(sim.crashed(), None, "fell braking");
+        let v = speed(ride);
+        distance += (last + v.max(0.0)) / 2.0 * dt;
+        stop.least_step_g = stop.least_step_g.min((last - v) / dt / g);
+        // The road is flat at height 0.
+        let rear = sim.bike().tyre_contacts(sim.world(), sim.up()).0;
+        stop.rear_lift = stop.rear_lift.max(rear.dot(sim.up()));
+        last = v;
+    }
+    stop.mean_g = start * start / (2.0 * distance) / g;
+    stop
+}
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
+fn a_full_brake_from_60_averages_09_g_with_the_rear_on_the_road_and_ends_standing() {
+    for kind in [ControllerKind::ARCADE, ControllerKind::COMBINED] {
+        let mut ride = street_ride(kind, 60.0);
+        let stop = full_brake(&mut ride);
+        assert!(stop.mean_g >= 0.9, "{kind:?}: {:.3} g", stop.mean_g);
+        assert!(
+            stop.rear_lift < 0.001,
+            "{kind:?}: the rear rose {:.1} mm",
+            stop.rear_lift * 1000.0
+        );
+        assert!(
+            stop.least_step_g > 0.0,
+            "{kind:?}: a step sped up at {:.2} g",
+            stop.least_step_g
+        );
+        common::ride(&mut ride, 3.0, 0.0);
+        assert_eq!(ride.sim().crashed(), None, "{kind:?} fell standing");
+        assert!(common::lean(&ride).abs() < 5f64.to_radians());
+    }
+}
+
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
+fn the_weight_forward_still_lifts_a_stoppie_on_the_street_bike() {
+    let mut ride = street_ride(ControllerKind::ARCADE, 20.0);
+    ride.set_intent(Intent {
+        drive: DriveInput {
+            throttle: 0.0,
+            brake: 1.0,
+            max_speed: 20.0 / 3.6,
+        },
+        rider: RiderPosition {
+            forward: 1.0,
+            right: 0.0,
+        },
+        ..*ride.intent()
+    });
+    let mut lowest = 0f64;
+    for _ in 0..3 * common::FRAMES_PER_SECOND {
+        ride.step();
+        assert_eq!(ride.sim().crashed(), None, "fell in the stoppie");
+        lowest = lowest.min(common::pitch(&ride));
+    }
+    assert!(lowest < -7.0, "stoppie only {lowest:.1}°");
+}
