@@ -27,7 +27,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.command in ("run", "all"):
             ride(args, rows)
         if args.command in ("report", "all"):
-            write_report(rows.load(), out)
+            write_report(rows.load(), out, args.bike)
             print(f"planner-scenarios: report written to {out / 'scenarios.md'}", file=sys.stderr)
     except (ValueError, OSError, subprocess.CalledProcessError) as error:
         print(f"planner-scenarios: {error}", file=sys.stderr)
@@ -42,7 +42,8 @@ def _parser() -> argparse.ArgumentParser:
                     "(a turn, a long hard turn at speed (carve), a slalom, lean reversals, a push, walking "
                     "pace; hard stops, slopes and hill "
                     "starts: stop10, stop25, stop40, brake-turn, slope5, slope10, slope15, "
-                    "downhill15; the test level's logs: logs), paired by seed. Rows are "
+                    "downhill15; full brakes: brake60, brake90, brake-bend; the test level's "
+                    "logs: logs), paired by seed. Rows are "
                     "appended to OUT/scenarios.csv as each ride ends; rerunning resumes.")
     parser.add_argument("command", nargs="?", choices=("all", "run", "report"), default="all")
     parser.add_argument("--out", default="docs/scenarios", help="directory of scenarios.csv "
@@ -54,6 +55,8 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--seeds", default="0-9", help="FIRST-LAST: ride i for each")
     parser.add_argument("--scenarios", default="turn,slalom,push,walk")
     parser.add_argument("--physics", default="exact", choices=("classic", "exact"))
+    parser.add_argument("--bike", default=None, help="a bike file to ride (default: the "
+                        "reference bike); keep its rows in an --out of their own")
     return parser
 
 
@@ -63,6 +66,8 @@ def ride(args: argparse.Namespace, rows: ScenarioRows) -> None:
                     "-p", "cpbp-core", "--bin", "cpbp-scenarios"], check=True)
     command = [str(BINARY), "--controllers", args.controllers, "--counts", args.counts,
                "--seeds", args.seeds, "--scenarios", args.scenarios, "--physics", args.physics]
+    if args.bike:
+        command += ["--bike", args.bike]
     if rows.path.exists():
         command += ["--skip", str(rows.path)]
     with subprocess.Popen(command, stdout=subprocess.PIPE, text=True) as process:

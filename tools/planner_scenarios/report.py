@@ -24,8 +24,16 @@ METRICS = {
     "slope10": "stop on a 10° slope, stand, hill start: rolled back (m)",
     "slope15": "stop on a 15° slope, stand, hill start: rolled back (m)",
     "downhill15": "stop facing down a 15° slope, stand, ride off: crept on the brake (m)",
+    "brake60": "full brake from 60 km/h to rest: mean deceleration v₀²/2d from the trigger (g)",
+    "brake90": "full brake from 90 km/h to rest: mean deceleration v₀²/2d from the trigger (g)",
+    "brake-bend": "full brake in a 25 m bend at 25° of lean (38.5 km/h): mean deceleration (g)",
     "logs": "RMS lean over the test level's logs at 15 km/h (°)",
 }
+# What a full brake reports beside its metric (the rows' `extra`), with its heading.
+BRAKE_MEASURES = (("distance_m", "distance (m)"), ("peak_g", "peak 0.1 s (g)"),
+                  ("least_step_g", "least step (g)"), ("pitch_deg", "nose down (°)"),
+                  ("rear_lift_mm", "rear tyre up (mm)"),
+                  ("rear_on_road", "steps the rear touched"))
 ORDER = ("combined", "guided", "optimizer", "sampling", "mppi", "learned", "arcade")
 REFERENCE = "combined"
 
@@ -60,12 +68,39 @@ def scenario_table(rows: list[dict], scenario: str) -> str:
     return "\n".join(lines)
 
 
-def write_report(rows: list[dict], out: Path) -> None:
+def measures_table(rows: list[dict], scenario: str) -> str:
+    """What the full brakes measured beside their metric: means over the rides that
+    stayed up, and the worst ride's (for the rear: the most it rose and the least it
+    touched)."""
+    groups: dict[tuple[str, int], list[dict]] = defaultdict(list)
+    for row in rows:
+        if row["scenario"] == scenario and not row["fell"] and row["extra"]:
+            groups[(row["controller"], row["trajectories"])].append(row)
+    if not groups:
+        return ""
+    worst = {"distance_m": max, "peak_g": max, "least_step_g": min, "pitch_deg": max,
+             "rear_lift_mm": max, "rear_on_road": min}
+    lines = [f"*{scenario}, beside the metric: mean (worst ride)*", "",
+             "| planner | N | " + " | ".join(title for _, title in BRAKE_MEASURES) + " |",
+             "|---|---|" + "---|" * len(BRAKE_MEASURES)]
+    for (controller, n) in sorted(groups, key=lambda k: (k[1], _order(k[0]))):
+        mine = groups[(controller, n)]
+        cells = []
+        for name, _ in BRAKE_MEASURES:
+            values = [r["extra"][name] for r in mine if name in r["extra"]]
+            cells.append(f"{sum(values) / len(values):.2f} ({worst[name](values):.2f})"
+                         if values else "–")
+        lines.append(f"| {controller} | {n} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def write_report(rows: list[dict], out: Path, bike: str | None = None) -> None:
     scenarios = [s for s in METRICS if any(r["scenario"] == s for r in rows)]
     physics = sorted({r["physics"] for r in rows})
     parts = [
         "# Planners side by side on scripted rides",
         "",
+        *([f"On the bike {bike}.", ""] if bike else []),
         "Made by `tools/planner-scenarios` from `scenarios.csv` "
         f"({len(rows)} rides, {', '.join(physics) or 'no'} physics, on flat ground unless "
         "the scenario names a slope). Seed *i* "
@@ -78,6 +113,9 @@ def write_report(rows: list[dict], out: Path) -> None:
     ]
     for scenario in scenarios:
         parts += ["", scenario_table(rows, scenario)]
+        extra = measures_table(rows, scenario)
+        if extra:
+            parts += ["", extra]
     (out / "scenarios.md").write_text("\n".join(parts) + "\n")
     if rows:
         chart(rows, scenarios, out / "scenarios.png")

@@ -9,11 +9,15 @@ import os
 from pathlib import Path
 
 FIELDS = ("scenario", "controller", "trajectories", "seed", "physics", "fell", "metric",
-          "planning_ms")
+          "planning_ms", "extra")
+# Rows written before a ride could report more than its metric have no `extra`.
+EARLIER_FIELDS = FIELDS[:-1]
 
 
 def parse(line: str) -> dict:
     values = next(csv.reader(io.StringIO(line)))
+    if len(values) == len(EARLIER_FIELDS):
+        values.append("")
     if len(values) != len(FIELDS):
         raise ValueError(f"a scenario row has {len(FIELDS)} fields, not {len(values)}: {line!r}")
     row = dict(zip(FIELDS, values))
@@ -21,7 +25,19 @@ def parse(line: str) -> dict:
         raise ValueError(f"fell is true or false, not {row['fell']!r}")
     return {**row, "trajectories": int(row["trajectories"]), "seed": int(row["seed"]),
             "fell": row["fell"] == "true", "metric": float(row["metric"]),
-            "planning_ms": float(row["planning_ms"])}
+            "planning_ms": float(row["planning_ms"]), "extra": _measures(row["extra"])}
+
+
+def _measures(text: str) -> dict[str, float]:
+    """`name=value;…` as numbers by name ({} for none)."""
+    measures = {}
+    for item in filter(None, text.split(";")):
+        name, _, value = item.partition("=")
+        try:
+            measures[name] = float(value)
+        except ValueError:
+            raise ValueError(f"a measure is name=number, not {item!r}") from None
+    return measures
 
 
 class ScenarioRows:
@@ -35,7 +51,7 @@ class ScenarioRows:
         lines = text.splitlines()
         if not lines:
             return []
-        if lines[0].split(",") != list(FIELDS):
+        if lines[0].split(",") not in (list(FIELDS), list(EARLIER_FIELDS)):
             raise ValueError(f"{self.path} is not a scenarios file (columns {lines[0]!r})")
         if not text.endswith("\n"):
             # A kill mid-write leaves a partial last line: drop it, keep the rest.

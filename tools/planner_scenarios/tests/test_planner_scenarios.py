@@ -52,6 +52,36 @@ class RowsTest(unittest.TestCase):
         self.assertEqual(FIELDS[0], "scenario")
 
 
+class MeasuresTest(unittest.TestCase):
+    def test_a_row_reports_its_measures_and_an_earlier_row_none(self):
+        row = parse(line("brake60", "arcade", 0, 3, False, 0.91)
+                    + ",distance_m=15.5;rear_lift_mm=0.3")
+        self.assertEqual(row["extra"], {"distance_m": 15.5, "rear_lift_mm": 0.3})
+        self.assertEqual(parse(line("turn", "mppi", 5, 0, False, 4.5))["extra"], {})
+        with self.assertRaisesRegex(ValueError, "name=number"):
+            parse(line("brake60", "arcade", 0, 3, False, 0.91) + ",distance_m=far")
+
+    def test_a_file_with_the_earlier_columns_still_reads_and_takes_new_rows(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "scenarios.csv"
+            path.write_text(",".join(FIELDS[:-1]) + "\n"
+                            + line("turn", "mppi", 5, 0, False, 4.5) + "\n")
+            rows = ScenarioRows(path)
+            rows.append(line("brake90", "combined", 5, 0, False, 0.92) + ",peak_g=0.97")
+            loaded = rows.load()
+            self.assertEqual([r["extra"] for r in loaded], [{}, {"peak_g": 0.97}])
+
+    def test_the_brakes_table_gives_means_and_the_worst_ride(self):
+        rows = [parse(line("brake60", "arcade", 0, s, False, 0.91)
+                      + f",distance_m={d};rear_lift_mm={lift};rear_on_road={on}")
+                for s, (d, lift, on) in enumerate([(15.0, 0.2, 1.0), (16.0, 0.8, 0.9)])]
+        table = report.measures_table(rows, "brake60")
+        self.assertIn("| arcade | 0 | 15.50 (16.00) |", table)
+        self.assertIn("0.50 (0.80)", table)
+        self.assertIn("0.95 (0.90)", table, "the least the rear touched is the worst")
+        self.assertEqual(report.measures_table(rows, "turn"), "")
+
+
 class ReportTest(unittest.TestCase):
     def test_the_table_pairs_each_planner_with_combined_at_its_n(self):
         rows = [parse(line("push", "combined", 5, s, False, m))

@@ -52,5 +52,6 @@ pub fn ride(rider: Rider) -> Outcome {
         fell: ride.sim().crashed().is_some(),
         metric: rms.to_degrees(),
         planning_ms: mean_planning_ms(&planning),
+        measures: Vec::new(),
     }
 }

@@ -14,10 +14,13 @@
 //! `reversals` (25 km/h, ±15° every 2 s for 12 s; the settled error: RMS over the second
 //! second of each gate after the first, once the lean has swung over), `push` (15 km/h, a
 //! sideways shove of 100–250 N·s at 3 s; the largest lean in the 5 s after it) and `walk` (8 km/h for 20 s; the mean speed over the last 10 s, km/h); the
-//! stops and hill starts of `stops.rs`; `logs`, the test level's ride (`logs.rs`). `arcade` and `learned` ride too, once per seed, as
-//! N = 0; `learned` and `guided` with the network in `--model` (the project's by default).
+//! stops and hill starts of `stops.rs`; the full brakes of `brakes.rs`, which report more
+//! than their metric in the row's `extra` column; `logs`, the test level's ride (`logs.rs`).
+//! `arcade` and `learned` ride too, once per seed, as N = 0; `learned` and `guided` with
+//! the network in `--model` (the bike's own by default, `models/policy-<bike>`).
 
 mod args;
+mod brakes;
 mod logs;
 mod stops;
 
@@ -41,6 +44,7 @@ fn scenario_names() -> Vec<&'static str> {
     MANOEUVRES
         .into_iter()
         .chain(stops::SCENARIOS)
+        .chain(brakes::SCENARIOS)
         .chain([logs::SCENARIO])
         .collect()
 }
@@ -60,11 +64,13 @@ pub(crate) struct Rider {
     pub physics: PhysicsModel,
 }
 
-/// What one ride measured.
+/// What one ride measured: its metric, and what else a scenario reports (printed as the
+/// row's `extra` column, `name=value;…`).
 pub(crate) struct Outcome {
     pub fell: bool,
     pub metric: f64,
     pub planning_ms: f64,
+    pub measures: Vec<(&'static str, f64)>,
 }
 
 fn main() {
@@ -112,7 +118,7 @@ fn main() {
         }
         POLICY.get_or_init(|| policy);
     }
-    println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms");
+    println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms,extra");
     for &scenario in &args.scenarios {
         for &kind in &args.controllers {
             // A controller that plans nothing rides once, as N = 0.
@@ -136,12 +142,25 @@ fn main() {
                     };
                     let o = if stops::SCENARIOS.contains(&scenario) {
                         stops::ride(scenario, rider)
+                    } else if brakes::SCENARIOS.contains(&scenario) {
+                        brakes::ride(scenario, rider)
                     } else if scenario == logs::SCENARIO {
                         logs::ride(rider)
                     } else {
                         ride_scenario(scenario, rider)
                     };
-                    println!("{key},{},{:.4},{:.3}", o.fell, o.metric, o.planning_ms);
+                    let extra: Vec<String> = o
+                        .measures
+                        .iter()
+                        .map(|(name, value)| format!("{name}={value:.4}"))
+                        .collect();
+                    println!(
+                        "{key},{},{:.4},{:.3},{}",
+                        o.fell,
+                        o.metric,
+                        o.planning_ms,
+                        extra.join(";")
+                    );
                 }
             }
         }
@@ -276,6 +295,7 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
         fell: ride.sim().crashed().is_some(),
         metric,
         planning_ms: mean_planning_ms(&planning),
+        measures: Vec::new(),
     }
 }
 

@@ -93,5 +93,6 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
         fell: ride.sim().crashed().is_some(),
         metric,
         planning_ms: mean_planning_ms(&planning),
+        measures: Vec::new(),
     }
 }
