@@ -33,6 +33,7 @@ METRICS = {
 BRAKE_MEASURES = (("distance_m", "distance (m)"), ("peak_g", "peak 0.1 s (g)"),
                   ("least_step_g", "least step (g)"), ("pitch_deg", "nose down (°)"),
                   ("rear_lift_mm", "rear tyre up (mm)"),
+                  ("foot_lift_mm", "rear up as a foot comes down (mm)"),
                   ("rear_on_road", "steps the rear touched"))
 ORDER = ("combined", "guided", "optimizer", "sampling", "mppi", "learned", "arcade")
 REFERENCE = "combined"
@@ -79,7 +80,7 @@ def measures_table(rows: list[dict], scenario: str) -> str:
     if not groups:
         return ""
     worst = {"distance_m": max, "peak_g": max, "least_step_g": min, "pitch_deg": max,
-             "rear_lift_mm": max, "rear_on_road": min}
+             "rear_lift_mm": max, "foot_lift_mm": max, "rear_on_road": min}
     lines = [f"*{scenario}, beside the metric: mean (worst ride)*", "",
              "| planner | N | " + " | ".join(title for _, title in BRAKE_MEASURES) + " |",
              "|---|---|" + "---|" * len(BRAKE_MEASURES)]

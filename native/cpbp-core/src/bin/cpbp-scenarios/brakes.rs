@@ -10,8 +10,10 @@
 //!
 //! Each also reports its distance (m), the largest 0.1 s mean deceleration (g), the least
 //! deceleration of a control step while moving (g; negative: a step sped the bike up), the
-//! most nose-down pitch (°), the highest the rear tyre rose off the road (mm) and the
-//! share of control steps the rear tyre touched the road.
+//! most nose-down pitch (°), the highest the rear tyre rose off the road while braking
+//! (mm), the same once a foot is down at the end, and the share of control steps the rear
+//! tyre touched the road (its contact flickers at the few tens of newtons it carries near
+//! the limit, so this counts a tyre skimming the road by tenths of a millimetre as off it).
 
 use cpbp_core::control::TurnIntent;
 use cpbp_core::ride::{Intent, Ride};
@@ -76,6 +78,7 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
             ("least_step_g", stop.least_step_g),
             ("pitch_deg", stop.pitch_deg),
             ("rear_lift_mm", stop.rear_lift * 1000.0),
+            ("foot_lift_mm", stop.foot_lift * 1000.0),
             ("rear_on_road", stop.rear_on_road),
         ],
     }
@@ -97,6 +100,7 @@ struct Stop {
     least_step_g: f64,
     pitch_deg: f64,
     rear_lift: f64,
+    foot_lift: f64,
     rear_on_road: f64,
 }
 
@@ -117,6 +121,7 @@ fn measure_stop(ride: &mut Ride, planning: &mut Vec<f64>) -> Option<Stop> {
         least_step_g: f64::INFINITY,
         pitch_deg: 0.0,
         rear_lift: 0.0,
+        foot_lift: 0.0,
         rear_on_road: 0.0,
     };
     let (mut last, mut steps, mut touching) = (start, 0, 0);
@@ -139,7 +144,13 @@ fn measure_stop(ride: &mut Ride, planning: &mut Vec<f64>) -> Option<Stop> {
         stop.pitch_deg = stop.pitch_deg.max(-nose.to_degrees());
         // The rear tyre's lowest point: on the flat ground these rides use, its height.
         let (rear, _) = bike.tyre_contacts(world, up);
-        stop.rear_lift = stop.rear_lift.max(rear.dot(up));
+        // Until the feet come down; the hop as a foot takes the bike's weight at rest (a
+        // leaning bike levered up on its stiff leg) is the feet's, counted apart.
+        if bike.feet(world).iter().any(|foot| foot.down) {
+            stop.foot_lift = stop.foot_lift.max(rear.dot(up));
+        } else {
+            stop.rear_lift = stop.rear_lift.max(rear.dot(up));
+        }
         touching += usize::from(bike.wheel_contacts(world).0);
         steps += 1;
         last = v;
