@@ -108,3 +108,25 @@ class ReportTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class BrakeCurveTest(unittest.TestCase):
+    def test_a_steady_one_g_stop_sums_to_its_distance(self):
+        from planner_scenarios.brake_curve import G, summary
+        # 10 m/s braked at 1 g in steps of 0.1 s: 1.0194 s, 5.097 m; the rows' times are
+        # rounded to the millisecond as the example prints them.
+        dt, v, rows = 0.1, 10.0, []
+        for step in range(1, 12):
+            nxt = max(v - G * dt, 0.0)
+            rows.append({"t": f"{step * dt:.3f}", "speed_kmh": f"{nxt * 3.6:.2f}",
+                         "decel_g": f"{(v - nxt) / dt / G:.3f}", "pitch_deg": "-2.0",
+                         "rear_lift_mm": "0.1", "fell": "false"})
+            v = nxt
+            if v == 0.0:
+                break
+        s = summary(rows)
+        self.assertAlmostEqual(s["from_kmh"], 36.0, places=1)
+        self.assertAlmostEqual(s["distance_m"], 5.1, delta=0.2)
+        self.assertAlmostEqual(s["mean_g"], 1.0, delta=0.05)
+        self.assertEqual(s["nose_down_deg"], 2.0)
+        self.assertFalse(s["fell"])
