@@ -153,7 +153,9 @@ func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
 	Input.action_press(&"throttle", 0.5)
 	var seen: Array[String] = []
 	var view: TrajectoryView = _game.bike.get_node("TrajectoryView")
-	for i in BikeSimulation.controller_names().size():
+	# The controllers this bike offers: the registry's, learned only with the bike's model.
+	var names := _game.bike.get_offered_controller_names()
+	for i in names.size():
 		await SimulatedInput.tap_action(&"cycle_controller")
 		await wait_physics_frames(45)
 		seen.append(_game.bike.controller)
@@ -162,11 +164,12 @@ func test_start_cycles_the_controllers_and_remembers_the_choice() -> void:
 			assert_eq(paths.size(), 5, "one path per trajectory")
 			await get_tree().process_frame
 			assert_eq(view.drawn_count(), paths.size(), "every trajectory is drawn")
-	var names := BikeSimulation.controller_names()
 	var expected: Array[String] = []
 	for i in names.size():
 		expected.append(names[(names.find("arcade") + 1 + i) % names.size()])
 	assert_eq(seen, expected, "the registry's order from arcade, wrapping round")
+	if not _game.bike.get_policy_model_path().is_empty():
+		assert_has(Array(names), "learned", "offered with the bike's own model")
 	await get_tree().process_frame
 	assert_eq(view.drawn_count(), 0, "no trajectories while the arcade controller drives")
 	assert_false(_game.bike.is_crashed(), "switching controllers while riding keeps it up")

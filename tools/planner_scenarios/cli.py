@@ -9,6 +9,7 @@ from pathlib import Path
 
 from cpbp_experiment.configs import PLANNERS
 
+from .compare import write_comparison
 from .report import write_report
 from .rows import FIELDS, ScenarioRows
 
@@ -29,6 +30,13 @@ def main(argv: list[str] | None = None) -> int:
         if args.command in ("report", "all"):
             write_report(rows.load(), out, args.bike)
             print(f"planner-scenarios: report written to {out / 'scenarios.md'}", file=sys.stderr)
+            if args.compare:
+                other = Path(args.compare)
+                names = (other.name, out.name)
+                write_comparison(ScenarioRows(other / ROWS).load(), rows.load(), names,
+                                 out / "comparison.md")
+                print(f"planner-scenarios: {out / 'comparison.md'} compares it with {other}",
+                      file=sys.stderr)
     except (ValueError, OSError, subprocess.CalledProcessError) as error:
         print(f"planner-scenarios: {error}", file=sys.stderr)
         return 2
@@ -57,6 +65,8 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--physics", default="exact", choices=("classic", "exact"))
     parser.add_argument("--bike", default=None, help="a bike file to ride (default: the "
                         "reference bike); keep its rows in an --out of their own")
+    parser.add_argument("--compare", default=None, help="report: another table's directory "
+                        "(another bike's), compared side by side in OUT/comparison.md")
     return parser
 
 

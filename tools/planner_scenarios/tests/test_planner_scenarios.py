@@ -130,3 +130,17 @@ class BrakeCurveTest(unittest.TestCase):
         self.assertAlmostEqual(s["mean_g"], 1.0, delta=0.05)
         self.assertEqual(s["nose_down_deg"], 2.0)
         self.assertFalse(s["fell"])
+
+
+class CompareTest(unittest.TestCase):
+    def test_both_bikes_side_by_side_over_the_seeds_both_rode(self):
+        from planner_scenarios.compare import side_by_side
+        first = [parse(line("stop40", "arcade", 0, s, False, m))
+                 for s, m in enumerate([10.0, 11.0, 12.0])]
+        second = [parse(line("stop40", "arcade", 0, s, s == 1, m))
+                  for s, m in enumerate([7.0, 70.0, 8.0, 9.0])]
+        second += [parse(line("turn", "arcade", 0, 0, False, 1.0))]
+        table = side_by_side(first, second, ("street_350", "street_390"))
+        self.assertIn("| arcade | 0 | 3 | 0 | 1 |", table, "seed 3 is on one side only")
+        self.assertIn("−3.50", table.replace("-", "−"), "paired over seeds 0 and 2: 7−10, 8−12")
+        self.assertNotIn("15° turn", table, "a scenario on one side only is left out")
