@@ -49,6 +49,13 @@ pub struct FrontBrake {
     /// in a tenth of a second or two rather than striking it. It only slows the rise;
     /// letting off (the rider, the lift-off limit) is at once.
     pub ramp_time: f64,
+    /// Cornering ABS: leaned by θ, the brake gives at most 1 − (θ / `cornering_lean`)² of
+    /// itself (rad; 0: the same at any lean; the square leaves a straight-line stop's small
+    /// leans their whole brake, as the tyre's friction circle does), as modern road bikes' lean-sensitive ABS
+    /// does (e.g. Bosch's motorcycle stability control), leaving the tyre grip for the
+    /// turn and the steering time to stand the bike up: with the whole brake at any lean a
+    /// full brake at 20° and 25 km/h dropped arcade's street bike in 7 of 30 headings.
+    pub cornering_lean: f64,
     /// Below this forward speed (m/s; 0: never) the brake eases off towards `ease_to` of
     /// itself at a standstill, as a rider eases the lever in the last metre of a stop:
     /// stopping from a full brake the fork, deep in its travel, springs the bike back on
@@ -80,6 +87,7 @@ impl Default for FrontBrake {
             tipping_share: 0.0,
             tipping_lookahead: 0.0,
             ramp_time: 0.0,
+            cornering_lean: 0.0,
             ease_below: 0.0,
             ease_to: 1.0,
             hold_gain: 3.6,
@@ -113,7 +121,10 @@ impl FrontBrake {
     /// off a period late and the brake burst to 1.4 g and back. The reference bike's
     /// window alone keeps the once-a-period setting it was evaluated with.
     pub fn modulates(&self) -> bool {
-        self.tipping_share > 0.0 || self.ramp_time > 0.0 || self.ease_below > 0.0
+        self.tipping_share > 0.0
+            || self.ramp_time > 0.0
+            || self.ease_below > 0.0
+            || self.cornering_lean > 0.0
     }
 
     /// Share (0–1) of the asked braking let through with the rear compressed by `rear` (m);
@@ -142,6 +153,21 @@ impl FrontBrake {
         let force = self.tipping_share * over.load * behind / height;
         let share = force * radius / self.max_torque;
         if share.is_finite() && height > 0.0 {
+            share.clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    }
+
+    /// Share (0–1) of itself the brake gives leaned by `lean` (rad, either way) at forward
+    /// speed `speed` (m/s): all of it without cornering ABS, and where ABS rests, at
+    /// walking pace (`abs_above`), so a bike standing leaned on a foot stays held.
+    pub fn cornering_share(&self, lean: f64, speed: f64) -> f64 {
+        if self.cornering_lean <= 0.0 || speed.is_nan() || speed.abs() <= self.abs_above {
+            return 1.0;
+        }
+        let share = 1.0 - (lean / self.cornering_lean).powi(2);
+        if share.is_finite() {
             share.clamp(0.0, 1.0)
         } else {
             0.0
@@ -296,6 +322,33 @@ mod tests {
             (torque - 2000.0 * 0.5 / 0.58 * 0.3).abs() < 1e-9,
             "{torque}"
         );
+    }
+
+    #[test]
+    fn a_leaned_bike_brakes_less_with_cornering_abs() {
+        assert_eq!(
+            FrontBrake::default().cornering_share(0.5, 10.0),
+            1.0,
+            "not on the reference"
+        );
+        let brake = FrontBrake {
+            cornering_lean: 45f64.to_radians(),
+            ..FrontBrake::default()
+        };
+        assert_eq!(brake.cornering_share(0.0, 10.0), 1.0);
+        let at_20 = brake.cornering_share(-20f64.to_radians(), 10.0);
+        assert!(
+            (at_20 - (1.0 - (20.0f64 / 45.0).powi(2))).abs() < 1e-12,
+            "{at_20}"
+        );
+        assert_eq!(brake.cornering_share(50f64.to_radians(), 10.0), 0.0);
+        assert_eq!(brake.cornering_share(f64::NAN, 10.0), 0.0);
+        assert_eq!(
+            brake.cornering_share(0.2, 1.0),
+            1.0,
+            "standing leaned on a foot"
+        );
+        assert_eq!(brake.cornering_share(0.2, f64::NAN), 1.0);
     }
 
     #[test]

@@ -138,11 +138,11 @@ impl Bike {
             (brake.hold_share(ahead, rate), false)
         } else {
             let window = brake.lift_off_share(self.suspension_compression(world).1);
-            let eased = brake.eased(self.forward_speed(world, up));
-            (
-                level * window * eased * self.tipping_limit(world, brake, up),
-                true,
-            )
+            let speed = self.forward_speed(world, up);
+            let eased = brake.eased(speed);
+            let cornering = brake.cornering_share(self.lean(world, up), speed);
+            let tipping = self.tipping_limit(world, brake, up);
+            (level * window * eased * cornering * tipping, true)
         };
         // ABS keeps the wheels turning, except in a stoppie the rider asked for: the hold
         // needs the wheel stopped to pitch the bike over it (the rear's ABS is off then too).
