@@ -1,5 +1,5 @@
 //! A full brake from speed as a curve: `cargo run --release --example brake_curve --
-//! [KMH] [CONTROLLER] [--bike FILE] [FIELD=VALUE…]` prints one CSV row per control step
+//! [KMH] [CONTROLLER] [--bike FILE] [--heading DEG] [FIELD=VALUE…]` prints one CSV row per control step
 //! of the stop (time, speed, deceleration, pitch, rear and front suspension compression,
 //! wheel contacts, how high the rear tyre is off the road, lean, steering). `--bike` rides
 //! a bike file (the reference bike without it); FIELD=VALUE sets one of its fields
@@ -22,6 +22,17 @@ fn main() {
         Ok(None) => {}
         Err(why) => fail(&why),
     }
+    let heading = match args.iter().position(|a| a == "--heading") {
+        Some(at) if at + 1 < args.len() => {
+            let degrees = args.remove(at + 1);
+            args.remove(at);
+            degrees
+                .parse::<f64>()
+                .unwrap_or_else(|_| fail(&format!("--heading {degrees}: not degrees")))
+        }
+        Some(_) => fail("--heading needs degrees"),
+        None => 0.0,
+    };
     let (settings, args): (Vec<String>, Vec<String>) =
         args.into_iter().partition(|a| a.contains('='));
     for setting in &settings {
@@ -45,7 +56,7 @@ fn main() {
     };
     let spawn = Placement {
         position: DVec3::new(0.0, 0.02, 0.0),
-        rotation: DQuat::IDENTITY,
+        rotation: DQuat::from_rotation_y(heading.to_radians()),
     };
     let sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
     let mut ride = Ride::new(sim, kind);
