@@ -61,7 +61,7 @@ step "cargo test"           tools/cargo test --workspace --exclude cpbp-godot --
 # run for both packages: cargo resolves features per run, so two runs would build
 # cpbp-core and its dependencies in release twice (about 5 minutes on CI).
 step "learned pipeline and controller rides (release)" tools/cargo test --release \
-  -p cpbp-learn -p cpbp-core --bin cpbp-learn --test rides --test auto_trajectories
+  -p cpbp-learn -p cpbp-core --bin cpbp-learn --test rides
 # The benchmark bicycle built from the game's bodies and tyres is the paper's bicycle.
 step "bicycle benchmark"    .venv/bin/python -m unittest -v bicycle_benchmark.tests.test_bicycle_benchmark
 # The experiment's statistics, results file and scheduling (no Godot needed).

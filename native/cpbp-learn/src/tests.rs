@@ -1,8 +1,6 @@
 //! The generator's contract: an episode is a function of its seed, a shard holds exactly
 //! what was ridden, and data of another feature list is refused.
 
-use std::time::Instant;
-
 use candle_core::{Device, Tensor};
 
 use super::episode::{ride, Episode, ExpertSettings, Family, Ground};
@@ -158,7 +156,6 @@ fn tiny_run() -> (PolicyNetwork, Dataset) {
 
 #[test]
 fn a_tiny_generation_and_training_run_completes_and_repeats() {
-    let started = Instant::now();
     let (network, data) = tiny_run();
     let (again, data_again) = tiny_run();
     assert_eq!(data.features, data_again.features);
@@ -170,7 +167,6 @@ fn a_tiny_generation_and_training_run_completes_and_repeats() {
     );
     let back = PolicyNetwork::parse(&network.to_bytes()).expect("the model reads back");
     assert_eq!(back.parts().layers, network.parts().layers);
-    assert!(started.elapsed().as_secs() < 120, "{:?}", started.elapsed());
 }
 
 #[test]

@@ -1,9 +1,11 @@
 //! `make bench`: prints the performance figures recorded in docs/benchmarks.md.
 //! Timings are medians of several runs so one noisy run does not move them.
 //! `cpbp-bench planning` prints only the game physics' planning table, for comparing two
-//! builds run alternately; `cpbp-bench learned` only the learned controller's cost.
+//! builds run alternately; `cpbp-bench learned` only the learned controller's cost;
+//! `cpbp-bench auto-n` only the automatic N under load.
 //! `--bike FILE` (`make bench BIKE=FILE`) measures another bike than the reference.
 
+mod auto_n;
 mod fidelity;
 mod learned;
 mod planning;
@@ -73,6 +75,7 @@ fn main() {
             let sim = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
             return learned::inference_cost(&sim, row);
         }
+        Some("auto-n") => return auto_n::under_load(),
         _ => {}
     }
     println!("{:<58} {:>14}", "figure", "value");
@@ -131,6 +134,7 @@ fn main() {
             h.3 * 100.0
         );
     }
+    auto_n::under_load();
 }
 
 /// Every planning mode's cost per control step in the game's physics on 2 threads.
