@@ -91,7 +91,7 @@ minutes=$(( ($(date +%s) - started + 59) / 60 ))
 
 report() {
   .venv/bin/learned-report --data "$LEARN_DATA" --rounds "$ROUNDS" \
-    --model "$MODEL" --out "$REPORT" --minutes "$minutes"
+    --model "$MODEL" --out "$REPORT" --minutes "$minutes" ${name:+--bike "$name"}
 }
 report
 

@@ -3,19 +3,22 @@ extends Node3D
 ## One ride on one level: builds the level and the bike at its first spawn point, applies
 ## the player's settings, runs the level's rules and handles the game buttons (respawn,
 ## lift, spawn points, controller, trajectories, pause). The level comes from the
-## settings unless `level_path` names one; the bike is the reference one unless
-## `bike_path` names another.
+## settings unless `level_path` names one; the bike is the game's street bike unless
+## `bike_path` names another (the thesis's reference bike, street_350.tres, rides the
+## experiment and the tools).
 
 const BIKE := preload("res://scenes/bike/bike.tscn")
 const REPLAY := preload("res://scenes/replay/replay.tscn")
 const START_MENU := "res://scenes/ui/start_menu.tscn"
+## The game's own bike: the street bike with real brakes (docs/bike-model.md).
+const STREET_BIKE := "res://scenes/bike/bikes/street_390.tres"
 ## Seconds a result stays on screen before an automatic level starts the next attempt.
 const RESULT_PAUSE := 2.5
 
 ## Level scene to ride; empty: the one chosen in the settings.
 @export_file("*.tscn") var level_path := ""
 ## Bike to ride (a BikeDescription file); empty: the reference bike.
-@export_file("*.tres") var bike_path := ""
+@export_file("*.tres") var bike_path := STREET_BIKE
 
 var level: Level
 var bike: BikeSimulation

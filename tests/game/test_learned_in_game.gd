@@ -2,8 +2,9 @@ extends TestCase
 ## The learned controller rides the track as a player does: the trigger at 60 % towards
 ## the 40 km/h setting down the start straight, over the kicker, the hill and the rollers,
 ## then the far bend with the stick 0.4 left, which asks for the 30° limit, held for 6 s.
-## The network comes from `make train` (models/policy-street_350.safetensors, the bike's
-## own): a model that cannot ride the game's own lap fails here.
+## The network is the game's bike's own, from `make train BIKE=…/street_390.tres`
+## (models/policy-street_390.safetensors): a model that cannot ride the game's own lap
+## fails here.
 
 const GAME := preload("res://scenes/game/game.tscn")
 const TRACK := "res://scenes/levels/track/track.tscn"

@@ -144,6 +144,41 @@ def scenario_tables(path: Path) -> list[str]:
     return lines
 
 
+def reference_evaluation() -> list[str]:
+    """The reference bike's evaluation: the test-level experiment and the scenarios."""
+    return [
+        "## The test level (exact physics, the experiment's attempts; 95 % Wilson intervals)",
+        "",
+        # Between markers that tools/doc-check holds equal to the rows as they grow.
+        "<!-- figures: learned-experiment -->",
+        *experiment_tables(Path("docs/experiment/results.csv")),
+        "<!-- /figures -->",
+        "",
+        "## Scenarios (exact physics, seeds from 0: the rides column says how many)",
+        "",
+        "<!-- figures: learned-scenarios -->",
+        *scenario_tables(Path("docs/scenarios/scenarios.csv")),
+        "<!-- /figures -->",
+        "",
+    ]
+
+
+def evaluation_of_bike(bike: str) -> list[str]:
+    """Where another bike's model is evaluated: the test-level experiment and the
+    reference's scenario rows ride the reference bike, so neither says anything of it."""
+    table = f"docs/scenarios/{bike}"
+    return [
+        "## Evaluation",
+        "",
+        "The test-level experiment and the reference's scenario table ride the thesis's "
+        "bike, not this one, so `make train BIKE=` leaves them alone. This bike's network "
+        f"is measured beside the other controllers in its own scenario table, `{table}/` "
+        f"(`tools/planner-scenarios run --bike FILE --out {table} --controllers learned,guided`, "
+        "then `report`).",
+        "",
+    ]
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--data", type=Path, required=True)
@@ -151,6 +186,8 @@ def main() -> int:
     parser.add_argument("--model", type=Path, required=True)
     parser.add_argument("--out", type=Path, required=True)
     parser.add_argument("--minutes", type=int, required=True)
+    parser.add_argument("--bike", help="the bike file's name when the model is another bike's "
+                        "than the reference (its evaluation is its own scenario table)")
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     curves = losses(args.data, args.rounds)
@@ -179,19 +216,7 @@ def main() -> int:
         "|---|---|---|---|",
         *[f"| {r} | {c[0] + 1} | {c[1]:.4f} | {c[2]:.4f} |" for r, c in last.items()],
         "",
-        "## The test level (exact physics, the experiment's attempts; 95 % Wilson intervals)",
-        "",
-        # Between markers that tools/doc-check holds equal to the rows as they grow.
-        "<!-- figures: learned-experiment -->",
-        *experiment_tables(Path("docs/experiment/results.csv")),
-        "<!-- /figures -->",
-        "",
-        "## Scenarios (exact physics, seeds from 0: the rides column says how many)",
-        "",
-        "<!-- figures: learned-scenarios -->",
-        *scenario_tables(Path("docs/scenarios/scenarios.csv")),
-        "<!-- /figures -->",
-        "",
+        *(evaluation_of_bike(args.bike) if args.bike else reference_evaluation()),
     ]
     (args.out / "training.md").write_text("\n".join(lines))
     print(f"learned report: {args.out / 'training.md'}")

@@ -50,6 +50,12 @@ class ReportTest(unittest.TestCase):
         self.assertIn("| 3 | 0 |", learned)
         self.assertIn("learned − this:", arcade)
 
+    def test_another_bikes_report_claims_none_of_the_references_rows(self):
+        text = "\n".join(report.evaluation_of_bike("street_390"))
+        self.assertIn("docs/scenarios/street_390/", text)
+        self.assertNotIn("<!-- figures", text, "doc-check would hold it to the reference's rows")
+        self.assertNotIn("km/h |", text)
+
     def test_the_models_metadata_is_read_from_its_header(self):
         header = json.dumps({"__metadata__": {"training": "2 rounds"}}).encode()
         path = self.folder / "model.safetensors"
