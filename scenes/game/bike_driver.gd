@@ -13,12 +13,12 @@ const AUTO_THROTTLE := 0.6
 var bike: BikeSimulation
 ## Hold `auto_speed_kmh` without the triggers.
 var auto_accelerate := false
-## Speed auto-accelerate holds (km/h).
-var auto_speed_kmh := 15.0
+## Speed auto-accelerate holds (km/h); the game sets the player's, from the settings.
+var auto_speed_kmh: float = Settings.schema_entry(&"auto_speed_kmh").default
 ## Ignore the turn command (automatic levels).
 var steering_locked := false
 ## Top speed (km/h) of full throttle when driving by hand.
-var max_speed_kmh := 40.0
+var max_speed_kmh: float = Settings.schema_entry(&"max_speed_kmh").default
 ## What the player's hands gave the bike at the last tick (for replays): the triggers
 ## (0–1), the turn (−1 left to 1 right) and the rider stick (x right, y forward).
 var throttle := 0.0

@@ -6,6 +6,9 @@ use super::controls::{index, Controls, ForceClass};
 /// The fastest full throttle may be set to drive towards (km/h): the speed setting's top
 /// (`settings::MAX_SPEED_KMH`) and the bound every drive input is held to.
 pub const TOP_SPEED_KMH: f64 = 90.0;
+/// What full throttle drives towards unless the player sets otherwise (km/h): the speed
+/// setting's default (`settings::MAX_SPEED_KMH`) and the drive's.
+pub const DEFAULT_MAX_SPEED_KMH: f64 = 40.0;
 
 /// What the player's triggers ask of the rear wheel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,7 +26,7 @@ impl Default for DriveInput {
         Self {
             throttle: 0.0,
             brake: 0.0,
-            max_speed: 25.0 / 3.6,
+            max_speed: DEFAULT_MAX_SPEED_KMH / 3.6,
         }
     }
 }

@@ -26,7 +26,7 @@ pub use controls::{
     MAX_TORQUE, UPPER,
 };
 pub use crash::{CrashCause, CrashMonitor};
-pub use drive::{DriveInput, TOP_SPEED_KMH};
+pub use drive::{DriveInput, DEFAULT_MAX_SPEED_KMH, TOP_SPEED_KMH};
 pub use feet::Feet;
 pub use fields::{field, BikeField, FIELDS};
 pub use front_brake::{FrontBrake, OverFrontTyre};

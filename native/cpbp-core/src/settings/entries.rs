@@ -3,7 +3,7 @@
 //! `SimulationConfig`, the ride's clamps) read their constant here.
 
 use super::{DefaultValue as D, Owner, Range, Setting};
-use crate::bike::TOP_SPEED_KMH;
+use crate::bike::{DEFAULT_MAX_SPEED_KMH, TOP_SPEED_KMH};
 
 /// What an entry is unless it says otherwise: a planner's number, hidden from players.
 /// A planner's own parameters (declared with its `PlannerSpec`) start from this too.
@@ -27,7 +27,7 @@ pub const MAX_SPEED_KMH: Setting = Setting {
     label: "Top speed",
     description: "Speed full throttle drives towards.",
     unit: "km/h",
-    default: D::Float(40.0),
+    default: D::Float(DEFAULT_MAX_SPEED_KMH),
     range: Some(Range::new(1.0, TOP_SPEED_KMH, 1.0)),
     owner: Owner::Ride,
     player: true,
