@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # `make train`: the learned controller from nothing (docs/learned-controller.md).
 #  1. The planner rides EPISODES seeded episodes as the expert (cpbp-learn generate),
-#     LOG_EPISODES of the test level's ride (straight over logs) and CARVING_EPISODES of
-#     long hard turns at speed.
+#     LOG_EPISODES of the test level's ride (straight over logs), CARVING_EPISODES of
+#     long hard turns at speed and BRAKING_EPISODES of full brakes from up to 90 km/h.
 #  2. A network is trained on them (cpbp-learn train, candle).
 #  3. DAgger, ROUNDS times: the latest network rides DAGGER_EPISODES new episodes,
-#     DAGGER_LOG_EPISODES over logs and DAGGER_CARVING_EPISODES of carving while the
+#     DAGGER_LOG_EPISODES over logs, DAGGER_CARVING_EPISODES of carving and
+#     DAGGER_BRAKING_EPISODES of braking while the
 #     planner labels the states it visits, and a network is trained on everything so far.
 #  4. The last network becomes the bike's model (models/policy-<bike>.safetensors, <bike>
 #     the bike file's name: street_350, the reference, without BIKE) and the
@@ -14,13 +15,16 @@
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
 #     are written again (docs/experiment, docs/scenarios).
 # Seeds: round R (0 = the expert's) rides mixed episodes from R*100000 + 1, log
-# episodes from R*100000 + 50001 and carving from R*100000 + 70001, so no two episodes
-# of a run share a seed.
+# episodes from R*100000 + 50001, carving from R*100000 + 70001 and braking from
+# R*100000 + 90001, so no two episodes of a run share a seed.
 # EPOCHS and SEED override the trainer's defaults (cpbp-learn train --help).
 # BIKE=FILE (a bike file) trains a network of that bike: its episodes, checkpoints and
 # report go to a folder and a model of the bike's own (models/policy-<name>.safetensors,
 # docs/learned/<name>, <name> the bike file's, which the game and the tools load for that
-# bike), and the game's evaluation, which rides the reference bike, is left out.
+# bike), and the game's evaluation, which rides the reference bike, is left out. A game's
+# bike rides the game's speeds, up to 90 km/h: its run adds braking episodes (24 s each,
+# the time to reach such speeds), which the reference's, ridden at the thesis's speeds up
+# to 40 km/h, leaves out (BRAKING_EPISODES=0), so its model is made again as committed.
 # Every step resumes: episodes already saved are not ridden again, a finished round's
 # model is kept, and the experiment and scenario runs resume. Data and checkpoints live
 # in the cache (LEARN_DATA), never in git; `make clean` leaves them, `make clean-learn`
@@ -36,6 +40,7 @@ DAGGER_LOG_EPISODES="${DAGGER_LOG_EPISODES:-20}"
 CARVING_EPISODES="${CARVING_EPISODES:-40}"
 DAGGER_CARVING_EPISODES="${DAGGER_CARVING_EPISODES:-20}"
 EVALUATE="${EVALUATE:-1}"
+BRAKING_SECONDS=24
 LEARN_DATA="${LEARN_DATA:-$CACHE_ROOT/learn}"
 MODEL=models/policy-street_350.safetensors
 REPORT=docs/learned
@@ -46,7 +51,11 @@ if [ -n "${BIKE:-}" ]; then
   bike=(--bike "$BIKE")
   LEARN_DATA="$LEARN_DATA-$name" MODEL="models/policy-$name.safetensors" REPORT="$REPORT/$name"
   EVALUATE=0
+  BRAKING_EPISODES="${BRAKING_EPISODES:-30}"
+  DAGGER_BRAKING_EPISODES="${DAGGER_BRAKING_EPISODES:-10}"
 fi
+BRAKING_EPISODES="${BRAKING_EPISODES:-0}"
+DAGGER_BRAKING_EPISODES="${DAGGER_BRAKING_EPISODES:-0}"
 learn=native/target/release/cpbp-learn
 
 started=$(date +%s)
@@ -61,27 +70,40 @@ train_round() {
     ${EPOCHS:+--epochs "$EPOCHS"} ${SEED:+--seed "$SEED"}
 }
 
-# Rides round $1's episodes into $2 (mixed), $2-logs and $2-carving: $3, $4 and $5 of
-# them; $6 is the learner for DAgger (none for the expert's round).
+# Rides round $1's episodes into $2 (mixed), $2-logs, $2-carving and $2-braking: $3, $4,
+# $5 and $6 of them (none of the last, no folder); $7 is the learner for DAgger (none for
+# the expert's round).
 ride_round() {
   local base=$(($1 * 100000)) learner=()
-  [ -n "${6:-}" ] && learner=(--learner "$6")
+  [ -n "${7:-}" ] && learner=(--learner "$7")
   "$learn" generate --out "$2" --episodes "$((base + 1))-$((base + $3))" "${learner[@]}" \
     "${bike[@]}"
   "$learn" generate --out "$2-logs" --family logs \
     --episodes "$((base + 50001))-$((base + 50000 + $4))" "${learner[@]}" "${bike[@]}"
   "$learn" generate --out "$2-carving" --family carving \
     --episodes "$((base + 70001))-$((base + 70000 + $5))" "${learner[@]}" "${bike[@]}"
+  [ "$6" -gt 0 ] || return 0
+  "$learn" generate --out "$2-braking" --family braking --seconds "$BRAKING_SECONDS" \
+    --episodes "$((base + 90001))-$((base + 90000 + $6))" "${learner[@]}" "${bike[@]}"
 }
 
-ride_round 0 "$LEARN_DATA/expert" "$EPISODES" "$LOG_EPISODES" "$CARVING_EPISODES"
-folders="$LEARN_DATA/expert,$LEARN_DATA/expert-logs,$LEARN_DATA/expert-carving"
+# Round $1's folders (the expert's or a DAgger round's, $2), comma-separated.
+round_folders() {
+  local folders="$2,$2-logs,$2-carving" braking=$DAGGER_BRAKING_EPISODES
+  [ "$1" -eq 0 ] && braking=$BRAKING_EPISODES
+  [ "$braking" -gt 0 ] && folders="$folders,$2-braking"
+  echo "$folders"
+}
+
+ride_round 0 "$LEARN_DATA/expert" "$EPISODES" "$LOG_EPISODES" "$CARVING_EPISODES" \
+  "$BRAKING_EPISODES"
+folders=$(round_folders 0 "$LEARN_DATA/expert")
 train_round 0 "$folders"
 for round in $(seq 1 "$ROUNDS"); do
   ride_round "$round" "$LEARN_DATA/dagger-$round" "$DAGGER_EPISODES" "$DAGGER_LOG_EPISODES" \
-    "$DAGGER_CARVING_EPISODES" "$LEARN_DATA/round-$((round - 1)).safetensors"
-  dagger="$LEARN_DATA/dagger-$round"
-  folders="$folders,$dagger,$dagger-logs,$dagger-carving"
+    "$DAGGER_CARVING_EPISODES" "$DAGGER_BRAKING_EPISODES" \
+    "$LEARN_DATA/round-$((round - 1)).safetensors"
+  folders="$folders,$(round_folders "$round" "$LEARN_DATA/dagger-$round")"
   train_round "$round" "$folders"
 done
 

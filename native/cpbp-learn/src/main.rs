@@ -30,7 +30,7 @@ use cpbp_core::control::learned::{
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
-[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves] \
+[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves|braking] \
 [--bike FILE]\n       \
 cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S] \
 [--hidden W,W…] [--weight-decay D]\n       \
@@ -105,7 +105,7 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
             "--noise" => settings.noise = number("--noise")?.min(0.5),
             "--family" => {
                 settings.family = episode::Family::from_name(value).ok_or_else(|| {
-                    format!("--family is mixed, logs, carving or shoves, not '{value}'")
+                    format!("--family is mixed, logs, carving, shoves or braking, not '{value}'")
                 })?;
             }
             "--jobs" => jobs = number("--jobs")?.max(1.0) as usize,

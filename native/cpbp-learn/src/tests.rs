@@ -349,3 +349,34 @@ fn episodes_ride_the_bike_asked_and_a_network_is_one_bikes() {
     assert_eq!(model.parts().bike, pit_bike.params.identity());
     std::fs::remove_dir_all(&root).unwrap();
 }
+
+#[test]
+fn a_braking_episode_speeds_up_then_brakes_to_a_stand_and_again() {
+    let settings = ExpertSettings {
+        family: Family::Braking,
+        seconds: 24.0,
+        ..ExpertSettings::default()
+    };
+    for seed in [1, 2, 3, 90_001] {
+        let episode = Episode::draw(seed, &settings);
+        assert_eq!(episode, Episode::draw(seed, &settings));
+        match episode.ground {
+            Ground::Flat => {}
+            Ground::Slope(angle) => assert!(angle.abs() <= 15f64.to_radians(), "{angle}"),
+            other => panic!("{other:?}"),
+        }
+        let first = episode.segments[0];
+        let kmh = first.drive.max_speed * 3.6;
+        assert!((45.0..90.0).contains(&kmh) && first.drive.throttle >= 0.6, "{kmh}");
+        let brakes: Vec<_> = episode.segments.iter().filter(|s| s.drive.brake > 0.0).collect();
+        assert!(brakes.len() >= 2, "{} brakes in 24 s", brakes.len());
+        assert!((300..420).contains(&brakes[0].start), "{}", brakes[0].start);
+        for brake in &brakes {
+            assert!(brake.drive.throttle == 0.0 && (0.5..=1.0).contains(&brake.drive.brake));
+            assert!(brake.stick.abs() < 0.15 && brake.lean.is_none());
+        }
+    }
+    // A short episode still brakes, halfway through.
+    let short = Episode::draw(1, &ExpertSettings { seconds: 12.0, ..settings });
+    assert!(short.segments.iter().any(|s| s.drive.brake > 0.0 && s.start == 180));
+}

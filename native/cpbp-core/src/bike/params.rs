@@ -52,7 +52,7 @@ pub struct BikeParams {
     pub swingarm_mass: f64,
     /// Rider segments: lower leg, upper leg, torso with head, upper arm, lower arm (kg).
     pub rider_masses: [f64; 5],
-    /// How hard the rider braces with the shoulders and elbows while braking: the share
+    /// How hard the rider braces the arms fore and aft while braking: the share
     /// of the arms' full strength reached at the full brake (`Bike::braced_arms`; 0: the
     /// arms as the physics model has them, the reference bike's).
     pub rider_brace: f64,

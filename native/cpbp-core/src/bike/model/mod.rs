@@ -19,6 +19,10 @@ use crate::bike::params::BikeParams;
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::{BodyId, GeomId, JointId, World};
 
+/// The shoulder motor's axis that swings the arm fore and aft (about the frame's lateral
+/// axis: `Builder::ball_with_motor`'s first), the one a braking rider braces.
+const SHOULDER_SWING: usize = 0;
+
 /// Number of rigid bodies of bike and rider.
 pub const PARTS: usize = 11;
 
@@ -221,7 +225,13 @@ impl Bike {
         let braced = self.braced_arms(controls, arms);
         for axis in 0..3 {
             world.set_motor(self.waist, axis, c[index::WAIST + axis], waist);
-            world.set_motor(self.shoulder, axis, c[index::SHOULDER + axis], braced);
+            // Held in a stoppie the rider locks the whole body to the bar.
+            let shoulder = if axis == SHOULDER_SWING || held.stoppie > 0.0 {
+                braced
+            } else {
+                arms
+            };
+            world.set_motor(self.shoulder, axis, c[index::SHOULDER + axis], shoulder);
             world.set_motor(self.wrist, axis, c[index::WRIST + axis], arms);
         }
         world.set_motor(

@@ -64,14 +64,19 @@ impl Bike {
         local - frame_rest_rotation.inverse() * (rest / mass - frame_rest)
     }
 
-    /// The shoulders' and elbows' torque limit (N·m): `arms`, or braking, towards the
-    /// bike's `rider_brace` share of the arms' full strength (`MAX_TORQUE`) with the
-    /// brake's level. A rider braking hard holds the body up against the deceleration,
-    /// with the knees on the tank and the arms; this rider has no knees on the tank, and
-    /// with the exact model's weak arms (`PhysicsModel::arm_strength`) the body pivots on
-    /// the pegs towards the bars, carrying the centre of mass 0.1–0.15 m forward over the
-    /// front tyre, which lowers what tips the bike by a sixth. The wrists stay as they
-    /// are, so the bar still steers. None on the reference bike (`rider_brace` 0).
+    /// The torque limit (N·m) of the elbow and of the shoulder's fore-and-aft swing:
+    /// `arms`, or braking, towards the bike's `rider_brace` share of the arms' full
+    /// strength (`MAX_TORQUE`) with the brake's level. A rider braking hard holds the body
+    /// up against the deceleration, with the knees on the tank and the arms; this rider
+    /// has no knees on the tank, and with the exact model's weak arms
+    /// (`PhysicsModel::arm_strength`) the body pivots on the pegs towards the bars,
+    /// carrying the centre of mass 0.1–0.15 m forward over the front tyre, which lowers
+    /// what tips the bike by a sixth. The shoulder's other axes and the wrists stay as
+    /// they are: braced sideways too, the arms carried a planner's random shoulder targets
+    /// out at full strength, and the rider's weight went 0.2 m sideways in the last metres
+    /// of a stop (the optimizer at N = 10 fell in 6 of 60 full brakes). In a stoppie the
+    /// rider asks for, the whole shoulder braces: braced fore and aft only, the bike fell
+    /// over sideways on its nose. None on the reference bike (`rider_brace` 0).
     pub(super) fn braced_arms(&self, controls: &Controls, arms: f64) -> f64 {
         let brace = self.params.rider_brace;
         let level = brake_level(controls);
