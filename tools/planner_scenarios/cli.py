@@ -32,7 +32,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"planner-scenarios: report written to {out / 'scenarios.md'}", file=sys.stderr)
             if args.compare:
                 other = Path(args.compare)
-                names = (other.name, out.name)
+                names = (_table_name(other), _table_name(out))
                 write_comparison(ScenarioRows(other / ROWS).load(), rows.load(), names,
                                  out / "comparison.md")
                 print(f"planner-scenarios: {out / 'comparison.md'} compares it with {other}",
@@ -41,6 +41,14 @@ def main(argv: list[str] | None = None) -> int:
         print(f"planner-scenarios: {error}", file=sys.stderr)
         return 2
     return 0
+
+
+def _table_name(folder: Path) -> str:
+    """What a comparison calls a table: the reference bike's is the default folder's, any
+    other bike's the folder named for it (docs/scenarios/street_390)."""
+    if folder.resolve() == (PROJECT_ROOT / "docs" / "scenarios").resolve():
+        return "street_350 (reference)"
+    return folder.name
 
 
 def _parser() -> argparse.ArgumentParser:
