@@ -367,8 +367,15 @@ fn a_braking_episode_speeds_up_then_brakes_to_a_stand_and_again() {
         }
         let first = episode.segments[0];
         let kmh = first.drive.max_speed * 3.6;
-        assert!((45.0..90.0).contains(&kmh) && first.drive.throttle >= 0.6, "{kmh}");
-        let brakes: Vec<_> = episode.segments.iter().filter(|s| s.drive.brake > 0.0).collect();
+        assert!(
+            (45.0..90.0).contains(&kmh) && first.drive.throttle >= 0.6,
+            "{kmh}"
+        );
+        let brakes: Vec<_> = episode
+            .segments
+            .iter()
+            .filter(|s| s.drive.brake > 0.0)
+            .collect();
         assert!(brakes.len() >= 2, "{} brakes in 24 s", brakes.len());
         assert!((300..420).contains(&brakes[0].start), "{}", brakes[0].start);
         for brake in &brakes {
@@ -377,6 +384,15 @@ fn a_braking_episode_speeds_up_then_brakes_to_a_stand_and_again() {
         }
     }
     // A short episode still brakes, halfway through.
-    let short = Episode::draw(1, &ExpertSettings { seconds: 12.0, ..settings });
-    assert!(short.segments.iter().any(|s| s.drive.brake > 0.0 && s.start == 180));
+    let short = Episode::draw(
+        1,
+        &ExpertSettings {
+            seconds: 12.0,
+            ..settings
+        },
+    );
+    assert!(short
+        .segments
+        .iter()
+        .any(|s| s.drive.brake > 0.0 && s.start == 180));
 }
