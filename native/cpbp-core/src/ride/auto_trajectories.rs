@@ -12,7 +12,8 @@
 //!
 //! Only plans made with the N in use count: the ones in flight when N changed were made
 //! with the old one. Everything here is pure bookkeeping on numbers it is given, so the
-//! rule is tested with made-up timings; `tests/auto_trajectories.rs` rides it under load.
+//! rule is tested with made-up timings; `make bench` rides it under load
+//! (`src/bin/cpbp-bench/auto_n.rs`).
 
 use super::limits::AUTO_TRAJECTORIES;
 
