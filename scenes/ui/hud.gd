@@ -2,7 +2,8 @@ class_name Hud
 extends CanvasLayer
 ## The riding HUD: lean dial (wanted vs actual lean), the rider's weight (asked vs
 ## actual), speed, controller with its trajectory count (and whether the game picks it),
-## planning time and late plans a second, frame rate, the level's timer line, attempt
+## planning time, late plans a second and the planner's own numbers about its plan
+## (C-PBP's resamplings, MPPI's effective samples, …), frame rate, the level's timer line, attempt
 ## tally, banners for what just happened, and the split against a ghost at each
 ## checkpoint.
 
@@ -89,7 +90,10 @@ func _process(delta: float) -> void:
 			]
 		)
 	_controller.text = controller
+	# The planner's own numbers go on the line below, which has the room.
 	_performance.text = "%d fps" % Engine.get_frames_per_second()
+	if failure.is_empty() and BikeSimulation.controller_plans(bike.controller):
+		_performance.text += _diagnostics_text(bike.get_plan_diagnostics())
 	var status := "%s   ·   %s" % [_game.level.title, _game.level.status_line()]
 	if _game.level.automatic:
 		status += "   ·   %d/%d reached the goal" % [_game.successes, _game.attempts]
@@ -97,6 +101,17 @@ func _process(delta: float) -> void:
 		status += "   ·   falls %d" % _game.falls
 	_status.text = status
 	_hint.text = _hint_text(bike)
+
+
+## A planner's diagnostics as the HUD shows them after the frame rate: "  ·  resamples 3"
+## and the like, by the names the planner gives them.
+static func _diagnostics_text(diagnostics: Dictionary) -> String:
+	var text := ""
+	for name: String in diagnostics:
+		var value: float = diagnostics[name]
+		var shown := "%d" % value if value == roundf(value) else "%.2f" % value
+		text += "  ·  %s %s" % [name, shown]
+	return text
 
 
 ## Plans that came too late in the last whole second (the count restarts with the ride).

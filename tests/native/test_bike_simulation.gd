@@ -110,11 +110,16 @@ func test_the_baseline_planners_plan_with_their_settings_and_survive_bad_ones() 
 	_bike.set_drive(1.0, 0.0)
 	await wait_physics_frames(60)
 	assert_eq(_bike.get_trajectory_paths().size(), 6, "one path per candidate")
+	var named := _bike.get_plan_diagnostics()
+	assert_between(named.get("effective samples", 0.0), 1.0, 6.0, "MPPI's weights: %s" % named)
+	assert_true(named.get("improvement", -1.0) >= 0.0, "the best is never worse than the nominal")
 	_bike.controller = "sampling"
 	_bike.baseline_steering_only = false
 	await wait_physics_frames(30)
 	assert_eq(_bike.get_controller_name(), "sampling")
 	assert_eq(_bike.get_trajectory_paths().size(), 6)
+	named = _bike.get_plan_diagnostics()
+	assert_eq(named.keys(), ["improvement"], "predictive sampling weighs nothing")
 	assert_true(_bike.get_body_transform(0).origin.is_finite(), "bad settings were clamped")
 
 
@@ -131,6 +136,7 @@ func test_the_optimizer_settings_shape_its_plans() -> void:
 	assert_eq(paths.size(), 4)
 	assert_eq(paths[0].size(), 18, "0.6 s at 30 planning steps a second")
 	assert_eq(_bike.get_warm_trajectory(), 1, "combined: the arcade rollout")
+	assert_eq(_bike.get_plan_diagnostics().keys(), ["resamples"], "C-PBP's own number")
 	var stats := _bike.get_handover_stats()
 	assert_gt(stats.boundaries, 20)
 	assert_eq(stats.late, 0, "waiting up to a second, every plan is on time")

@@ -161,11 +161,19 @@ impl BikeSimulation {
         self.current_plan().map_or(0.0, |p| p.best_cost)
     }
 
-    /// Resampling steps in the last plan taken over.
+    /// The running planner's own numbers about the last plan taken over, by name (C-PBP:
+    /// its resamplings; predictive sampling: how much the samples bettered the nominal;
+    /// MPPI: that and its weights' effective sample size); empty while nothing plans.
     #[func]
-    fn get_resample_count(&self) -> i64 {
-        self.current_plan()
-            .map_or(0, |p| p.diagnostics.count("resamples") as i64)
+    fn get_plan_diagnostics(&self) -> Dictionary<GString, f64> {
+        let mut named = Dictionary::new();
+        for (name, value) in self
+            .current_plan()
+            .map_or(&[][..], |p| &p.diagnostics.0[..])
+        {
+            named.set(&GString::from(*name), *value);
+        }
+        named
     }
 
     /// How the planning thread's plans reached the control steps since the ride was last

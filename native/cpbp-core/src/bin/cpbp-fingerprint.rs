@@ -9,6 +9,7 @@
 //! (10), another bike than the reference (a bike file, scenes/bike/bikes/*.tres).
 
 use cpbp_core::bike::{take_bike_argument, BikeParams, Placement, REFERENCE_BIKE};
+use cpbp_core::control::cpbp::RESAMPLES;
 use cpbp_core::control::learned::{project_policy, LoadedPolicy};
 use cpbp_core::control::{Plan, PlanWait};
 use cpbp_core::physics::PhysicsModel;
@@ -116,7 +117,7 @@ fn decisions(plan: &Plan) -> String {
         plan.step,
         plan.sequence,
         plan.best_cost,
-        plan.diagnostics.count("resamples"),
+        plan.diagnostics.count(RESAMPLES),
         plan.blowups,
         plan.paths,
         plan.best,

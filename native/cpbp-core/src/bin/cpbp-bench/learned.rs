@@ -43,14 +43,14 @@ pub fn inference_cost(sim: &Simulation, row: impl Fn(&str, String)) {
         })
     });
     row("  of which the features", format!("{features_us:.2} µs"));
-    let combined_ms = planning_ms(sim, ControllerKind::COMBINED, 15, 2).0;
+    let combined_ms = planning_ms(sim, ControllerKind::COMBINED, 15, 2).ms;
     row(
         "  combined N = 15 (2 threads) ÷ learned, per control step",
         format!("{:.0}×", combined_ms * 1000.0 / step_us),
     );
     // The guided planner's target is a third of combined-15's cost: N = 5 and below.
     for n in [3, 4, 5] {
-        let guided_ms = planning_ms(sim, ControllerKind::GUIDED, n, 2).0;
+        let guided_ms = planning_ms(sim, ControllerKind::GUIDED, n, 2).ms;
         row(
             &format!("  guided N = {n} (2 threads): ÷ learned; ÷ combined N = 15"),
             format!(

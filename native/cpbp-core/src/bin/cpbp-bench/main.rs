@@ -2,7 +2,8 @@
 //! Timings are medians of several runs so one noisy run does not move them.
 //! `cpbp-bench planning` prints only the game physics' planning table, for comparing two
 //! builds run alternately; `cpbp-bench learned` only the learned controller's cost;
-//! `cpbp-bench auto-n` only the automatic N under load.
+//! `cpbp-bench auto-n` only the automatic N under load; `cpbp-bench planners` only the
+//! planners side by side, with their diagnostics.
 //! `--bike FILE` (`make bench BIKE=FILE`) measures another bike than the reference.
 
 mod auto_n;
@@ -76,6 +77,7 @@ fn main() {
             return learned::inference_cost(&sim, row);
         }
         Some("auto-n") => return auto_n::under_load(),
+        Some("planners") => return planners_side_by_side(),
         _ => {}
     }
     println!("{:<58} {:>14}", "figure", "value");
@@ -155,12 +157,35 @@ fn planners_side_by_side() {
         .map(|k| format!("{:>10}", k.name()))
         .collect();
     println!("{:<14} {}", "trajectories", names.join(" "));
+    let mut diagnostics = Vec::new();
     for n in [5, 10, 20, 64] {
-        let cells: Vec<String> = planners
+        let timed: Vec<_> = planners
             .iter()
-            .map(|&kind| format!("{:>10.1}", planning_ms(&flat, kind, n, 2).0))
+            .map(|&kind| (kind, planning_ms(&flat, kind, n, 2)))
+            .collect();
+        let cells: Vec<String> = timed
+            .iter()
+            .map(|(_, t)| format!("{:>10.1}", t.ms))
             .collect();
         println!("{n:<14} {}", cells.join(" "));
+        if n == 20 {
+            diagnostics = timed;
+        }
+    }
+    // What the HUD's planner line shows of each plan, at N = 20.
+    println!("Their own numbers about a plan at N = 20 (means over the timed plans):");
+    for (kind, timed) in diagnostics {
+        let named: Vec<String> = timed
+            .diagnostics
+            .iter()
+            .map(|(name, value)| format!("{name} {value:.2}"))
+            .collect();
+        let named = if named.is_empty() {
+            "none".to_string()
+        } else {
+            named.join(", ")
+        };
+        println!("{:<14} {named}", kind.name());
     }
 }
 

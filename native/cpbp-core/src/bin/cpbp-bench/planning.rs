@@ -55,13 +55,14 @@ pub fn planning_table(model: PhysicsModel, references: Option<[f64; 2]>) {
     );
     let (mut largest_real_time, mut rows) = (0, Vec::new());
     for n in COUNTS {
-        let times: Vec<(f64, Vec<Vec<Controls>>)> = thread_counts
+        let times: Vec<Timed> = thread_counts
             .iter()
             .map(|&t| planning_ms(&flat, ControllerKind::COMBINED, n, t))
             .collect();
-        let (all, sequences) = times.last().expect("one thread count at least");
-        let alone = median(|| rollouts_alone_ms(&flat, sequences, most));
-        let cells: Vec<String> = times.iter().map(|(ms, _)| format!("{ms:>12.1}")).collect();
+        let last = times.last().expect("one thread count at least");
+        let all = &last.ms;
+        let alone = median(|| rollouts_alone_ms(&flat, &last.sequences, most));
+        let cells: Vec<String> = times.iter().map(|t| format!("{:>12.1}", t.ms)).collect();
         println!(
             "{n:<14} {} {alone:>15.1} ms {:>12.2}",
             cells.join(" "),
@@ -70,7 +71,7 @@ pub fn planning_table(model: PhysicsModel, references: Option<[f64; 2]>) {
         if *all <= control_period_ms(&flat) {
             largest_real_time = n;
         }
-        rows.push((n, times[0].0, *all));
+        rows.push((n, times[0].ms, *all));
     }
     println!(
         "largest N planning within the {:.0} ms control period on {most} thread(s): {largest_real_time}",
@@ -137,14 +138,20 @@ fn project(rows: &[(usize, f64, f64)], most: usize, period_ms: f64) {
     }
 }
 
-/// Median milliseconds per control step of planning controller `kind` with `n` trajectories,
-/// rolling out in the simulation's physics model, and the last plan's final trajectories.
-pub fn planning_ms(
-    sim: &Simulation,
-    kind: ControllerKind,
-    n: usize,
-    threads: usize,
-) -> (f64, Vec<Vec<Controls>>) {
+/// What timing a planner found.
+pub struct Timed {
+    /// Median milliseconds per control step.
+    pub ms: f64,
+    /// The last plan's final trajectories.
+    pub sequences: Vec<Vec<Controls>>,
+    /// The planner's diagnostics (`PlanResult::diagnostics`), each the mean over the
+    /// timed plans.
+    pub diagnostics: Vec<(&'static str, f64)>,
+}
+
+/// Planning controller `kind` with `n` trajectories, rolling out in the simulation's
+/// physics model, timed over several control steps.
+pub fn planning_ms(sim: &Simulation, kind: ControllerKind, n: usize, threads: usize) -> Timed {
     let model = sim.config().physics;
     let spec = kind.planner().expect("a planning controller");
     let config = PlanningConfig {
@@ -163,15 +170,28 @@ pub fn planning_ms(
     for _ in 0..3 {
         optimizer.controls(sim, &Goal::riding(0.0, drive)); // warm-up: memory, thread pool
     }
-    let mut samples: Vec<f64> = (0..9)
+    const PLANS: usize = 9;
+    let mut diagnostics: Vec<(&'static str, f64)> = Vec::new();
+    let mut samples: Vec<f64> = (0..PLANS)
         .map(|_| {
             let start = Instant::now();
             optimizer.controls(sim, &Goal::riding(0.0, drive));
-            start.elapsed().as_secs_f64() * 1000.0
+            let ms = start.elapsed().as_secs_f64() * 1000.0;
+            for &(name, value) in optimizer.last_plan().map_or(&[][..], |p| &p.diagnostics.0) {
+                match diagnostics.iter_mut().find(|(n, _)| *n == name) {
+                    Some((_, sum)) => *sum += value / PLANS as f64,
+                    None => diagnostics.push((name, value / PLANS as f64)),
+                }
+            }
+            ms
         })
         .collect();
     samples.sort_by(f64::total_cmp);
-    (samples[samples.len() / 2], optimizer.sequences())
+    Timed {
+        ms: samples[PLANS / 2],
+        sequences: optimizer.sequences(),
+        diagnostics,
+    }
 }
 
 /// Milliseconds to step a plan's final trajectories from the master's state in the

@@ -2,6 +2,9 @@
 
 use crate::control::{Diagnostics, PlanResult};
 
+/// The name C-PBP's plans give their resampling count among the diagnostics.
+pub const RESAMPLES: &str = "resamples";
+
 /// Sizes and tuning of the planner; defaults are the specification's.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CpbpConfig {
@@ -110,7 +113,7 @@ impl FrameResult {
             blowups: self.blowups,
             // Particle 1 replays the warm start (`WarmStart`).
             warm: self.warm_started.then_some(1),
-            diagnostics: Diagnostics(vec![("resamples", self.resamples as f64)]),
+            diagnostics: Diagnostics(vec![(RESAMPLES, self.resamples as f64)]),
         }
     }
 }

@@ -15,7 +15,7 @@ mod refinement;
 mod rollout;
 mod sequences;
 
-pub use config::{CpbpConfig, FrameResult, WarmStart, DEFAULT_SEED};
+pub use config::{CpbpConfig, FrameResult, WarmStart, DEFAULT_SEED, RESAMPLES};
 pub(crate) use frame::mix;
 pub(crate) use planner::rollout_pool;
 pub use planner::CpbpPlanner;

@@ -5,5 +5,7 @@
 mod planner;
 mod spline;
 
-pub use planner::{SamplingConfig, SamplingPlanner, SamplingUpdate};
+pub use planner::{
+    SamplingConfig, SamplingPlanner, SamplingUpdate, EFFECTIVE_SAMPLES, IMPROVEMENT,
+};
 pub use spline::Knots;

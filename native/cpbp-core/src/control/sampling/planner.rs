@@ -52,6 +52,10 @@ pub struct SamplingConfig {
     pub threads: usize,
 }
 
+/// The diagnostics' names (`SamplingPlanner::diagnostics`).
+pub const IMPROVEMENT: &str = "improvement";
+pub const EFFECTIVE_SAMPLES: &str = "effective samples";
+
 impl Default for SamplingConfig {
     fn default() -> Self {
         Self {
@@ -167,6 +171,7 @@ impl SamplingPlanner {
         self.note_applied(&control);
         self.phases = PlanPhases::measured(started, rolled_out, concluding);
         self.weights = weights;
+        let diagnostics = self.diagnostics(&totals, best);
         let blowups = rollouts.iter().filter(|r| r.blew_up).count();
         let trajectories = rollouts
             .into_iter()
@@ -185,8 +190,21 @@ impl SamplingPlanner {
             trajectories,
             blowups,
             warm: None,
-            diagnostics: Diagnostics::default(),
+            diagnostics,
         }
+    }
+
+    /// What the HUD and the bench show of a plan: how much the best sample bettered the
+    /// nominal plan (cost units; 0 when the nominal stayed the best), and for MPPI the
+    /// weights' effective sample size, 1/Σw² (1: one sample carried the update; N: all
+    /// of them alike, the temperature too high to tell them apart).
+    fn diagnostics(&self, totals: &[f64], best: usize) -> Diagnostics {
+        let mut named = vec![(IMPROVEMENT, totals[0] - totals[best])];
+        if let SamplingUpdate::Weighted { .. } = self.config.update {
+            let squares: f64 = self.weights.iter().map(|w| w * w).sum();
+            named.push((EFFECTIVE_SAMPLES, 1.0 / squares));
+        }
+        Diagnostics(named)
     }
 
     /// Candidate `i`: the nominal itself (i = 0), or the nominal with Gaussian noise on
