@@ -15,6 +15,7 @@ use super::spline::Knots;
 use crate::control::cpbp::{
     mix, rollout_pool, AppliedControls, Priors, RolloutSystem, DEFAULT_SEED,
 };
+use crate::control::planner_parameters::{BASELINE_KNOTS, BASELINE_NOISE};
 use crate::control::{Diagnostics, PlanPhases, PlanResult, Trajectory};
 
 /// How a frame's candidates make the next nominal plan.
@@ -57,12 +58,14 @@ pub const IMPROVEMENT: &str = "improvement";
 pub const EFFECTIVE_SAMPLES: &str = "effective samples";
 
 impl Default for SamplingConfig {
+    /// The knots and the noise are the schema's (`BASELINE_KNOTS`, `BASELINE_NOISE`),
+    /// which the game and the tools set.
     fn default() -> Self {
         Self {
             samples: 16,
             steps: 36,
-            knots: 6,
-            noise: 0.25,
+            knots: BASELINE_KNOTS.default_number() as usize,
+            noise: BASELINE_NOISE.default_number(),
             update: SamplingUpdate::Best,
             sampled: None,
             blowup_cost: 1e6,
