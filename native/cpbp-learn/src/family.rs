@@ -5,6 +5,8 @@
 use std::ops::Range;
 
 use cpbp_core::bike::{DriveInput, RiderPosition};
+use cpbp_core::control::TurnIntent;
+use cpbp_core::simulation::SimulationConfig;
 use rand::RngExt;
 use rand_pcg::Pcg64;
 
@@ -30,8 +32,9 @@ pub enum Family {
     Shoves,
     /// Full brakes from speed, as a road test rides them (issue 67: a network that saw
     /// nothing over 40 km/h fell in most full brakes from 90): up to 45–90 km/h on a
-    /// straight, on the flat or a slope of up to 15° either way, then the whole brake (7 in 10) or a firm one, straight or in a gentle
-    /// bend, to a standstill and a stand; then off again towards 20–50 km/h and a second
+    /// straight, on the flat or a slope of up to 15° either way, then the whole brake
+    /// (7 in 10) or a firm one, straight or in a bend taken at 5–25° of lean, to a
+    /// standstill and a stand; then off again towards 20–50 km/h and a second
     /// brake. Its episodes want the time to reach speed: `make train` rides them 24 s.
     Braking,
 }
@@ -231,11 +234,14 @@ fn draw_braking(rng: &mut Pcg64, steps: usize) -> Drawn {
         } else {
             rng.random_range(0.5..0.9)
         };
-        // A bend of a few tens of metres' radius at most at these speeds: the stick asks
-        // its lean from the speed, so a small stick is already a firm lean at 90 km/h.
+        // A bend the bike can take at the speed it set off for: the stick that asks 5–25°
+        // of lean there (the lean it asks shrinks with the speed as the brake works, as
+        // in the game). A stick drawn alone asked a 20 m bend at 90 km/h, 72° of lean.
         let stick = if rng.random::<f64>() < 0.4 {
             let side = if rng.random::<bool>() { 1.0 } else { -1.0 };
-            side * rng.random_range(0.02..0.15)
+            let lean = rng.random_range(5f64..25.0).to_radians();
+            let curvature = lean.tan() * gravity() / drive.max_speed.powi(2);
+            side * curvature / TurnIntent::default().max_curvature
         } else {
             0.0
         };
@@ -266,6 +272,11 @@ fn draw_braking(rng: &mut Pcg64, steps: usize) -> Drawn {
         start += rng.random_range(90..150);
     }
     (ground, segments, heading(rng))
+}
+
+/// The simulation's gravity (m/s²), which the stick's lean is figured with.
+fn gravity() -> f64 {
+    SimulationConfig::default().gravity.length()
 }
 
 fn draw_segment(rng: &mut Pcg64, start: usize) -> Segment {
