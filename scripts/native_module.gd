@@ -38,7 +38,7 @@ static func ode_configuration() -> String:
 
 
 ## The controllers players pick, by name, in menu order (empty when not loaded): the one
-## list, `ControllerKind::ALL` in the native core.
+## list, `ControllerKind::all()` in the native core.
 static func controller_names() -> PackedStringArray:
 	if not is_loaded():
 		return PackedStringArray()

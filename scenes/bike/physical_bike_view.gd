@@ -11,6 +11,13 @@ const RIDER_FIRST_BODY := BikeSimulation.LOWER_LEG
 ## The simulation to draw; by default the parent.
 @export var simulation_path: NodePath = ^".."
 
+## The physical_model setting (the game sets it by name): this view is drawn instead of
+## the visual one.
+var physical_model := false:
+	set(value):
+		physical_model = value
+		visible = value
+
 var _simulation: BikeSimulation
 ## Per shape: the body index it follows and its offset within that body.
 var _followers: Array[Dictionary] = []

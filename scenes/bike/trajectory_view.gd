@@ -14,6 +14,12 @@ const OTHER_COLOUR := Color(0.02, 0.02, 0.02)
 ## Draws the live plans of the simulation; off, only what `draw_paths` is given.
 @export var follows_simulation := true
 
+## The show_trajectories setting (the game sets it by name): whether it is drawn.
+var show_trajectories := true:
+	set(value):
+		show_trajectories = value
+		visible = value
+
 var _simulation: Node
 var _lines := ImmediateMesh.new()
 

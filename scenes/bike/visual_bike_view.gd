@@ -22,6 +22,13 @@ const BIKE_DOWN := BikeRestFrame.DOWN
 ## Drawn see-through (a ghost).
 @export var ghost := false
 
+## The physical_model setting (the game sets it by name): the physical view is drawn
+## instead of this one.
+var physical_model := false:
+	set(value):
+		physical_model = value
+		visible = not value
+
 var _simulation: BikeSimulation
 ## The bike as it stood when its drawing was built.
 var _frame: BikeRestFrame

@@ -50,6 +50,12 @@ const CLEARANCE := 0.3
 
 ## The bike to follow.
 var target: BikeSimulation
+## The camera setting (the game sets it by name): the mode.
+var camera: String:
+	get:
+		return mode
+	set(value):
+		mode = value
 ## Orbit around the bike: yaw (rad, positive to the left) and pitch (rad, positive up).
 var orbit := Vector2.ZERO
 

@@ -78,6 +78,8 @@ func _ready() -> void:
 		bike.transform = spawns[0].spawn_transform()
 	add_child(bike)
 	_driver.bike = bike
+	_driver.automatic = level.automatic
+	_driver.announced.connect(_hud.announce)
 	_camera.target = bike
 	_hud.bind(self)
 	_pause_menu.restart_requested.connect(restart)
@@ -239,34 +241,27 @@ func _on_controller_failed(reason: String) -> void:
 	_hud.announce(reason.left(1).to_upper() + reason.substr(1))
 
 
+## Hands setting `key` to every setting target with a property of its name, and the
+## ride's and the planners' to the bike node, whose own properties they are (the driver
+## holds the top speed too: it drives the bike's each tick). What a setting needs beyond
+## its value is its target's setter: the two bike views swap, a controller this bike does
+## not offer rides as arcade.
 func _apply_setting(key: StringName) -> void:
 	var value: Variant = Settings.get_value(key)
-	match key:
-		&"controller":
-			# A controller this bike does not offer (learned, on a bike without a model of
-			# its own) leaves the player's choice saved and rides with arcade.
-			if bike.get_offered_controller_names().has(value):
-				bike.controller = value
-			else:
-				bike.controller = &"arcade"
-				_hud.announce(
-					"%s is not offered on this bike: it has no learned model" % value.capitalize()
-				)
-		&"max_speed_kmh":
-			_driver.max_speed_kmh = value
-		&"auto_speed_kmh":
-			_driver.auto_speed_kmh = value
-		&"auto_accelerate":
-			_driver.auto_accelerate = value or level.automatic
-		&"show_trajectories":
-			bike.get_node(^"TrajectoryView").visible = value
-		&"camera":
-			_camera.mode = value
-		&"physical_model":
-			bike.get_node(^"PhysicalBikeView").visible = value
-			bike.get_node(^"VisualBikeView").visible = not value
-		_:
-			# The ride's and the planners' settings are the bike node's own properties.
-			if Settings.entries[key].owner in ["ride", "planner"]:
-				bike.set(key, value)
-	_driver.steering_locked = level.automatic
+	var targets := setting_targets()
+	if Settings.entries[key].owner in ["ride", "planner"]:
+		targets.push_front(bike)
+	for target: Object in targets:
+		if key in target:
+			target.set(key, value)
+
+
+## Where the game's and the display's settings go, by property name.
+func setting_targets() -> Array[Object]:
+	return [
+		_driver,
+		_camera,
+		bike.get_node(^"TrajectoryView"),
+		bike.get_node(^"PhysicalBikeView"),
+		bike.get_node(^"VisualBikeView"),
+	]

@@ -32,6 +32,26 @@ func after_each() -> void:
 	SettingsSandbox.leave()
 
 
+func test_every_game_and_display_setting_reaches_its_target_by_name() -> void:
+	# The level is chosen before the game is built (the start menu, then _ready).
+	var read_when_built: Array[StringName] = [&"level"]
+	for key: StringName in Settings.entries:
+		var owner: String = Settings.entries[key].owner
+		if owner not in ["game", "display"] or key in read_when_built:
+			continue
+		var targets := _game.setting_targets().filter(func(t: Object) -> bool: return key in t)
+		assert_false(targets.is_empty(), "%s reaches nothing" % key)
+	Settings.set_value(&"physical_model", true)
+	assert_true(_game.bike.get_node(^"PhysicalBikeView").visible, "the physical view shows")
+	assert_false(_game.bike.get_node(^"VisualBikeView").visible, "instead of the visual one")
+	Settings.set_value(&"show_trajectories", false)
+	assert_false(_game.bike.get_node(^"TrajectoryView").visible)
+	Settings.set_value(&"camera", "helmet")
+	assert_eq((_game.get_node(^"Camera") as FollowCamera).mode, "helmet")
+	Settings.set_value(&"max_speed_kmh", 55.0)
+	assert_eq((_game.get_node(^"Driver") as BikeDriver).max_speed_kmh, 55.0)
+
+
 func test_throttle_drives_the_bike_forward() -> void:
 	var start := _game.bike.get_center_of_mass()
 	Input.action_press(&"throttle")

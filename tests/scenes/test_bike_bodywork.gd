@@ -119,3 +119,18 @@ func test_a_bike_file_that_is_not_a_bike_rides_the_reference_bike_with_an_error(
 	await _drawn("res://tests/fixtures/bikes/missing.tres")
 	assert_null(_game.bike.bike, "the reference bike")
 	assert_true(_game.bike.is_running())
+
+
+func test_a_controller_the_bike_does_not_offer_rides_as_arcade_and_says_why() -> void:
+	# The pit bike has no learned model of its own: learned is not offered on it.
+	Settings.set_value(&"controller", "learned")
+	var announced: Array[String] = []
+	_game = GAME.instantiate() as Game
+	_game.level_path = LEVEL
+	_game.bike_path = PIT_BIKE
+	(_game.get_node(^"Driver") as BikeDriver).announced.connect(announced.append)
+	add_child(_game)
+	await wait_physics_frames(2)
+	assert_eq(_game.bike.controller, "arcade", "rides with arcade")
+	assert_eq(Settings.get_value(&"controller"), "learned", "the player's choice stays saved")
+	assert_eq(announced, ["Learned is not offered on this bike: it has no learned model"])

@@ -19,7 +19,7 @@ THESIS_CONTROLLERS = (
     "combined-10",
     "combined-15",
 )
-# The controller registry (cpbp_core::ride::ControllerKind::ALL) as the native tests
+# The controller registry (cpbp_core::ride::ControllerKind::BUILT_IN) as the native tests
 # write it into controllers.json and hold it equal: every controller's name, menu label,
 # whether players pick it and whether it plans. The worker also refuses a name the
 # registry does not know. The trajectory counts the ride takes are the settings schema's.

@@ -10,9 +10,8 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::Placement;
-use cpbp_core::control::planner_parameters::{
-    BASELINE_KNOTS, BASELINE_NOISE, BASELINE_STEERING_ONLY, MPPI_TEMPERATURE,
-};
+use cpbp_core::control::mppi::MPPI_TEMPERATURE;
+use cpbp_core::control::sampling::{BASELINE_KNOTS, BASELINE_NOISE, BASELINE_STEERING_ONLY};
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -135,9 +134,9 @@ fn ride(kind: ControllerKind, n: usize, settings: &Baseline, seed: u64, kmh: f64
     };
     let sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
     let mut ride = Ride::new(sim, kind);
-    ride.planner.optimizer.trajectories = n;
-    ride.planner.optimizer.seed = seed;
-    let parameters = &mut ride.planner.optimizer.parameters;
+    ride.planner.planning.trajectories = n;
+    ride.planner.planning.seed = seed;
+    let parameters = &mut ride.planner.planning.parameters;
     for (setting, value) in [
         (BASELINE_KNOTS, Value::Int(settings.knots as i64)),
         (BASELINE_NOISE, Value::Float(settings.noise)),

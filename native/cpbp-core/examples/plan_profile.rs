@@ -7,7 +7,7 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::{Controls, DriveInput, Placement, POSE_GAIN};
-use cpbp_core::control::{planner, Goal, PlanningConfig, PlanningSession};
+use cpbp_core::control::{cpbp, Goal, PlanningConfig, PlanningSession};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
@@ -59,7 +59,7 @@ fn main() {
         ..PlanningConfig::default()
     }
     .rolling_out_in(physics);
-    let mut optimizer = PlanningSession::new(&sim, &planner::COMBINED, config);
+    let mut optimizer = PlanningSession::new(&sim, &cpbp::COMBINED, config);
     let started = std::time::Instant::now();
     for _ in 0..plans {
         optimizer.controls(&sim, &Goal::riding(0.0, drive));

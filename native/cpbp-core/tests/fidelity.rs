@@ -4,10 +4,10 @@
 mod common;
 
 use common::{ask_lean, ride_at, FRAMES_PER_SECOND};
-use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::control::PlanningConfig;
 use cpbp_core::ode::Solver;
 use cpbp_core::physics::RolloutStepping;
+use cpbp_core::ride::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::ride::{ControllerKind, Ride};
 
 /// Half a second and the planning horizon (1.2 s), in control steps.

@@ -1,11 +1,12 @@
-//! The controller registry is the one list: a new controller or planner is an entry (its
-//! own file) and a line in `ControllerKind::ALL`; shown here with throwaway ones that ride
-//! without being registered. The tools' copy of the list (for the Python experiment
-//! tooling) is checked against it.
+//! The controller registry is the one list: a new controller is an entry (its own file,
+//! a planner's own folder) and a line in the registry; shown here with throwaway ones, a
+//! controller that rides without being registered and a planner registered as a mod
+//! registers one, whose parameter then reaches every reader of the schema. (The tools'
+//! copies of the built-in registry and schema are checked in tests/tools_copies.rs, a
+//! process of its own, so this file's registration never reaches them.)
 
 mod common;
 
-use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use cpbp_core::bike::{Controls, CONTROL_DIM};
@@ -15,7 +16,7 @@ use cpbp_core::control::{
 };
 use cpbp_core::ode::WorldState;
 use cpbp_core::ride::{
-    Controller, ControllerEntry, ControllerKind, Drives, Intent, Ride, RideState,
+    schema, Controller, ControllerEntry, ControllerKind, Drives, Intent, Ride, RideState,
 };
 use cpbp_core::settings::{self, DefaultValue, Range, Setting, Value};
 
@@ -76,6 +77,8 @@ const STILL_BAR_COST: Setting = Setting {
     description: "The cost the still-bar planner marks its plans with (a test's).",
     default: DefaultValue::Float(42.0),
     range: Some(Range::new(0.0, 100.0, 1.0)),
+    player: true,
+    menu: "Planner",
     ..settings::BASE
 };
 
@@ -138,12 +141,31 @@ static STILL_BAR: ControllerEntry = ControllerEntry {
 };
 
 #[test]
-fn a_new_planner_is_a_spec_and_an_entry_and_plans_on_the_planning_thread() {
-    let kind = ControllerKind::new(&STILL_BAR);
+fn a_new_planner_is_registered_as_a_line_and_its_parameter_joins_the_schema() {
+    assert_eq!(
+        schema::find("still_bar_cost"),
+        None,
+        "not before it is registered"
+    );
+    let kind = ControllerKind::register(&STILL_BAR).expect("a new name");
     assert!(kind.plans());
+    assert!(
+        ControllerKind::register(&STILL_BAR).is_err(),
+        "the name is taken"
+    );
+    assert_eq!(ControllerKind::from_name("still_bar"), Some(kind));
+    assert!(ControllerKind::all().contains(&kind));
+    // Its parameter reaches every reader of the schema: the game node's properties and
+    // the pause menu (its group), the settings files and the tools (the JSON).
+    assert_eq!(schema::find("still_bar_cost"), Some(STILL_BAR_COST));
+    let on_the_node = schema::values_of(|s| s.owner.on_the_node());
+    assert_eq!(on_the_node.get("still_bar_cost"), Some(&Value::Float(42.0)));
+    assert!(schema::schema_json().contains("\"name\":\"still_bar_cost\""));
+    assert!(schema::schema_json().contains("\"menu\":\"Planner\""));
+
     let mut ride = Ride::new(common::flat_ride(), kind);
     // Its own parameter is the ride's to set, as the schema's settings are.
-    let parameters = &mut ride.planner.optimizer.parameters;
+    let parameters = &mut ride.planner.planning.parameters;
     assert_eq!(parameters.get("still_bar_cost"), Some(&Value::Float(42.0)));
     assert_eq!(
         parameters.set("still_bar_cost", Value::Float(7.0)),
@@ -163,53 +185,31 @@ fn a_new_planner_is_a_spec_and_an_entry_and_plans_on_the_planning_thread() {
     assert_eq!(ride.late_plans(), 0);
 }
 
-/// The registry as the Python tools read it (tools/cpbp_experiment/controllers.json).
-fn registry_json() -> String {
-    let entries: Vec<String> = ControllerKind::ALL
-        .iter()
-        .map(|k| {
-            format!(
-                "    {{\"name\": \"{}\", \"label\": \"{}\", \"offered\": {}, \"plans\": {}}}",
-                k.name(),
-                k.label(),
-                k.offered(),
-                k.plans()
-            )
-        })
-        .collect();
-    format!(
-        "{{\n  \"controllers\": [\n{}\n  ]\n}}\n",
-        entries.join(",\n")
-    )
-}
+/// A parameter whose name another setting has.
+const CLASHING: Setting = Setting {
+    name: "horizon",
+    label: "A clash",
+    description: "A test's parameter under a taken name.",
+    ..STILL_BAR_COST
+};
 
-/// Holds the tools' copy `file` (in tools/cpbp_experiment/) equal to `expected`, what
-/// `source` makes of it; with UPDATE_REGISTRY set, writes it first.
-fn assert_tools_copy_is_current(file: &str, expected: &str, source: &str) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../tools/cpbp_experiment")
-        .join(file);
-    if std::env::var_os("UPDATE_REGISTRY").is_some() {
-        std::fs::write(&path, expected).expect("write the tools' copy");
-    }
-    let committed = std::fs::read_to_string(&path).unwrap_or_default();
-    assert_eq!(
-        committed,
-        expected,
-        "{} differs from {source}: run `UPDATE_REGISTRY=1 tools/cargo test --release -p \
-         cpbp-core --test registry` and commit it",
-        path.display()
-    );
-}
+static CLASHING_PLANNER: PlannerSpec = PlannerSpec {
+    parameters: &[CLASHING],
+    build: |_, steps| Box::new(StillBar { steps, cost: 0.0 }),
+    follows: Follows::Nothing,
+};
+
+static CLASHING_ENTRY: ControllerEntry = ControllerEntry {
+    name: "clashing",
+    label: "Clashing (a test's planner)",
+    offered: false,
+    uses_network: false,
+    drives: Drives::Plans(&CLASHING_PLANNER),
+};
 
 #[test]
-fn the_tools_copy_of_the_registry_is_current() {
-    assert_tools_copy_is_current("controllers.json", &registry_json(), "ControllerKind::ALL");
-}
-
-/// The settings schema as the Python tools read it (tools/cpbp_experiment/settings.json).
-#[test]
-fn the_tools_copy_of_the_settings_schema_is_current() {
-    let schema = cpbp_core::settings::schema_json();
-    assert_tools_copy_is_current("settings.json", &schema, "cpbp_core::settings");
+fn a_planner_whose_parameter_takes_another_settings_name_is_refused() {
+    let why = ControllerKind::register(&CLASHING_ENTRY).unwrap_err();
+    assert!(why.contains("horizon"), "{why}");
+    assert_eq!(ControllerKind::from_name("clashing"), None);
 }

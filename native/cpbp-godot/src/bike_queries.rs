@@ -45,7 +45,7 @@ impl BikeSimulation {
     const POSE_FLOATS: i64 = 7;
 
     /// The controllers players pick, by name, in the order menus list them and the game
-    /// cycles through them (the one list: `cpbp_core::ride::ControllerKind::ALL`).
+    /// cycles through them (the one list: `cpbp_core::ride::ControllerKind::all`).
     #[func]
     fn controller_names() -> PackedStringArray {
         controller_choice::offered_names()

@@ -23,7 +23,7 @@ impl BikeSimulation {
         if kind.uses_network() && !self.told_other_bike {
             let other = self
                 .sim()
-                .and_then(|sim| planner.optimizer.policy.other_bike(&sim.config().bike));
+                .and_then(|sim| planner.network.other_bike(&sim.config().bike));
             if let Some(why) = other {
                 godot_warn!("BikeSimulation: {why}");
                 self.told_other_bike = true;
@@ -64,7 +64,7 @@ impl BikeSimulation {
         let physics = self
             .sim()
             .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
-        let mut optimizer = PlanningConfig {
+        let mut planning = PlanningConfig {
             trajectories: values.count(&TRAJECTORIES),
             horizon: values.number(&HORIZON_S),
             tolerances: CostTolerances {
@@ -74,16 +74,16 @@ impl BikeSimulation {
             threads: values.count(&PLANNING_THREADS),
             seed: values.integer(&PLANNER_SEED) as u64,
             parameters: values.clone(),
-            policy: self.policy(),
             ..PlanningConfig::default()
         }
         .rolling_out_in(physics);
         let rollout_substeps = values.count(&ROLLOUT_SUBSTEPS);
         if rollout_substeps > 0 {
-            optimizer.rollout_stepping = RolloutStepping::uniform(rollout_substeps);
+            planning.rollout_stepping = RolloutStepping::uniform(rollout_substeps);
         }
         PlannerSettings {
-            optimizer,
+            planning,
+            network: self.policy(),
             auto_trajectories: values.flag(&AUTO_TRAJECTORIES),
             wait: if values.flag(&WAIT_FOR_EVERY_PLAN) {
                 PlanWait::EveryPlan

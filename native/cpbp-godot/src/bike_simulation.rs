@@ -133,7 +133,7 @@ impl INode3D for BikeSimulation {
     }
 
     fn on_property_get_revert(&self, property: StringName) -> Option<Variant> {
-        let setting = settings::find(&property.to_string())?;
+        let setting = cpbp_core::ride::schema::find(&property.to_string())?;
         self.settings.get(setting.name)?;
         Some(node_settings::to_variant(&setting.default.into()))
     }

@@ -26,7 +26,7 @@ impl GodotConvert for ControllerChoice {
         GodotShape::Enum {
             variant_type: VariantType::STRING,
             enumerators: Cow::Owned(
-                ControllerKind::ALL
+                ControllerKind::all()
                     .iter()
                     .map(|kind| EnumeratorShape::new_string(kind.name()))
                     .collect(),
@@ -48,7 +48,7 @@ impl ToGodot for ControllerChoice {
 impl FromGodot for ControllerChoice {
     fn try_from_godot(name: GString) -> Result<Self, ConvertError> {
         kind_named(&name).map(Self).ok_or_else(|| {
-            let known: Vec<&str> = ControllerKind::ALL.iter().map(|k| k.name()).collect();
+            let known: Vec<&str> = ControllerKind::all().iter().map(|k| k.name()).collect();
             ConvertError::new(format!(
                 "no controller is called \"{name}\" (the registry has {})",
                 known.join(", ")
@@ -91,9 +91,9 @@ pub fn offered_names() -> PackedStringArray {
 
 /// The controllers players pick that `usable` lets through, by name, in the menus' order.
 pub fn offered_names_where(usable: impl Fn(ControllerKind) -> bool) -> PackedStringArray {
-    ControllerKind::ALL
-        .iter()
-        .filter(|k| k.offered() && usable(**k))
+    ControllerKind::all()
+        .into_iter()
+        .filter(|k| k.offered() && usable(*k))
         .map(|k| GString::from(k.name()))
         .collect()
 }

@@ -3,13 +3,14 @@
 //! unit, default to revert to), so the inspector, scenes and scripts reach each of them
 //! with no field written out for it. The schema itself goes to GDScript as dictionaries.
 
-use cpbp_core::settings::{self, DefaultValue, Range, Setting, SettingValues, Value};
+use cpbp_core::ride::schema;
+use cpbp_core::settings::{DefaultValue, Range, Setting, SettingValues, Value};
 use godot::prelude::*;
 use godot::register::info::{PropertyHint, PropertyHintInfo, PropertyInfo, PropertyUsageFlags};
 
 /// The settings the game node holds, at their defaults.
 pub(crate) fn node_settings() -> SettingValues {
-    SettingValues::of(|s| s.owner.on_the_node() && !matches!(s.default, DefaultValue::Text(_)))
+    schema::values_of(|s| s.owner.on_the_node() && !matches!(s.default, DefaultValue::Text(_)))
 }
 
 pub(crate) fn to_variant(value: &Value) -> Variant {
@@ -82,7 +83,7 @@ pub(crate) fn property_list(values: &SettingValues) -> Vec<PropertyInfo> {
 
 /// The schema as GDScript reads it: one dictionary per setting.
 pub(crate) fn schema_dictionaries() -> Array<VarDictionary> {
-    settings::all().iter().map(dictionary).collect()
+    schema::all().iter().map(dictionary).collect()
 }
 
 fn dictionary(setting: &Setting) -> VarDictionary {

@@ -1,6 +1,7 @@
 //! `SettingsSchema`: the core's settings schema for GDScript (the settings file, the
 //! menus) and for the tools' copy of it.
 
+use cpbp_core::ride::schema;
 use cpbp_core::settings::{self, DefaultValue, Owner, Range, Setting};
 use godot::prelude::*;
 
@@ -28,7 +29,7 @@ impl SettingsSchema {
     /// The schema as the Python tools read it (tools/cpbp_experiment/settings.json).
     #[func]
     fn to_json() -> GString {
-        GString::from(settings::schema_json().as_str())
+        GString::from(schema::schema_json().as_str())
     }
 
     /// Adds a setting for the rest of the run (a mod's, or a test's), from a dictionary
@@ -37,7 +38,7 @@ impl SettingsSchema {
     /// settings file and the pause menu (player), the tools' JSON.
     #[func]
     fn extend(entry: VarDictionary) -> GString {
-        match setting_of(&entry).and_then(settings::extend) {
+        match setting_of(&entry).and_then(schema::extend) {
             Ok(()) => GString::new(),
             Err(why) => GString::from(why.as_str()),
         }

@@ -8,10 +8,10 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::{BikeParams, Controls, DriveInput, Placement, RiderPosition};
+use cpbp_core::control::cpbp::COMBINED;
 use cpbp_core::control::learned::{
     features, output_entries, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT,
 };
-use cpbp_core::control::planner::COMBINED;
 use cpbp_core::control::{Goal, PlanningConfig, PlanningSession, TurnIntent};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};

@@ -2,13 +2,14 @@
 //! target angular velocity and force directly.
 
 use super::controls::{index, Controls, ForceClass};
+use crate::settings::MAX_SPEED_KMH;
 
-/// The fastest full throttle may be set to drive towards (km/h): the speed setting's top
-/// (`settings::MAX_SPEED_KMH`) and the bound every drive input is held to.
-pub const TOP_SPEED_KMH: f64 = 90.0;
+/// The fastest full throttle may be set to drive towards (km/h), the bound every drive
+/// input is held to: the speed setting's top.
+pub const TOP_SPEED_KMH: f64 = MAX_SPEED_KMH.limit().max;
 /// What full throttle drives towards unless the player sets otherwise (km/h): the speed
-/// setting's default (`settings::MAX_SPEED_KMH`) and the drive's.
-pub const DEFAULT_MAX_SPEED_KMH: f64 = 40.0;
+/// setting's default.
+pub const DEFAULT_MAX_SPEED_KMH: f64 = MAX_SPEED_KMH.default_number();
 
 /// What the player's triggers ask of the rear wheel.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -47,7 +47,7 @@ fn main() {
     }
     let bike = bike.map_or_else(BikeParams::default, |b| b.params);
     for physics in PhysicsModel::ALL {
-        for kind in ControllerKind::ALL.iter().copied().filter(|k| k.plans()) {
+        for kind in ControllerKind::all().into_iter().filter(|k| k.plans()) {
             let (plans, hash) = fingerprint(physics, kind, particles, (&bike, &policy));
             println!(
                 "{:<8} {:<10} {plans:>3} plans {hash:016x}",
@@ -77,9 +77,9 @@ fn fingerprint(
     };
     let sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
     let mut ride = Ride::new(sim, kind);
-    ride.planner.optimizer.trajectories = particles;
-    ride.planner.optimizer.threads = 2;
-    ride.planner.optimizer.policy = policy.clone();
+    ride.planner.planning.trajectories = particles;
+    ride.planner.planning.threads = 2;
+    ride.planner.network = policy.clone();
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(10.0));
     let mut hash = Fnv::default();

@@ -204,8 +204,10 @@ impl RolloutSystem for BikeRollout {
 }
 
 /// Priors for sampling the bike's controls: joint velocities around zero, steering more
-/// freely than the rider's joints, force tunings near full strength.
-pub fn bike_priors(mutation_scale: f64) -> Priors {
+/// freely than the rider's joints, force tunings near full strength. C-PBP mutates the
+/// sequences it follows by its own scale of σ0 (`cpbp::MUTATION_SCALE`); until it sets
+/// one, σm = σ0.
+pub fn bike_priors() -> Priors {
     let mut mean = vec![0.0; CONTROL_DIM];
     let mut sigma_static = vec![1.0; CONTROL_DIM];
     let mut sigma_smooth1 = vec![0.5; CONTROL_DIM];
@@ -234,7 +236,7 @@ pub fn bike_priors(mutation_scale: f64) -> Priors {
         sigma_static,
         sigma_smooth1,
         sigma_smooth2,
-        mutation_scale,
+        mutation_scale: 1.0,
         lower: LOWER.to_vec(),
         upper: UPPER.to_vec(),
         planned,

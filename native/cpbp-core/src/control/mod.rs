@@ -3,13 +3,12 @@
 mod arcade;
 mod bike_rollout;
 pub mod cpbp;
-pub mod fidelity;
 mod goal;
 mod lean;
 pub mod learned;
+pub mod mppi;
 mod plan_result;
 pub mod planner;
-pub mod planner_parameters;
 mod planning_session;
 mod planning_thread;
 pub mod sampling;

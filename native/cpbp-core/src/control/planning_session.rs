@@ -3,9 +3,11 @@
 //! master, one per trajectory, with the same cost; the arcade controller's memory is kept
 //! in step with the master for the planners whose trajectory 1 follows it.
 
+use std::sync::Arc;
+
 use super::arcade::ArcadeController;
 use super::bike_rollout::{BikeRollout, CostTolerances, RolloutPolicy};
-use super::learned::LoadedPolicy;
+use super::learned::PolicyNetwork;
 use super::plan_result::{PlanPhases, PlanResult};
 use super::planner::{BikePlanner, Follows, PlannerSpec};
 use super::Goal;
@@ -42,9 +44,6 @@ pub struct PlanningConfig {
     /// The planners' own parameters by name (`PlannerSpec::parameters`): each planner
     /// reads its own, at its default where this holds none.
     pub parameters: SettingValues,
-    /// The network the guided planner's trajectory 1 follows (and the learned
-    /// controller drives with).
-    pub policy: LoadedPolicy,
 }
 
 impl Default for PlanningConfig {
@@ -59,7 +58,6 @@ impl Default for PlanningConfig {
             seed: settings::PLANNER_SEED.default_number() as u64,
             threads: 0,
             parameters: SettingValues::none(),
-            policy: LoadedPolicy::default(),
         }
     }
 }
@@ -91,6 +89,8 @@ pub struct PlanningSession {
     planner: Box<dyn BikePlanner>,
     rollouts: Vec<BikeRollout>,
     arcade: ArcadeController,
+    /// The network trajectory 1 follows when the spec follows one (`follow`).
+    network: Option<Arc<PolicyNetwork>>,
     last: Option<PlanResult>,
 }
 
@@ -104,6 +104,7 @@ impl PlanningSession {
             spec,
             rollouts: Vec::new(),
             arcade: ArcadeController::default(),
+            network: None,
             last: None,
             config,
         };
@@ -137,6 +138,12 @@ impl PlanningSession {
                 policy: None,
             });
         }
+    }
+
+    /// The network the ride hands a planner that follows one (guided mode); with none,
+    /// it follows the arcade controller. Planners that follow nothing ignore it.
+    pub fn follow(&mut self, network: Option<Arc<PolicyNetwork>>) {
+        self.network = network;
     }
 
     /// Forgets previous plans (after a reset or a lift).
@@ -199,8 +206,7 @@ impl PlanningSession {
         // Combined mode: particle 1 rides with the arcade controller, starting from the
         // master's controller memory (taken before this step updates it); guided mode:
         // with the network (the arcade controller while there is none).
-        let network = self.config.policy.network().cloned();
-        let followed = match (self.spec.follows, network) {
+        let followed = match (self.spec.follows, self.network.clone()) {
             (Follows::Nothing, _) => None,
             (Follows::Network, Some(network)) => Some(RolloutPolicy::Network(network)),
             (Follows::Arcade | Follows::Network, _) => Some(RolloutPolicy::Arcade(self.arcade)),

@@ -9,12 +9,14 @@
 //! ride to report.
 
 use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender};
+use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use glam::DVec3;
 
 use super::arcade::ArcadeController;
+use super::learned::PolicyNetwork;
 use super::plan_result::{Diagnostics, PlanPhases};
 use super::planner::PlannerSpec;
 use super::planning_session::{PlanningConfig, PlanningSession};
@@ -39,6 +41,7 @@ struct Request {
     applied: Controls,
     goal: Goal,
     config: PlanningConfig,
+    network: Option<Arc<PolicyNetwork>>,
     reset: bool,
 }
 
@@ -177,7 +180,14 @@ impl PlanningThread {
     }
 
     /// The controls for the master's next step; call once per control step, then step.
-    pub fn controls(&mut self, sim: &Simulation, goal: &Goal, config: &PlanningConfig) -> Controls {
+    /// `network` is what a planner that follows one (guided) follows.
+    pub fn controls(
+        &mut self,
+        sim: &Simulation,
+        goal: &Goal,
+        config: &PlanningConfig,
+        network: Option<&Arc<PolicyNetwork>>,
+    ) -> Controls {
         self.take_plan();
         // Run every step, used or not, so its memory is in step with the master whenever
         // a plan is missing.
@@ -195,6 +205,7 @@ impl PlanningThread {
                 applied: controls,
                 goal: *goal,
                 config: config.clone(),
+                network: network.cloned(),
                 reset: std::mem::take(&mut self.reset_pending),
             };
             if let Some(sender) = &self.requests {
@@ -310,6 +321,7 @@ fn plan_requests(
         if request.reset {
             optimizer.reset();
         }
+        optimizer.follow(request.network);
         optimizer.note_applied(&request.applied);
         optimizer.controls(&replica, &request.goal);
         let Some(result) = optimizer.last_plan() else {

@@ -6,6 +6,7 @@
 use std::time::Duration;
 
 use crate::bike::{Controls, DriveInput, RiderPosition};
+use crate::control::learned::LoadedPolicy;
 use crate::control::{Goal, HandoverStats, Plan, PlanWait, PlanningConfig};
 use crate::settings;
 use crate::simulation::Simulation;
@@ -88,11 +89,16 @@ pub trait Controller: Send {
     }
 }
 
-/// How the planners plan: the optimizer's settings and how long the ride waits for a plan.
+/// How the planners plan: the planning settings, the learned network and how long the
+/// ride waits for a plan.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlannerSettings {
-    /// `optimizer.trajectories` is N, or where the automatic choice starts from.
-    pub optimizer: PlanningConfig,
+    /// Every planner's settings; `planning.trajectories` is N, or where the automatic
+    /// choice starts from.
+    pub planning: PlanningConfig,
+    /// The learned network: the learned controller drives with it, and the ride hands it
+    /// to a planner that follows it (guided mode).
+    pub network: LoadedPolicy,
     pub wait: PlanWait,
     /// Move N while riding to what this machine plans in time (`AutoTrajectories`).
     /// Only where the ride waits at most a while for a plan: a ride that waits for every
@@ -113,10 +119,12 @@ pub const GAME_PLAN_WAIT: Duration =
     Duration::from_millis(settings::PLAN_WAIT_MS.default_number() as u64);
 
 impl Default for PlannerSettings {
-    /// The game's: the optimizer's defaults, waiting at most `GAME_PLAN_WAIT` at a step.
+    /// The game's: the planners' defaults, no network, waiting at most `GAME_PLAN_WAIT`
+    /// at a step.
     fn default() -> Self {
         Self {
-            optimizer: PlanningConfig::default(),
+            planning: PlanningConfig::default(),
+            network: LoadedPolicy::default(),
             wait: PlanWait::AtMost(GAME_PLAN_WAIT),
             auto_trajectories: settings::AUTO_TRAJECTORIES.default_number() != 0.0,
         }

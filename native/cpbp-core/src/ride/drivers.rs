@@ -61,7 +61,7 @@ impl LearnedDriver {
 impl Controller for LearnedDriver {
     fn controls(&mut self, state: &RideState<'_>, _intent: &Intent) -> Controls {
         let arcade = self.arcade.controls_of(state.sim, &state.goal);
-        let policy = &state.planner.optimizer.policy;
+        let policy = &state.planner.network;
         let Some(network) = policy.network() else {
             let why = policy.problem().unwrap_or("no learned model");
             self.note(why, || format!("{why}; arcade steers"));
@@ -149,7 +149,7 @@ impl PlannerDriver {
             anytime: PlanningThread::new(sim, spec, planner.wait),
             auto: None,
             timed_plan: None,
-            trajectories: planner.optimizer.trajectories,
+            trajectories: planner.planning.trajectories,
             follows_network: spec.follows == Follows::Network,
             failure: None,
             failure_state: (false, false),
@@ -159,7 +159,7 @@ impl PlannerDriver {
     /// The automatic N for the next request, while the settings ask for one (it starts
     /// afresh from the setting's N when that changes).
     fn automatic(&mut self, settings: &PlannerSettings, period_s: f64) -> Option<usize> {
-        let start = settings.optimizer.trajectories;
+        let start = settings.planning.trajectories;
         if !settings.picks_trajectories() {
             self.auto = None;
             return None;
@@ -209,20 +209,27 @@ impl PlannerDriver {
 impl Controller for PlannerDriver {
     fn controls(&mut self, state: &RideState<'_>, _intent: &Intent) -> Controls {
         self.anytime.wait = state.planner.wait;
-        let mut config = state.planner.optimizer.clone();
+        let mut config = state.planner.planning.clone();
         let period = state.sim.config().control_dt;
         if let Some(n) = self.automatic(state.planner, period) {
             config.trajectories = n;
         }
         self.trajectories = config.trajectories;
         let late_before = self.anytime.stats.late;
-        let mut controls = self.anytime.controls(state.sim, &state.goal, &config);
+        let network = state
+            .planner
+            .network
+            .network()
+            .filter(|_| self.follows_network);
+        let mut controls = self
+            .anytime
+            .controls(state.sim, &state.goal, &config, network);
         // The triggers act at once, as they do for every controller: the plan was made
         // a step ago, with the triggers as they were then.
         let radius = state.sim.bike().params().wheel_radius;
         state.goal.drive.apply(radius, &mut controls);
         self.note_step(self.anytime.stats.late > late_before);
-        self.note_failure(&config.policy);
+        self.note_failure(&state.planner.network);
         controls
     }
 

@@ -6,8 +6,10 @@
 mod auto_trajectories;
 mod controller;
 mod drivers;
+pub mod fidelity;
 pub mod limits;
 mod registry;
+pub mod schema;
 
 pub use auto_trajectories::AutoTrajectories;
 pub use controller::{Controller, Intent, PlannerSettings, RideState, GAME_PLAN_WAIT};
@@ -47,9 +49,9 @@ impl Ride {
     /// A ride of `sim` driven by a `kind` controller, with the game's planner settings.
     pub fn new(sim: Simulation, kind: ControllerKind) -> Self {
         let mut planner = PlannerSettings::default();
-        planner.optimizer = planner.optimizer.rolling_out_in(sim.config().physics);
+        planner.planning = planner.planning.rolling_out_in(sim.config().physics);
         if let Some(spec) = kind.planner() {
-            planner.optimizer.parameters.include(spec.parameters);
+            planner.planning.parameters.include(spec.parameters);
         }
         let turn = TurnIntent::for_bike(&sim.config().bike);
         Self {

@@ -2,15 +2,21 @@
 //! experiment, the scenario tool and the tests all read it (GDScript and the Python tools
 //! through the native module). A controller is an entry: its stable name, what menus
 //! show, whether players pick it, and how it drives (by itself on the game thread, or a
-//! planner on the planning thread). Adding one is its own file with its entry and one
-//! line in [`ControllerKind::ALL`].
+//! planner on the planning thread). Adding one is its own file (a planner: its own
+//! folder, `control/<planner>/`) with its entry and one line in
+//! [`ControllerKind::BUILT_IN`]; a mod, or a test, registers its own at run time
+//! ([`ControllerKind::register`]) and it then reaches every reader as a built-in does,
+//! its planner's parameters included (`ride::schema`).
 
 use std::fmt;
 use std::hash::{Hash, Hasher};
+use std::sync::{PoisonError, RwLock};
 
 use super::controller::{Controller, PlannerSettings};
 use super::drivers::{ArcadeDriver, LearnedDriver, ManualDriver, PlannerDriver};
-use crate::control::{planner, PlannerSpec};
+use super::schema;
+use crate::control::{cpbp, mppi, sampling, PlannerSpec};
+use crate::settings::Setting;
 use crate::simulation::Simulation;
 
 /// A controller's entry in the registry.
@@ -48,7 +54,7 @@ impl ControllerKind {
         label: "Optimizer (C-PBP)",
         offered: true,
         uses_network: false,
-        drives: Drives::Plans(&planner::OPTIMIZER),
+        drives: Drives::Plans(&cpbp::OPTIMIZER),
     });
     /// C-PBP warm-started with the arcade controller's trajectory.
     pub const COMBINED: Self = Self(&ControllerEntry {
@@ -56,7 +62,7 @@ impl ControllerKind {
         label: "Combined (C-PBP + arcade)",
         offered: true,
         uses_network: false,
-        drives: Drives::Plans(&planner::COMBINED),
+        drives: Drives::Plans(&cpbp::COMBINED),
     });
     /// The PD controller on the steering of the thesis (§4.3.2).
     pub const ARCADE: Self = Self(&ControllerEntry {
@@ -72,7 +78,7 @@ impl ControllerKind {
         label: "Predictive sampling (baseline)",
         offered: true,
         uses_network: false,
-        drives: Drives::Plans(&planner::SAMPLING),
+        drives: Drives::Plans(&sampling::SAMPLING),
     });
     /// MPPI (a baseline planner).
     pub const MPPI: Self = Self(&ControllerEntry {
@@ -80,7 +86,7 @@ impl ControllerKind {
         label: "MPPI (baseline)",
         offered: true,
         uses_network: false,
-        drives: Drives::Plans(&planner::MPPI),
+        drives: Drives::Plans(&mppi::MPPI),
     });
     /// The network distilled from the planner (issue 34): the planner's skill at the
     /// cost of a few matrix products.
@@ -98,7 +104,7 @@ impl ControllerKind {
         label: "Guided (C-PBP + network)",
         offered: true,
         uses_network: true,
-        drives: Drives::Plans(&planner::GUIDED),
+        drives: Drives::Plans(&cpbp::GUIDED),
     });
     /// Nobody balances: the bar follows the steering rate input (for inspecting physics).
     pub const MANUAL: Self = Self(&ControllerEntry {
@@ -109,8 +115,9 @@ impl ControllerKind {
         drives: Drives::Itself(ManualDriver::boxed),
     });
 
-    /// The registry, in the order the menus list them and the game cycles through them.
-    pub const ALL: &'static [Self] = &[
+    /// The built-in controllers, in the order the menus list them and the game cycles
+    /// through them.
+    pub const BUILT_IN: &'static [Self] = &[
         Self::OPTIMIZER,
         Self::COMBINED,
         Self::ARCADE,
@@ -121,9 +128,61 @@ impl ControllerKind {
         Self::MANUAL,
     ];
 
-    /// The controller `entry` describes (a registry line, or a controller under test).
+    /// The controller `entry` describes (a registry line, or a controller under test
+    /// that rides without being registered).
     pub const fn new(entry: &'static ControllerEntry) -> Self {
         Self(entry)
+    }
+
+    /// The registry: the built-in controllers, then those registered at run time.
+    pub fn all() -> Vec<Self> {
+        let registered = REGISTERED.read().unwrap_or_else(PoisonError::into_inner);
+        Self::BUILT_IN
+            .iter()
+            .chain(registered.iter())
+            .copied()
+            .collect()
+    }
+
+    /// Adds `entry` to the registry for the rest of the process: menus, settings files,
+    /// the tools and `from_name` then have it, and its planner's parameters join the
+    /// settings schema. Refused when its name is taken, or a parameter's name is another
+    /// setting's.
+    pub fn register(entry: &'static ControllerEntry) -> Result<Self, String> {
+        let kind = Self(entry);
+        if Self::from_name(entry.name).is_some() {
+            return Err(format!("a controller is already called {}", entry.name));
+        }
+        let parameters = kind.planner().map_or(&[][..], |spec| spec.parameters);
+        for parameter in parameters {
+            match schema::find(parameter.name) {
+                Some(known) if known != *parameter => {
+                    return Err(format!(
+                        "{}: its parameter {} is another setting's name",
+                        entry.name, parameter.name
+                    ))
+                }
+                _ => schema::check_entry(parameter)
+                    .map_err(|why| format!("{}: {why}", entry.name))?,
+            }
+        }
+        REGISTERED
+            .write()
+            .unwrap_or_else(PoisonError::into_inner)
+            .push(kind);
+        Ok(kind)
+    }
+
+    /// Every parameter of the registered planners, each once, in the registry's order.
+    pub fn planner_parameters() -> Vec<Setting> {
+        let mut all: Vec<Setting> = Vec::new();
+        let specs = Self::all().into_iter().filter_map(|k| k.planner());
+        for setting in specs.flat_map(|spec| spec.parameters) {
+            if all.iter().all(|s| s.name != setting.name) {
+                all.push(*setting);
+            }
+        }
+        all
     }
 
     /// The name settings files, the experiment's CSV and the command line use.
@@ -138,7 +197,7 @@ impl ControllerKind {
 
     /// The registered controller named `name`, if there is one.
     pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.iter().copied().find(|k| k.name() == name)
+        Self::all().into_iter().find(|k| k.name() == name)
     }
 
     /// Whether players pick it (menus, the game's cycle); manual is for tests and tools.
@@ -172,6 +231,9 @@ impl ControllerKind {
         }
     }
 }
+
+/// Controllers registered at run time (`ControllerKind::register`).
+static REGISTERED: RwLock<Vec<ControllerKind>> = RwLock::new(Vec::new());
 
 impl PartialEq for ControllerKind {
     fn eq(&self, other: &Self) -> bool {

@@ -3,7 +3,6 @@
 //! `SimulationConfig`, the ride's clamps) read their constant here.
 
 use super::{DefaultValue as D, Owner, Range, Setting};
-use crate::bike::{DEFAULT_MAX_SPEED_KMH, TOP_SPEED_KMH};
 
 /// What an entry is unless it says otherwise: a planner's number, hidden from players.
 /// A planner's own parameters (declared with its `PlannerSpec`) start from this too.
@@ -27,8 +26,10 @@ pub const MAX_SPEED_KMH: Setting = Setting {
     label: "Top speed",
     description: "Speed full throttle drives towards.",
     unit: "km/h",
-    default: D::Float(DEFAULT_MAX_SPEED_KMH),
-    range: Some(Range::new(1.0, TOP_SPEED_KMH, 1.0)),
+    // The drive reads both: its default input and the bound every input is held to
+    // (`bike::DEFAULT_MAX_SPEED_KMH`, `bike::TOP_SPEED_KMH`).
+    default: D::Float(40.0),
+    range: Some(Range::new(1.0, 90.0, 1.0)),
     owner: Owner::Ride,
     player: true,
     menu: "Riding",
@@ -162,7 +163,8 @@ pub const PLANNER_SEED: Setting = Setting {
     label: "Planner seed",
     description: "Seed of the planners' random draws: the same seed, start and inputs give \
                   the same ride.",
-    default: D::Int(crate::control::cpbp::DEFAULT_SEED as i64),
+    // The year of the thesis; every planner's config reads it (`cpbp::DEFAULT_SEED`).
+    default: D::Int(2015),
     range: Some(Range::new(i64::MIN as f64, i64::MAX as f64, 1.0)),
     ..BASE
 };

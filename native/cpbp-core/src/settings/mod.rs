@@ -1,22 +1,20 @@
-//! The settings schema: every setting a player, a level designer, a script or a tool may
-//! change, each described once — name, label, unit, default, range, who owns it, whether
-//! players see it and where menus show it. The game node's properties and clamps, the
-//! player's settings file and its pause menu, and the Python tools
-//! (tools/cpbp_experiment/settings.json, written from here) all read these entries, so
-//! changing a default or a range is one edit in entries.rs.
+//! The settings schema's types and entries: every setting a player, a level designer, a
+//! script or a tool may change, each described once — name, label, unit, default, range,
+//! who owns it, whether players see it and where menus show it. The game node's
+//! properties and clamps, the player's settings file and its pause menu, and the Python
+//! tools (tools/cpbp_experiment/settings.json) all read these entries, so changing a
+//! default or a range is one edit in entries.rs; the core's own defaults (the drive, the
+//! planners' configs, the simulation's) read their entry too.
 //!
-//! Entries may be added at run time (`extend`): a mod's setting, or a test's throwaway
-//! one, then reaches every reader as a compiled entry does.
+//! This is the bottom of the core: it imports nothing of it. The whole schema — these
+//! entries, every registered planner's parameters and those added at run time — is
+//! `ride::schema`, beside the controller registry.
 
 mod entries;
-mod json;
 mod values;
 
 pub use entries::*;
-pub use json::schema_json;
 pub use values::{SettingValues, Value};
-
-use std::sync::{PoisonError, RwLock};
 
 /// Who reads a setting: the ride (the game node's drive and stepping), the planners, the
 /// bike, the game's scripts, what is drawn, or what is heard.
@@ -161,52 +159,3 @@ fn unit_suffix(unit: &str) -> String {
         unit => format!(" {unit}"),
     }
 }
-
-/// Entries added at run time (`extend`).
-static EXTENDED: RwLock<Vec<Setting>> = RwLock::new(Vec::new());
-
-/// Every setting: the compiled entries, the registered planners' own parameters, then
-/// those added at run time.
-pub fn all() -> Vec<Setting> {
-    let extended = EXTENDED.read().unwrap_or_else(PoisonError::into_inner);
-    let planners = crate::control::planner::registered_parameters();
-    ENTRIES
-        .iter()
-        .chain(planners.iter())
-        .chain(extended.iter())
-        .copied()
-        .collect()
-}
-
-/// The setting called `name`.
-pub fn find(name: &str) -> Option<Setting> {
-    all().into_iter().find(|s| s.name == name)
-}
-
-/// Adds `setting` to the schema for the rest of the process (a mod's setting, or a
-/// test's); refused when its name is taken or its default is not a value it may have.
-pub fn extend(setting: Setting) -> Result<(), String> {
-    if find(setting.name).is_some() {
-        return Err(format!("a setting is already called {}", setting.name));
-    }
-    let number = matches!(
-        setting.default,
-        DefaultValue::Int(_) | DefaultValue::Float(_)
-    );
-    match setting.range {
-        Some(range) if !(range.min <= range.max && range.step >= 0.0) => {
-            return Err(format!("{}: the range is empty", setting.name))
-        }
-        None if number => return Err(format!("{}: a number needs a range", setting.name)),
-        _ => {}
-    }
-    setting.check(&Value::from(setting.default))?;
-    EXTENDED
-        .write()
-        .unwrap_or_else(PoisonError::into_inner)
-        .push(setting);
-    Ok(())
-}
-
-#[cfg(test)]
-mod tests;

@@ -1,7 +1,7 @@
 //! Values of some of the schema's settings, each held within its entry's range: the game
 //! node keeps its own (the ride's and the planners') in one of these.
 
-use super::{all, DefaultValue, Setting};
+use super::{DefaultValue, Setting};
 
 /// A setting's value.
 #[derive(Clone, Debug, PartialEq)]
@@ -51,11 +51,10 @@ pub struct SettingValues {
 }
 
 impl SettingValues {
-    /// Every setting `keep` accepts, at its default.
-    pub fn of(keep: impl Fn(&Setting) -> bool) -> Self {
-        let entries = all()
+    /// `settings`, each at its default (the whole schema's are `ride::schema::values_of`).
+    pub fn holding(settings: impl IntoIterator<Item = Setting>) -> Self {
+        let entries = settings
             .into_iter()
-            .filter(|s| keep(s))
             .map(|s| (s, Value::from(s.default)))
             .collect();
         Self { entries }

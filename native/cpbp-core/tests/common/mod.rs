@@ -62,7 +62,7 @@ pub fn exact_sim_on(mut pieces: Vec<TerrainPiece>, height: f64) -> Simulation {
 /// plan, so it repeats exactly.
 pub fn planned_ride(sim: Simulation, kind: ControllerKind) -> Ride {
     let mut ride = Ride::new(sim, kind);
-    ride.planner.optimizer.trajectories = 10;
+    ride.planner.planning.trajectories = 10;
     ride.planner.wait = PlanWait::EveryPlan;
     ride
 }
@@ -93,7 +93,7 @@ pub fn ride_at(kind: ControllerKind, kmh: f64, particles: usize) -> Ride {
 /// `ride_at` in another physics model.
 pub fn ride_in(physics: PhysicsModel, kind: ControllerKind, kmh: f64, particles: usize) -> Ride {
     let mut ride = Ride::new(flat_ride_in(physics), kind);
-    ride.planner.optimizer.trajectories = particles;
+    ride.planner.planning.trajectories = particles;
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(kmh));
     ride

@@ -5,7 +5,7 @@ use crate::common;
 
 use std::time::Duration;
 
-use cpbp_core::control::{planner, Goal, PlanWait, PlanningConfig, PlanningThread};
+use cpbp_core::control::{cpbp, Goal, PlanWait, PlanningConfig, PlanningThread};
 use cpbp_core::ride::ControllerKind;
 
 #[test]
@@ -64,12 +64,12 @@ fn plans_made_before_a_reset_are_never_applied_after_it() {
         trajectories: 5,
         ..PlanningConfig::default()
     };
-    let mut anytime = PlanningThread::new(&sim, &planner::COMBINED, PlanWait::EveryPlan);
+    let mut anytime = PlanningThread::new(&sim, &cpbp::COMBINED, PlanWait::EveryPlan);
     let drive = common::auto_throttle(15.0);
     let ride =
         |sim: &mut cpbp_core::simulation::Simulation, anytime: &mut PlanningThread, steps| {
             for _ in 0..steps {
-                let controls = anytime.controls(sim, &Goal::riding(0.0, drive), &config);
+                let controls = anytime.controls(sim, &Goal::riding(0.0, drive), &config, None);
                 sim.set_controls(controls);
                 sim.step();
             }

@@ -58,7 +58,7 @@ fn the_learned_controller_applies_what_the_network_decides() {
     let policy = some_network();
     let network = policy.network().expect("a network").clone();
     let mut learned = common::ride_at(ControllerKind::LEARNED, 15.0, 5);
-    learned.planner.optimizer.policy = policy;
+    learned.planner.network = policy;
     // The same decisions, made outside the ride (the network asked for the trimmed lean)
     // and applied as raw controls.
     let mut by_hand = common::ride_at(ControllerKind::MANUAL, 15.0, 5);
@@ -90,8 +90,8 @@ fn the_committed_network_holds_a_long_turn_on_the_asked_lean() {
     // Without the trim this model settled 0.26° short of a 15° turn at 20 km/h on every
     // seed; the arcade controller is 0.005° off.
     let mut learned = common::ride_in(PhysicsModel::Exact, ControllerKind::LEARNED, 20.0, 5);
-    learned.planner.optimizer.policy = project_policy(cpbp_core::bike::REFERENCE_BIKE);
-    assert!(learned.planner.optimizer.policy.network().is_some());
+    learned.planner.network = project_policy(cpbp_core::bike::REFERENCE_BIKE);
+    assert!(learned.planner.network.network().is_some());
     let rms = common::rms_lean_error_in_a_15_degree_turn(&mut learned);
     assert!(rms < 0.1, "RMS lean error {rms:.3}°");
     assert_eq!(learned.failure(), None);
@@ -105,7 +105,7 @@ fn followed_path_and_plans(
 ) -> (Vec<[f64; 3]>, Vec<u64>, Option<String>) {
     let mut ride = common::ride_in(cpbp_core::physics::PhysicsModel::Exact, kind, 15.0, 5);
     if let Some(policy) = policy {
-        ride.planner.optimizer.policy = policy;
+        ride.planner.network = policy;
     }
     let mut path = Vec::new();
     let mut plans = Vec::new();

@@ -10,9 +10,9 @@ use common::{
     ask_lean, assert_rides_straight_for_20_seconds, ride, ride_in,
     rms_lean_error_in_a_15_degree_turn, FRAMES_PER_SECOND,
 };
-use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::ode::Solver;
 use cpbp_core::physics::{PhysicsModel, RolloutStepping};
+use cpbp_core::ride::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::ride::ControllerKind;
 
 const EXACT: PhysicsModel = PhysicsModel::Exact;

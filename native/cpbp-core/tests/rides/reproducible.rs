@@ -13,7 +13,7 @@ use cpbp_core::ride::{ControllerKind, Ride};
 /// same thread).
 fn ride(kind: ControllerKind, kmh: f64, between: &mut impl FnMut()) -> WorldState {
     let mut ride = common::ride_at(kind, kmh, 5);
-    ride.planner.optimizer.threads = 2;
+    ride.planner.planning.threads = 2;
     for step in 0..90 {
         if step == 30 {
             common::ask_lean(&mut ride, 10f64.to_radians());

@@ -24,7 +24,7 @@ fn speed(ride: &Ride) -> f64 {
 
 #[test]
 fn every_controller_has_a_stable_name_and_a_label() {
-    for &kind in ControllerKind::ALL {
+    for kind in ControllerKind::all() {
         assert_eq!(ControllerKind::from_name(kind.name()), Some(kind));
         assert!(!kind.label().is_empty());
         // Names go into settings files, CSV columns and GDScript strings as they are.
@@ -34,10 +34,14 @@ fn every_controller_has_a_stable_name_and_a_label() {
             "{name}"
         );
     }
-    let mut names: Vec<_> = ControllerKind::ALL.iter().map(|k| k.name()).collect();
+    let mut names: Vec<_> = ControllerKind::all().iter().map(|k| k.name()).collect();
     names.sort_unstable();
     names.dedup();
-    assert_eq!(names.len(), ControllerKind::ALL.len(), "names are distinct");
+    assert_eq!(
+        names.len(),
+        ControllerKind::all().len(),
+        "names are distinct"
+    );
     assert!(ControllerKind::SAMPLING.plans() && ControllerKind::MPPI.offered());
     assert_eq!(ControllerKind::from_name("autopilot"), None);
     assert!(!ControllerKind::MANUAL.offered() && ControllerKind::COMBINED.offered());
@@ -116,7 +120,7 @@ fn raw_controls_drive_until_the_next_intent() {
 )]
 fn a_planner_drives_with_plans_and_switching_forgets_them() {
     let mut ride = ride_with(ControllerKind::COMBINED);
-    ride.planner.optimizer.trajectories = 5;
+    ride.planner.planning.trajectories = 5;
     ride.planner.wait = PlanWait::EveryPlan;
     for _ in 0..30 {
         ride.step();

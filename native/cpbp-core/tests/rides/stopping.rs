@@ -99,7 +99,7 @@ fn on_a_15_degree_slope_the_brake_holds_and_a_hill_start_does_not_roll_back() {
         };
         let sim = Simulation::new(SimulationConfig::default(), terrain.clone(), spawn);
         let mut ride = Ride::new(sim, kind);
-        ride.planner.optimizer.trajectories = 5;
+        ride.planner.planning.trajectories = 5;
         ride.planner.wait = PlanWait::EveryPlan;
         ride.set_intent(Intent::cruise(20.0));
         ride_for(&mut ride, common::auto_throttle(20.0), 5.0, "riding uphill");

@@ -27,7 +27,7 @@ fn street_ride(kind: ControllerKind, kmh: f64) -> Ride {
         ..SimulationConfig::default()
     });
     let mut ride = Ride::new(sim, kind);
-    ride.planner.optimizer.trajectories = 5;
+    ride.planner.planning.trajectories = 5;
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(kmh));
     common::ride(&mut ride, kmh / 3.6 / 2.0 + 3.0, 0.0);

@@ -74,7 +74,7 @@ fn ask_wheelie(ride: &mut Ride, back: f64) {
 /// The ride must not crash.
 fn wheelie(kind: ControllerKind, seconds: f64, seed: u64) -> (f64, f64) {
     let mut ride = common::ride_in(PhysicsModel::Exact, kind, 12.0, 10);
-    ride.planner.optimizer.seed = seed;
+    ride.planner.planning.seed = seed;
     common::ride(&mut ride, 2.0, 0.0);
     ask_wheelie(&mut ride, 1.0);
     let (mut up, mut highest) = (0.0, f64::MIN);

@@ -32,7 +32,7 @@ pub fn under_load() {
         super::rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default()),
         ControllerKind::COMBINED,
     );
-    ride.planner.optimizer.trajectories = limits::AUTO_TRAJECTORIES.max as usize;
+    ride.planner.planning.trajectories = limits::AUTO_TRAJECTORIES.max as usize;
     ride.planner.wait = PlanWait::AtMost(GAME_PLAN_WAIT);
     ride.planner.auto_trajectories = true;
     ride.set_intent(Intent::cruise(15.0));

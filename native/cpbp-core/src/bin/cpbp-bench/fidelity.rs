@@ -3,9 +3,9 @@
 use std::sync::Arc;
 
 use cpbp_core::bike::DriveInput;
-use cpbp_core::control::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::ode::Solver;
 use cpbp_core::physics::{PhysicsModel, RolloutStepping};
+use cpbp_core::ride::fidelity::{divergence, Recording, RolloutPhysics};
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::Simulation;
 use cpbp_core::terrain::Terrain;

@@ -142,9 +142,8 @@ fn main() {
 /// Every planning mode's cost per control step in the game's physics on 2 threads.
 fn planners_side_by_side() {
     let flat = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
-    let planners: Vec<ControllerKind> = ControllerKind::ALL
-        .iter()
-        .copied()
+    let planners: Vec<ControllerKind> = ControllerKind::all()
+        .into_iter()
         .filter(|k| k.plans())
         .collect();
     println!();
@@ -197,7 +196,7 @@ fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
         rolling_bike(terrain.clone(), PhysicsModel::default()),
         ControllerKind::COMBINED,
     );
-    ride.planner.optimizer.trajectories = n;
+    ride.planner.planning.trajectories = n;
     // At this N throughout: the automatic choice would move it.
     ride.planner.auto_trajectories = false;
     ride.planner.wait = PlanWait::AtMost(Duration::from_millis(10));

@@ -157,11 +157,11 @@ pub fn planning_ms(sim: &Simulation, kind: ControllerKind, n: usize, threads: us
     let config = PlanningConfig {
         trajectories: n,
         threads,
-        policy: crate::bike_policy(),
         ..PlanningConfig::default()
     }
     .rolling_out_in(model);
     let mut optimizer = PlanningSession::new(sim, spec, config);
+    optimizer.follow(crate::bike_policy().network().cloned());
     let drive = DriveInput {
         throttle: 0.6,
         brake: 0.0,

@@ -350,9 +350,9 @@ pub(crate) fn ride_on(rider: Rider, kmh: f64, terrain: Terrain, spawn: Placement
         ..SimulationConfig::default()
     };
     let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);
-    ride.planner.optimizer.trajectories = n;
-    ride.planner.optimizer.seed = seed;
-    ride.planner.optimizer.policy = POLICY.get().cloned().unwrap_or_default();
+    ride.planner.planning.trajectories = n;
+    ride.planner.planning.seed = seed;
+    ride.planner.network = POLICY.get().cloned().unwrap_or_default();
     ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(kmh));
     ride

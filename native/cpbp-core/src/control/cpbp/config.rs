@@ -34,9 +34,9 @@ pub struct CpbpConfig {
     pub control_cost_weight: f64,
 }
 
-/// The planners' seed unless told otherwise (the year of the thesis): the same seed, start
-/// and inputs give the same ride.
-pub const DEFAULT_SEED: u64 = 2015;
+/// The planners' seed unless told otherwise, the seed setting's default: the same seed,
+/// start and inputs give the same ride.
+pub const DEFAULT_SEED: u64 = crate::settings::PLANNER_SEED.default_number() as u64;
 
 impl Default for CpbpConfig {
     fn default() -> Self {

@@ -14,6 +14,7 @@ mod priors;
 mod refinement;
 mod rollout;
 mod sequences;
+mod spec;
 
 pub use config::{CpbpConfig, FrameResult, WarmStart, DEFAULT_SEED, RESAMPLES};
 pub(crate) use frame::mix;
@@ -22,3 +23,4 @@ pub use planner::CpbpPlanner;
 pub use priors::{AppliedControls, Priors};
 pub use rollout::RolloutSystem;
 pub use sequences::shift_one_step;
+pub use spec::{COMBINED, GUIDED, MUTATION_SCALE, OPTIMIZER, PARAMETERS};

@@ -3,9 +3,12 @@
 //! as C-PBP, so the three differ only in how they search.
 
 mod planner;
+mod spec;
 mod spline;
 
 pub use planner::{
     SamplingConfig, SamplingPlanner, SamplingUpdate, EFFECTIVE_SAMPLES, IMPROVEMENT,
 };
+pub(crate) use spec::baseline;
+pub use spec::{BASELINE_KNOTS, BASELINE_NOISE, BASELINE_STEERING_ONLY, PARAMETERS, SAMPLING};
 pub use spline::Knots;

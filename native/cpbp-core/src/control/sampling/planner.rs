@@ -12,10 +12,10 @@ use rand_pcg::Pcg64;
 use rayon::prelude::*;
 
 use super::spline::Knots;
+use super::{BASELINE_KNOTS, BASELINE_NOISE};
 use crate::control::cpbp::{
     mix, rollout_pool, AppliedControls, Priors, RolloutSystem, DEFAULT_SEED,
 };
-use crate::control::planner_parameters::{BASELINE_KNOTS, BASELINE_NOISE};
 use crate::control::{Diagnostics, PlanPhases, PlanResult, Trajectory};
 
 /// How a frame's candidates make the next nominal plan.

@@ -3,7 +3,8 @@
 
 use serde_json::{json, Value as Json};
 
-use super::{all, DefaultValue, Setting, AUTO_TRAJECTORY_RANGE};
+use super::all;
+use crate::settings::{DefaultValue, Setting, AUTO_TRAJECTORY_RANGE};
 
 fn entry(setting: &Setting) -> Json {
     let (kind, default) = match setting.default {
@@ -32,8 +33,8 @@ fn entry(setting: &Setting) -> Json {
     entry
 }
 
-/// Every setting (the compiled entries and any added at run time), one JSON object per
-/// line in a list, and the automatic trajectory choice's range.
+/// Every setting (the compiled entries, the registered planners' parameters and any added
+/// at run time), one JSON object per line in a list, and the automatic trajectory choice's range.
 pub fn schema_json() -> String {
     let lines: Vec<String> = all().iter().map(|s| format!("    {}", entry(s))).collect();
     let auto = AUTO_TRAJECTORY_RANGE;

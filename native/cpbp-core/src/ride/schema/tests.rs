@@ -1,4 +1,5 @@
 use super::*;
+use crate::settings::{Owner, Range, HORIZON_S};
 
 #[test]
 fn every_entry_is_a_value_it_may_have_and_names_are_unique() {
@@ -26,7 +27,7 @@ fn every_entry_is_a_value_it_may_have_and_names_are_unique() {
 
 #[test]
 fn values_are_held_within_their_range_and_refuse_another_type() {
-    let mut values = SettingValues::of(|s| s.owner.on_the_node());
+    let mut values = values_of(|s| s.owner.on_the_node());
     assert_eq!(values.number(&HORIZON_S), 1.2);
     assert!(values.set("horizon", Value::Float(9.0)).unwrap().is_some());
     assert_eq!(values.number(&HORIZON_S), 3.0);
@@ -61,7 +62,7 @@ fn an_entry_added_at_run_time_reaches_every_reader() {
     extend(throwaway).unwrap();
     assert!(extend(throwaway).is_err(), "the name is taken");
     assert_eq!(find("throwaway_rust_test"), Some(throwaway));
-    let values = SettingValues::of(|s| s.owner.on_the_node());
+    let values = values_of(|s| s.owner.on_the_node());
     assert_eq!(values.get("throwaway_rust_test"), Some(&Value::Float(0.5)));
     assert!(schema_json().contains("\"name\":\"throwaway_rust_test\""));
     let out_of_range = Setting {

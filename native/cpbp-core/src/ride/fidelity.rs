@@ -6,10 +6,10 @@
 
 use glam::DVec3;
 
+use super::Ride;
 use crate::bike::Controls;
 use crate::ode::{Solver, WorldState};
 use crate::physics::RolloutStepping;
-use crate::ride::Ride;
 use crate::simulation::Simulation;
 
 /// How a rollout world is stepped through its horizon.
