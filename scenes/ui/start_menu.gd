@@ -1,7 +1,8 @@
 extends Control
-## The start menu: pick a level (that starts the ride), the controller, the trajectory
-## count and the auto-accelerate speed; shows the track's best lap and what native module
-## runs underneath. Works with a gamepad alone (d-pad/stick to move, A to choose).
+## The start menu: pick a level (that starts the ride; the backdrop shows the one in
+## focus), the controller, the trajectory count and the auto-accelerate speed; shows the
+## track's best lap and what native module runs underneath. Works with a gamepad alone
+## (d-pad/stick to move, A to choose).
 ## `--native-info` prints the native module and exits (smoke tests, bug reports).
 
 ## The player chose a level to ride (its key in `Levels.ALL`).
@@ -16,6 +17,7 @@ const GAME := "res://scenes/game/game.tscn"
 @onready var _trajectories: OptionButton = %Trajectories
 @onready var _auto_speed: OptionButton = %AutoSpeed
 @onready var _best_lap: Label = %BestLap
+@onready var _backdrop: MenuBackdrop = $Backdrop
 
 
 func _ready() -> void:
@@ -49,6 +51,8 @@ func _build_choices() -> void:
 		button.text = Levels.NAMES[key]
 		button.add_theme_font_size_override(&"font_size", 26)
 		button.pressed.connect(func() -> void: ride_requested.emit(key))
+		# The backdrop shows the level the focus is on.
+		button.focus_entered.connect(func() -> void: _backdrop.show_level(key))
 		_levels.add_child(button)
 	for name in NativeModule.controller_names():
 		_controller.add_item(NativeModule.controller_label(name))

@@ -41,3 +41,20 @@ func test_a_gamepad_alone_picks_the_second_level() -> void:
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_eq(chosen, [levels.get_child(1).name as String] as Array[String])
 	assert_ne(get_tree().current_scene, _menu, "an embedded menu does not navigate")
+
+
+func test_the_backdrop_is_the_level_in_focus_in_the_games_light() -> void:
+	var backdrop := _menu.get_node("Backdrop") as MenuBackdrop
+	var viewport := backdrop.get_child(0) as SubViewport
+	assert_true(viewport.own_world_3d, "a world of its own")
+	var suns := viewport.find_children("*", "DirectionalLight3D", false, false)
+	assert_eq(suns.size(), 1, "the game's sun")
+	assert_true((suns[0] as DirectionalLight3D).shadow_enabled)
+	var levels: VBoxContainer = _menu.get_node("%Levels")
+	(levels.get_node("track") as Button).grab_focus()
+	await wait_frames(1)
+	var shown := viewport.get_children().filter(
+		func(n: Node) -> bool: return n is Level and not n.is_queued_for_deletion()
+	)
+	assert_eq(shown.size(), 1, "one level")
+	assert_eq((shown[0] as Node).scene_file_path, Levels.path_of("track"))
