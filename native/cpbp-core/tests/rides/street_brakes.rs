@@ -7,7 +7,9 @@ use std::path::Path;
 
 use crate::common;
 
-use cpbp_core::bike::{read_bike_file, BikeParams, DriveInput, RiderPosition};
+use cpbp_core::bike::{
+    index, read_bike_file, BikeParams, Controls, DriveInput, RiderPosition, UPPER,
+};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::SimulationConfig;
@@ -132,4 +134,47 @@ fn the_weight_forward_still_lifts_a_stoppie_on_the_street_bike() {
         lowest = lowest.min(common::pitch(&ride));
     }
     assert!(lowest < -7.0, "stoppie only {lowest:.1}°");
+}
+
+/// The wrists' sideways angles (the larger, rad) after half a second of raw controls that
+/// drive the arms' sideways axes to their top rate, from a ride at 30 km/h, with the full
+/// brake or without it.
+fn wrists_driven_sideways(braking: bool) -> f64 {
+    let mut ride = street_ride(ControllerKind::ARCADE, 30.0);
+    let radius = ride.sim().bike().params().wheel_radius;
+    let mut controls = Controls::default();
+    for axis in 1..3 {
+        for joint in [index::SHOULDER, index::WRIST] {
+            controls.set(joint + axis, UPPER[joint + axis]);
+        }
+    }
+    let brake = if braking { 1.0 } else { 0.0 };
+    DriveInput {
+        throttle: 0.0,
+        brake,
+        max_speed: 30.0 / 3.6,
+    }
+    .apply(radius, &mut controls);
+    ride.set_raw_controls(controls);
+    for _ in 0..common::FRAMES_PER_SECOND / 2 {
+        ride.step();
+    }
+    let angles = ride.sim().bike().rider_joint_angles(ride.sim().world());
+    angles[9].abs().max(angles[10].abs())
+}
+
+/// Braking, the street bike's rider holds the arms in the riding pose sideways whatever a
+/// planner asks of them: the optimizer's random wrist targets otherwise walked the wrists
+/// to their limits over a stop from 90 km/h and the rider's weight 0.2 m to one side,
+/// where no steering holds the bike. Off the brake the arms follow what they are asked.
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
+fn braking_the_rider_holds_the_arms_sideways_whatever_a_planner_asks() {
+    let held = wrists_driven_sideways(true).to_degrees();
+    let free = wrists_driven_sideways(false).to_degrees();
+    assert!(held < 3.0, "braking, the wrists turned {held:.1}°");
+    assert!(free > 15.0, "off the brake they follow: only {free:.1}°");
 }

@@ -223,6 +223,7 @@ impl Bike {
         let waist = controls.max_torque(ForceClass::Waist);
         let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
         let braced = self.braced_arms(controls, arms);
+        let arms_held = self.arms_held_sideways(world, controls, held);
         for axis in 0..3 {
             world.set_motor(self.waist, axis, c[index::WAIST + axis], waist);
             // Held in a stoppie the rider locks the whole body to the bar.
@@ -231,8 +232,14 @@ impl Bike {
             } else {
                 arms
             };
-            world.set_motor(self.shoulder, axis, c[index::SHOULDER + axis], shoulder);
-            world.set_motor(self.wrist, axis, c[index::WRIST + axis], arms);
+            let (shoulder_target, wrist_target) = arms_held
+                .as_ref()
+                .filter(|_| axis != SHOULDER_SWING)
+                .map_or((c[index::SHOULDER + axis], c[index::WRIST + axis]), |h| {
+                    h[axis]
+                });
+            world.set_motor(self.shoulder, axis, shoulder_target, shoulder);
+            world.set_motor(self.wrist, axis, wrist_target, arms);
         }
         world.set_motor(
             self.knee,

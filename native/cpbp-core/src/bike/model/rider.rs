@@ -6,7 +6,9 @@ use glam::DVec3;
 use super::{Bike, Part};
 use crate::bike::controls::{index, Controls, ForceClass, MAX_TORQUE};
 use crate::bike::drive::brake_level;
+use crate::bike::manual::POSE_GAIN;
 use crate::bike::rider_position::RIDER_JOINTS;
+use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
 
 impl Bike {
@@ -71,10 +73,11 @@ impl Bike {
     /// has no knees on the tank, and with the exact model's weak arms
     /// (`PhysicsModel::arm_strength`) the body pivots on the pegs towards the bars,
     /// carrying the centre of mass 0.1–0.15 m forward over the front tyre, which lowers
-    /// what tips the bike by a sixth. The shoulder's other axes and the wrists stay as
-    /// they are: braced sideways too, the arms carried a planner's random shoulder targets
-    /// out at full strength, and the rider's weight went 0.2 m sideways in the last metres
-    /// of a stop (the optimizer at N = 10 fell in 6 of 60 full brakes). In a stoppie the
+    /// what tips the bike by a sixth. The shoulder's other axes and the wrists keep the
+    /// arms' strength (`arms_held_sideways` holds their pose): braced sideways too, the
+    /// arms carried a planner's random shoulder targets out at full strength, and the
+    /// rider's weight went 0.2 m sideways in the last metres of a stop (the optimizer at
+    /// N = 10 fell in 6 of 60 full brakes). In a stoppie the
     /// rider asks for, the whole shoulder braces: braced fore and aft only, the bike fell
     /// over sideways on its nose. None on the reference bike (`rider_brace` 0).
     pub(super) fn braced_arms(&self, controls: &Controls, arms: f64) -> f64 {
@@ -85,5 +88,39 @@ impl Bike {
         }
         let braced = MAX_TORQUE[ForceClass::Arms as usize] * brace;
         arms + (braced - arms).max(0.0) * level.min(1.0)
+    }
+
+    /// Braking on a bike whose rider braces, the targets of the arms' sideways axes (the
+    /// shoulder's and the wrist's other than fore and aft; per axis, shoulder then wrist)
+    /// blended by the brake's level towards holding the riding pose; None otherwise. A
+    /// planner exploring every joint (the optimizer alone) sends them random targets, and
+    /// over a stop from 90 km/h they walked the wrists to their ±34° limits and moved the
+    /// rider's weight 0.2 m to one side in the last metres, where no steering holds the
+    /// bike (optimizer-15 fell there). Holding them at a constant angle instead let the
+    /// bar's load creep them the same way; bracing them sideways locked the bar to the
+    /// rider and the bike fell at once. Not in a stoppie the rider asks for, and none on
+    /// the reference bike (`rider_brace` 0).
+    pub(super) fn arms_held_sideways(
+        &self,
+        world: &World,
+        controls: &Controls,
+        held: PitchRequest,
+    ) -> Option<[(f64, f64); 3]> {
+        let level = brake_level(controls);
+        // A brake level that is not a number holds nothing.
+        let braking = level > 0.0;
+        if self.params.rider_brace <= 0.0 || held.stoppie > 0.0 || !braking {
+            return None;
+        }
+        let hold = level.min(1.0);
+        let angles = self.rider_joint_angles(world);
+        let c = controls.values();
+        let towards_pose = |target: f64, angle: f64| target + hold * (-POSE_GAIN * angle - target);
+        Some(std::array::from_fn(|axis| {
+            (
+                towards_pose(c[index::SHOULDER + axis], angles[4 + axis]),
+                towards_pose(c[index::WRIST + axis], angles[8 + axis]),
+            )
+        }))
     }
 }
