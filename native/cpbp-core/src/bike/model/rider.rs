@@ -18,11 +18,11 @@ impl Bike {
         let mut angles = [0.0; RIDER_JOINTS];
         for axis in 0..3 {
             angles[axis] = world.joint_angle(self.waist, axis);
-            angles[4 + axis] = world.joint_angle(self.shoulder, axis);
-            angles[8 + axis] = world.joint_angle(self.wrist, axis);
+            angles[index::SHOULDER - index::WAIST + axis] = world.joint_angle(self.shoulder, axis);
+            angles[index::WRIST - index::WAIST + axis] = world.joint_angle(self.wrist, axis);
         }
-        angles[3] = world.joint_angle(self.knee, 0);
-        angles[7] = world.joint_angle(self.elbow, 0);
+        angles[index::KNEE - index::WAIST] = world.joint_angle(self.knee, 0);
+        angles[index::ELBOW - index::WAIST] = world.joint_angle(self.elbow, 0);
         angles
     }
 
@@ -118,8 +118,14 @@ impl Bike {
         let towards_pose = |target: f64, angle: f64| target + hold * (-POSE_GAIN * angle - target);
         Some(std::array::from_fn(|axis| {
             (
-                towards_pose(c[index::SHOULDER + axis], angles[4 + axis]),
-                towards_pose(c[index::WRIST + axis], angles[8 + axis]),
+                towards_pose(
+                    c[index::SHOULDER + axis],
+                    angles[index::SHOULDER - index::WAIST + axis],
+                ),
+                towards_pose(
+                    c[index::WRIST + axis],
+                    angles[index::WRIST - index::WAIST + axis],
+                ),
             )
         }))
     }
