@@ -5,6 +5,8 @@ extends Node
 
 ## A setting changed (by a menu or by a key); `key` is its name.
 signal changed(key: StringName)
+## Every setting was read again from the files (`reload`).
+signal reloaded
 
 const SECTION := "game"
 ## Settings files saved before controllers were named hold BikeSimulation's old integers.
@@ -57,6 +59,7 @@ func reload() -> void:
 			_values[key] = fitted
 	_records = ConfigStore.load_or_empty(records_path)
 	_apply_master_volume()
+	reloaded.emit()
 
 
 ## A saved controller as a name players can pick: old integers become names, anything
@@ -99,7 +102,7 @@ func _fitted(key: StringName, value: Variant) -> Variant:
 		return null
 	if key == &"controller" and not NativeModule.controller_names().has(value):
 		return null
-	if key == &"camera" and not FollowCamera.MODES.has(value):
+	if not entry.choices.is_empty() and not entry.choices.has(value):
 		return null
 	return value
 
@@ -118,8 +121,9 @@ func _refusal(key: StringName, value: Variant) -> String:
 		return (
 			"it is within %s–%s %s" % [number_text(entry.min), number_text(entry.max), entry.unit]
 		)
-	var kind := "camera mode" if key == &"camera" else String(key)
-	return "no %s is called %s" % [kind, value]
+	if not entry.choices.is_empty():
+		return "it is one of %s" % ", ".join(entry.choices)
+	return "no %s is called %s" % [key, value]
 
 
 ## `x` as menus and messages write it: whole numbers without a decimal point.
@@ -134,7 +138,7 @@ func get_value(key: StringName) -> Variant:
 
 
 ## Sets and saves setting `key`; an unknown key, a value of the wrong type or out of the
-## setting's range, or a name no controller or camera mode has, is refused.
+## setting's range, or a name that is not one of its choices (or no controller's), is refused.
 func set_value(key: StringName, value: Variant) -> void:
 	var fitted: Variant = _fitted(key, value) if defaults.has(key) else null
 	if fitted == null or fitted != value:

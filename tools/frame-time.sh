@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Frame-time cost of the game-feel features (engine sound, replay recorder, ghost race) at
+# Frame-time cost of the game-feel features (engine sound, replay recorder, ghost race) and
+# each graphics quality preset's frame time (low, medium, high) at
 # 1280x720 on the software renderer, planner off (arcade) and on (combined): each one's
 # per-frame work timed in place, and the ghost's drawing as paired blocks
 # with the ghost shown and hidden in one run each (tests/bench/frame_time.gd). The ghost

@@ -104,6 +104,9 @@ screenshots() {
          --set=level_path=$levels/test_level/test_level.tscn \
     && tools/screenshot.sh $game build/screenshots/track.png 240 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
+    && tools/screenshot.sh $game build/screenshots/track-low.png 240 \
+         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
+         --setting=graphics_quality=low \
     && tools/screenshot.sh $game build/screenshots/skate-park.png 150 \
          --set=level_path=$levels/skate_park/skate_park.tscn --tap=next_spawn@5 --hold=throttle:0.6 \
     && tools/screenshot.sh $game build/screenshots/pause-menu.png 60 \

@@ -2,8 +2,8 @@ class_name SettingControls
 extends VBoxContainer
 ## The controls of every player setting the schema puts in a menu (`SettingsSchema`
 ## entries with a `menu` group), built from the entries: a switch for a true/false
-## setting, a list for one with offered values or the controller, a slider over the range
-## for any other number. Each control is named after its setting and saves at once.
+## setting, a list for one with offered values or choices or the controller, a slider over
+## the range for any other number. Each control is named after its setting and saves at once.
 
 var _syncing := false
 
@@ -45,7 +45,7 @@ func _add_control(entry: Dictionary) -> void:
 		check.text = entry.label
 		check.toggled.connect(_save.bind(key))
 		control = check
-	elif key == &"controller" or not entry.offered.is_empty():
+	elif key == &"controller" or not entry.offered.is_empty() or not entry.choices.is_empty():
 		var list := OptionButton.new()
 		for choice: Variant in _choices(key):
 			list.add_item(_choice_label(entry, choice))
@@ -70,12 +70,14 @@ func _add_control(entry: Dictionary) -> void:
 	add_child(control)
 
 
-## The values a list offers for setting `key`: the controllers players pick, or the
-## offered values in the setting's type.
+## The values a list offers for setting `key`: the controllers players pick, a name
+## setting's choices, or the offered values in the setting's type.
 func _choices(key: StringName) -> Array:
 	if key == &"controller":
 		return Array(NativeModule.controller_names())
 	var entry: Dictionary = Settings.entries[key]
+	if not entry.choices.is_empty():
+		return Array(entry.choices)
 	var choices := []
 	for value: float in entry.offered:
 		choices.append(roundi(value) if typeof(entry.default) == TYPE_INT else value)
@@ -85,6 +87,8 @@ func _choices(key: StringName) -> Array:
 static func _choice_label(entry: Dictionary, choice: Variant) -> String:
 	if entry.name == &"controller":
 		return NativeModule.controller_label(choice)
+	if typeof(choice) == TYPE_STRING:
+		return String(choice).capitalize()
 	return "%s %s" % [Settings.number_text(choice), entry.unit]
 
 

@@ -4,7 +4,9 @@ extends Node
 ## sound's listening and mixing a frame of samples, the replay recorder's step, the ghost
 ## race's posing, the skinned rider's IK), and the drawing of the ghost and of the skinned
 ## rider as the paired difference in wall-clock frame time between alternating blocks of
-## frames with it shown and hidden, the game paused so nothing else changes (95 % interval).
+## frames with it shown and hidden, the game paused so nothing else changes (95 % interval);
+## then each graphics quality preset's frame time on the same still picture, in blocks
+## taken in turn, with its paired difference from low. The features are measured at low.
 ## Run under Xvfb by tools/frame-time.sh; the ghost raced is the bot's lap from the
 ## GDScript suites (build/ghosts/track.ghost), in scratch settings.
 ##
@@ -33,6 +35,7 @@ func _ready() -> void:
 	DirAccess.make_dir_recursive_absolute(Settings.ghosts_dir)
 	DirAccess.copy_absolute("res://build/ghosts/track.ghost", Settings.ghost_path("track"))
 	Settings.set_value(&"controller", controller)
+	Settings.set_value(&"graphics_quality", "low")
 	_game = GAME.instantiate() as Game
 	_game.level_path = "res://scenes/levels/track/track.tscn"
 	add_child(_game)
@@ -46,6 +49,8 @@ func _ready() -> void:
 	get_tree().paused = true
 	var drawing := await _drawing_cost(_game.ghost_race.ghost_view(), blocks)
 	var rider_drawing := await _drawing_cost(_live_view().rider(), blocks)
+	# Half the rounds: three presets a round, each block a few seconds in software.
+	var presets := await _preset_costs(maxi(blocks / 2, 3))
 	get_tree().paused = false
 	Input.action_release(&"throttle")
 	var total: float = costs.sound + costs.ghost + costs.rider + costs.recorder / 2.0 + drawing[0]
@@ -72,6 +77,15 @@ func _ready() -> void:
 			]
 		)
 	)
+	var by_preset := PackedStringArray()
+	for preset: String in Graphics.ORDER:
+		by_preset.append(
+			(
+				"%s %.1f ms (%+.1f ± %.1f)"
+				% [preset, presets[preset].mean, presets[preset].over_low, presets[preset].half]
+			)
+		)
+	print("frame time by preset (%s, against low): %s" % [controller, ", ".join(by_preset)])
 	CleanExit.quit(get_tree())
 
 
@@ -116,6 +130,39 @@ func _live_view() -> VisualBikeView:
 	return _game.bike.get_node(^"VisualBikeView") as VisualBikeView
 
 
+## Each graphics preset's frame time (ms) on the still picture, over `pairs` rounds of a
+## block at each in turn (the order rotating, so a drift favours none), and its paired
+## difference from low with the 95 % half-width.
+func _preset_costs(pairs: int) -> Dictionary:
+	var times := {}
+	for preset: String in Graphics.ORDER:
+		times[preset] = PackedFloat64Array()
+	# A round first, unmeasured, so every preset's shaders are compiled before timing.
+	for turn in pairs + 1:
+		for i in Graphics.ORDER.size():
+			var preset: String = Graphics.ORDER[(i + turn) % Graphics.ORDER.size()]
+			Graphics.apply(preset)
+			await get_tree().process_frame
+			var started := Time.get_ticks_usec()
+			for frame in BLOCK:
+				await get_tree().process_frame
+			if turn > 0:
+				times[preset].append((Time.get_ticks_usec() - started) / 1000.0 / BLOCK)
+	Graphics.apply("low")
+	var costs := {}
+	for preset: String in Graphics.ORDER:
+		var differences := PackedFloat64Array()
+		for i in pairs:
+			differences.append(times[preset][i] - times["low"][i])
+		var over_low := _mean_and_half_width(differences)
+		costs[preset] = {
+			mean = _mean_and_half_width(times[preset])[0],
+			over_low = over_low[0],
+			half = over_low[1],
+		}
+	return costs
+
+
 ## What drawing `node` costs: frame time (ms) with it shown minus hidden, over `pairs`
 ## pairs of blocks in alternating order, and the 95 % half-width.
 func _drawing_cost(node: Node3D, pairs: int) -> Array[float]:
@@ -132,12 +179,17 @@ func _drawing_cost(node: Node3D, pairs: int) -> Array[float]:
 				await get_tree().process_frame
 			times[int(shown)] = (Time.get_ticks_usec() - started) / 1000.0 / BLOCK
 		differences.append(times[1] - times[0])
-	var n := differences.size()
+	return _mean_and_half_width(differences)
+
+
+## The mean of `values` and its 95 % half-width.
+func _mean_and_half_width(values: PackedFloat64Array) -> Array[float]:
+	var n := values.size()
 	var mean := 0.0
-	for d in differences:
+	for d in values:
 		mean += d / n
 	var variance := 0.0
-	for d in differences:
+	for d in values:
 		variance += (d - mean) * (d - mean) / (n - 1)
 	# Student's t (97.5 %) for 5–30 degrees of freedom, near enough for a report.
 	var t := 2.0 + 2.6 / n

@@ -96,11 +96,24 @@ func test_a_lap_gate_counts_forward_crossings_within_its_width() -> void:
 	gate.free()
 
 
+func test_the_follow_cameras_modes_are_the_settings_choices() -> void:
+	assert_eq(Array(Settings.entries[&"camera"].choices), Array(FollowCamera.MODES))
+
+
+func test_the_graphics_quality_is_one_of_its_choices() -> void:
+	assert_eq(Settings.get_value(&"graphics_quality"), "auto", "by default")
+	Settings.set_value(&"graphics_quality", "low")
+	assert_eq(Settings.get_value(&"graphics_quality"), "low")
+	expect_error("it is one of auto, low, medium, high")
+	Settings.set_value(&"graphics_quality", "ultra")
+	assert_eq(Settings.get_value(&"graphics_quality"), "low", "kept")
+
+
 func test_the_camera_mode_is_saved_and_an_unknown_one_refused() -> void:
 	Settings.set_value(&"camera", "helmet")
 	Settings.reload()
 	assert_eq(Settings.get_value(&"camera"), "helmet")
-	expect_error("no camera mode is called")
+	expect_error("it is one of chase, low_side, helmet")
 	Settings.set_value(&"camera", "drone")
 	assert_eq(Settings.get_value(&"camera"), "helmet")
 	var config := ConfigFile.new()

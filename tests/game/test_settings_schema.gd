@@ -3,6 +3,7 @@ extends TestCase
 ## the game node's properties, the player's settings file, the pause menu and the tools'
 ## JSON, with its range and default, and nothing else is written for it.
 
+const PAUSE_MENU := preload("res://scenes/ui/pause_menu.tscn")
 const THROWAWAY := {
 	name = &"throwaway_setting",
 	label = "Throwaway",
@@ -16,11 +17,23 @@ const THROWAWAY := {
 	player = true,
 	menu = "Planner",
 }
+## A name setting with choices, a display's.
+const THROWAWAY_CHOICE := {
+	name = &"throwaway_choice",
+	label = "Throwaway choice",
+	description = "A test's list, in no build.",
+	default = "calm",
+	choices = ["calm", "rough_sea"],
+	owner = "display",
+	player = true,
+	menu = "View",
+}
 
 
 func before_all() -> void:
-	var refusal := SettingsSchema.extend(THROWAWAY)
-	assert_true(refusal.is_empty() or refusal.contains("already"), refusal)
+	for entry: Dictionary in [THROWAWAY, THROWAWAY_CHOICE]:
+		var refusal := SettingsSchema.extend(entry)
+		assert_true(refusal.is_empty() or refusal.contains("already"), refusal)
 
 
 func before_each() -> void:
@@ -61,7 +74,7 @@ func test_the_players_file_keeps_it() -> void:
 
 func test_the_pause_menu_shows_a_slider_over_its_range() -> void:
 	Settings.reload()
-	var menu: PauseMenu = load("res://scenes/ui/pause_menu.tscn").instantiate()
+	var menu: PauseMenu = PAUSE_MENU.instantiate()
 	add_child(menu)
 	var slider := menu.control_of(&"throwaway_setting") as HSlider
 	assert_not_null(slider)
@@ -69,6 +82,31 @@ func test_the_pause_menu_shows_a_slider_over_its_range() -> void:
 	slider.value = 6.5
 	assert_eq(Settings.get_value(&"throwaway_setting"), 6.5, "moving it saves it")
 	menu.free()
+
+
+func test_a_name_with_choices_is_a_list_in_the_pause_menu_and_holds_only_them() -> void:
+	Settings.reload()
+	var menu: PauseMenu = PAUSE_MENU.instantiate()
+	add_child(menu)
+	var list := menu.control_of(&"throwaway_choice") as OptionButton
+	assert_not_null(list)
+	assert_eq(list.item_count, 2)
+	assert_eq(list.get_item_text(1), "Rough Sea")
+	list.select(1)
+	list.item_selected.emit(1)
+	assert_eq(Settings.get_value(&"throwaway_choice"), "rough_sea", "picking it saves it")
+	expect_error("it is one of calm, rough_sea")
+	Settings.set_value(&"throwaway_choice", "storm")
+	assert_eq(Settings.get_value(&"throwaway_choice"), "rough_sea")
+	menu.free()
+
+
+func test_a_default_that_is_not_one_of_the_choices_is_refused() -> void:
+	var entry := THROWAWAY_CHOICE.duplicate()
+	entry.name = &"throwaway_bad_choice"
+	entry.default = "storm"
+	var refusal := SettingsSchema.extend(entry)
+	assert_true(refusal.contains("is one of calm, rough_sea"), refusal)
 
 
 func test_the_tools_json_lists_it() -> void:

@@ -11,7 +11,9 @@ extends Node
 ## `--call=node:method:argument@frame` (calls a method of a node under the scene's root,
 ## found by name, with one string argument, at that frame; repeatable), and
 ## `--copy=SOURCE>user://DEST` (a file copied into the scratch user folder before the
-## scene loads: a ghost to race, say; repeatable).
+## scene loads: a ghost to race, say; repeatable) and `--setting=key=value` (a player
+## setting, repeatable). Pictures are drawn at the PICTURE_QUALITY preset unless a
+## `--setting=graphics_quality=…` says otherwise: auto would pick by the machine's speed.
 ##
 ## Only the last DRAWN_FRAMES frames are drawn: the game's logic, physics and controllers
 ## run every frame as usual, but drawing a 1280×720 frame in software (llvmpipe under
@@ -21,6 +23,9 @@ extends Node
 ## would make plans late and ride another ride than the one drawn frames give. The full
 ## ride is drawn frame by frame by the sound check's recording.
 
+## The graphics quality pictures show: the textured world, without the antialiasing that
+## multiplies a software renderer's frame time several times over.
+const PICTURE_QUALITY := "medium"
 const MIN_DISTINCT_COLOURS := 12
 const MIN_LUMINANCE_SPREAD := 0.04
 ## Enough drawn frames before the picture for the renderer to warm up (shader pipelines,
@@ -33,7 +38,7 @@ const UNDRAWN_FPS := 20
 
 func _ready() -> void:
 	var options := {scene = "", out = "", frames = "30"}
-	var staging := {"set": [], "hold": [], "tap": [], "call": [], "copy": []}
+	var staging := {"set": [], "hold": [], "tap": [], "call": [], "copy": [], "setting": []}
 	for argument: String in OS.get_cmdline_user_args():
 		var parts := argument.trim_prefix("--").split("=", true, 1)
 		if parts.size() == 2 and options.has(parts[0]):
@@ -46,6 +51,11 @@ func _ready() -> void:
 	# Pictures start from the default settings and no records, whatever this machine's
 	# player last chose (a camera mode, a controller), so they are repeatable.
 	SettingsSandbox.enter()
+	Settings.set_value(&"graphics_quality", PICTURE_QUALITY)
+	for setting: String in staging["setting"]:
+		var pair := setting.split("=", true, 1)
+		var value: Variant = str_to_var(pair[-1]) if str_to_var(pair[-1]) != null else pair[-1]
+		Settings.set_value(StringName(pair[0]), value)
 	for copy: String in staging["copy"]:
 		var ends := copy.split(">")
 		DirAccess.make_dir_recursive_absolute(ends[-1].get_base_dir())

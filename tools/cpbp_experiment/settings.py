@@ -26,6 +26,7 @@ class Setting:
     menu: str
     range: tuple[float, float, float] | None = None
     offered: tuple[float, ...] = ()
+    choices: tuple[str, ...] = ()
 
     def check(self, value: bool | int | float | str) -> None:
         """Raises ValueError unless `value` is one this setting may hold."""
@@ -39,6 +40,8 @@ class Setting:
                 f"{self.name} must be within {self.range[0]:g}–{self.range[1]:g}"
                 f" {self.unit}".rstrip() + f", not {value}"
             )
+        if self.choices and value not in self.choices:
+            raise ValueError(f"{self.name} is one of {', '.join(self.choices)}, not {value!r}")
 
 
 def load(path: Path = SCHEMA_FILE) -> dict[str, Setting]:
@@ -50,6 +53,7 @@ def load(path: Path = SCHEMA_FILE) -> dict[str, Setting]:
         if "range" in entry:
             entry["range"] = tuple(entry["range"])
         entry["offered"] = tuple(entry.get("offered", ()))
+        entry["choices"] = tuple(entry.get("choices", ()))
         settings[entry["name"]] = Setting(**entry)
     return settings
 

@@ -102,5 +102,7 @@ fn dictionary(setting: &Setting) -> VarDictionary {
         entry.set("step", range.step);
     }
     entry.set("offered", &PackedFloat64Array::from(setting.offered));
+    let choices: PackedStringArray = setting.choices.iter().map(|c| GString::from(*c)).collect();
+    entry.set("choices", &choices);
     entry
 }

@@ -20,7 +20,8 @@ impl SettingsSchema {
     /// Every setting as a dictionary: name, label, description, unit, default (whose type
     /// is the setting's), owner (ride, planner, bike, game, display, sound), player
     /// (kept in the player's settings file), menu (the pause menu's group, "" for none),
-    /// min, max and step for a number, and offered (the values a menu lists, if any).
+    /// min, max and step for a number, offered (the values a menu lists, if any) and
+    /// choices (the names a name setting may hold; empty for any).
     #[func]
     fn entries() -> Array<VarDictionary> {
         schema_dictionaries()
@@ -49,6 +50,31 @@ impl SettingsSchema {
     fn control_period() -> f64 {
         cpbp_core::simulation::SimulationConfig::default().control_dt
     }
+}
+
+/// The names a name setting may hold, from the entry's `choices` (strings, in a
+/// PackedStringArray or an Array); they live for the rest of the run.
+fn choices_of(entry: &VarDictionary) -> &'static [&'static str] {
+    let Some(list) = entry.get("choices") else {
+        return &[];
+    };
+    let names: Vec<String> = match list.try_to::<PackedStringArray>() {
+        Ok(strings) => strings.as_slice().iter().map(|s| s.to_string()).collect(),
+        Err(_) => list
+            .try_to::<VarArray>()
+            .map(|items| {
+                items
+                    .iter_shared()
+                    .map(|v| v.stringify().to_string())
+                    .collect()
+            })
+            .unwrap_or_default(),
+    };
+    let leaked: Vec<&'static str> = names
+        .into_iter()
+        .map(|name| &*Box::leak(name.into_boxed_str()))
+        .collect();
+    Box::leak(leaked.into_boxed_slice())
 }
 
 /// A setting from its dictionary; its strings live for the rest of the run, as compiled
@@ -99,6 +125,7 @@ fn setting_of(entry: &VarDictionary) -> Result<Setting, String> {
         default,
         range,
         offered: &[],
+        choices: choices_of(entry),
         owner,
         player: entry.get("player").is_some_and(|v| v.booleanize()),
         menu: text("menu"),

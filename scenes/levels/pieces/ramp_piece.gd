@@ -6,6 +6,10 @@ extends StaticBody3D
 ## node's −z, starting at its origin). A length of 0 makes that face vertical: a step to
 ## climb or a drop to ride off. Builds its own convex collision shape and mesh.
 
+## Every piece's concrete, one material shared (so the graphics quality reaches them
+## all); each piece's colour is its vertices'.
+const CONCRETE: StandardMaterial3D = preload("res://scenes/levels/materials/piece.tres")
+
 ## Width (m), centred on the origin.
 @export_range(0.5, 40.0, 0.1, "suffix:m") var width := 4.0:
 	set(value):
@@ -31,7 +35,7 @@ extends StaticBody3D
 	set(value):
 		down_length = value
 		_build()
-## Colour of the surface.
+## Colour of the surface, a tint of its concrete.
 @export var colour := Color(0.6, 0.55, 0.48):
 	set(value):
 		colour = value
@@ -88,6 +92,7 @@ func _profile() -> PackedVector2Array:
 func _prism_mesh(profile: PackedVector2Array) -> ArrayMesh:
 	var tool := SurfaceTool.new()
 	tool.begin(Mesh.PRIMITIVE_TRIANGLES)
+	tool.set_color(colour)
 	var left := -width / 2.0
 	var right := width / 2.0
 	var at := func(p: Vector2, x: float) -> Vector3: return Vector3(x, p.y, -p.x)
@@ -110,8 +115,5 @@ func _prism_mesh(profile: PackedVector2Array) -> ArrayMesh:
 		tool.add_vertex(at.call(b, right))
 		tool.add_vertex(at.call(b, left))
 	tool.generate_normals()
-	var material := StandardMaterial3D.new()
-	material.albedo_color = colour
-	material.roughness = 0.85
-	tool.set_material(material)
+	tool.set_material(CONCRETE)
 	return tool.commit()

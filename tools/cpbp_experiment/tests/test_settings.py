@@ -28,6 +28,8 @@ class SettingsSchemaTest(unittest.TestCase):
             horizon.check(True)
         with self.assertRaisesRegex(ValueError, "takes a whole number"):
             settings.SETTINGS["trajectories"].check(2.5)
+        with self.assertRaisesRegex(ValueError, "one of auto, low, medium, high"):
+            settings.SETTINGS["graphics_quality"].check("ultra")
 
     def test_a_throwaway_entry_in_the_schema_reaches_the_tools(self):
         schema = json.loads(settings.SCHEMA_FILE.read_text("utf-8"))

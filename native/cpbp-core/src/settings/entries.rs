@@ -14,6 +14,7 @@ pub const BASE: Setting = Setting {
     default: D::Float(0.0),
     range: None,
     offered: &[],
+    choices: &[],
     owner: Owner::Planner,
     player: false,
     menu: "",
@@ -189,6 +190,7 @@ pub const AUTO_SPEED_KMH: Setting = Setting {
     default: D::Int(15),
     range: Some(Range::new(5.0, 60.0, 1.0)),
     offered: &[10.0, 15.0, 20.0, 25.0],
+    choices: &[],
     owner: Owner::Game,
     player: true,
     menu: "Riding",
@@ -216,6 +218,8 @@ pub const CAMERA: Setting = Setting {
     label: "Camera",
     description: "The follow camera's mode: chase, low side or helmet.",
     default: D::Text("chase"),
+    // The follow camera's modes, in the order its key cycles them.
+    choices: &["chase", "low_side", "helmet"],
     owner: Owner::Display,
     player: true,
     ..BASE
@@ -235,6 +239,18 @@ pub const PHYSICAL_MODEL: Setting = Setting {
     label: "Show physical bodies",
     description: "Show the simulated bodies instead of the bike's and rider's looks.",
     default: D::Bool(false),
+    owner: Owner::Display,
+    player: true,
+    menu: "View",
+    ..BASE
+};
+pub const GRAPHICS_QUALITY: Setting = Setting {
+    name: "graphics_quality",
+    label: "Graphics",
+    description: "How richly the world is drawn: low keeps a software renderer's frame time, \
+                  high spends what a graphics card affords; auto picks from the frame time.",
+    default: D::Text("auto"),
+    choices: &["auto", "low", "medium", "high"],
     owner: Owner::Display,
     player: true,
     menu: "View",
@@ -269,6 +285,7 @@ pub const ENGINE_VOLUME: Setting = Setting {
 pub const ENTRIES: &[Setting] = &[
     SHOW_TRAJECTORIES,
     PHYSICAL_MODEL,
+    GRAPHICS_QUALITY,
     CONTROLLER,
     MAX_SPEED_KMH,
     MOTOR_FORCE,

@@ -98,6 +98,9 @@ pub struct Setting {
     pub range: Option<Range>,
     /// The values menus offer, when a list suits it better than a slider.
     pub offered: &'static [f64],
+    /// The names a name setting may hold, in the order menus list them (empty: any name,
+    /// checked by the setting's reader, as a level's or a controller's).
+    pub choices: &'static [&'static str],
     pub owner: Owner,
     /// Whether players see it: kept in their settings file.
     pub player: bool,
@@ -139,8 +142,17 @@ impl Setting {
             _ => Ok(()),
         };
         match (self.default, value) {
-            (DefaultValue::Bool(_), Value::Bool(_)) | (DefaultValue::Text(_), Value::Text(_)) => {
-                Ok(())
+            (DefaultValue::Bool(_), Value::Bool(_)) => Ok(()),
+            (DefaultValue::Text(_), Value::Text(name)) => {
+                if self.choices.is_empty() || self.choices.contains(&name.as_str()) {
+                    Ok(())
+                } else {
+                    Err(format!(
+                        "{} is one of {}, not '{name}'",
+                        self.name,
+                        self.choices.join(", ")
+                    ))
+                }
             }
             (DefaultValue::Int(_), Value::Int(n)) => in_range(*n as f64),
             (DefaultValue::Float(_), Value::Float(x)) => in_range(*x),

@@ -30,6 +30,9 @@ fn entry(setting: &Setting) -> Json {
     if !setting.offered.is_empty() {
         entry["offered"] = json!(setting.offered);
     }
+    if !setting.choices.is_empty() {
+        entry["choices"] = json!(setting.choices);
+    }
     entry
 }
 

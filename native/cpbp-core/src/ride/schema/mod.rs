@@ -57,8 +57,8 @@ pub fn extend(setting: Setting) -> Result<(), String> {
     Ok(())
 }
 
-/// Whether `setting` may join the schema: a number has a range that is not empty, and
-/// its default is a value it may have.
+/// Whether `setting` may join the schema: a number has a range that is not empty, only a
+/// name has choices, and its default is a value it may have.
 pub(super) fn check_entry(setting: &Setting) -> Result<(), String> {
     let number = matches!(
         setting.default,
@@ -70,6 +70,9 @@ pub(super) fn check_entry(setting: &Setting) -> Result<(), String> {
         }
         None if number => return Err(format!("{}: a number needs a range", setting.name)),
         _ => {}
+    }
+    if !setting.choices.is_empty() && !matches!(setting.default, DefaultValue::Text(_)) {
+        return Err(format!("{}: only a name has choices", setting.name));
     }
     setting.check(&Value::from(setting.default))
 }

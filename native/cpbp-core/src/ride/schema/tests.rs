@@ -58,6 +58,7 @@ fn an_entry_added_at_run_time_reaches_every_reader() {
         menu: "Planner",
         unit: "",
         offered: &[],
+        choices: &[],
     };
     extend(throwaway).unwrap();
     assert!(extend(throwaway).is_err(), "the name is taken");
@@ -71,4 +72,34 @@ fn an_entry_added_at_run_time_reaches_every_reader() {
         ..throwaway
     };
     assert!(extend(out_of_range).is_err());
+}
+
+#[test]
+fn a_name_with_choices_holds_only_one_of_them() {
+    use crate::settings::GRAPHICS_QUALITY;
+    assert!(GRAPHICS_QUALITY.check(&Value::Text("high".into())).is_ok());
+    let why = GRAPHICS_QUALITY
+        .check(&Value::Text("ultra".into()))
+        .unwrap_err();
+    assert!(why.contains("auto, low, medium, high"), "{why}");
+    assert!(schema_json().contains("\"choices\":[\"auto\",\"low\",\"medium\",\"high\"]"));
+    let number_with_choices = Setting {
+        name: "throwaway_choices",
+        choices: &["a", "b"],
+        range: Some(Range::new(0.0, 1.0, 0.1)),
+        ..crate::settings::BASE
+    };
+    assert!(
+        extend(number_with_choices).is_err(),
+        "only a name has choices"
+    );
+    let default_not_a_choice = Setting {
+        name: "throwaway_choice_default",
+        label: "Throwaway",
+        description: "A test's.",
+        default: DefaultValue::Text("c"),
+        choices: &["a", "b"],
+        ..crate::settings::BASE
+    };
+    assert!(extend(default_not_a_choice).is_err(), "its default is one");
 }

@@ -1,8 +1,9 @@
 extends TestCase
 ## The world every level is ridden in: one shared outdoor environment (sky, ambient light,
-## tone mapping, distance fog) and a sun whose shadows the player sees. A sun behind the
-## chase camera throws the bike's shadow straight behind the bike, out of view: the game
-## once rode a whole phase like that, shadows on and none to be seen.
+## tone mapping, distance fog), a sun whose shadows the player sees, and surfaces with a
+## texture (grass, asphalt, concrete), made procedurally so no image can go missing. A sun
+## behind the chase camera throws the bike's shadow straight behind the bike, out of view:
+## the game once rode a whole phase like that, shadows on and none to be seen.
 
 const GAME := preload("res://scenes/game/game.tscn")
 const ENVIRONMENT := "res://scenes/world/outdoor_environment.tres"
@@ -52,3 +53,34 @@ func test_every_levels_start_has_the_bikes_shadow_in_the_chase_cameras_view() ->
 			"%s: the shadow falls %.0f° from the bike's heading" % [key, rad_to_deg(absf(angle))]
 		)
 		level.free()
+
+
+func test_the_levels_surfaces_are_textured() -> void:
+	Graphics.apply("medium")
+	for path: String in Graphics.SURFACES:
+		var material := load(path)
+		if material is ShaderMaterial:
+			var ground := material as ShaderMaterial
+			assert_not_null(ground.get_shader_parameter(&"grass"), "%s has a texture" % path)
+			assert_not_null(ground.get_shader_parameter(&"grass_normal"), "%s has relief" % path)
+			continue
+		var standard := material as StandardMaterial3D
+		assert_not_null(standard.albedo_texture, "%s has a texture" % path)
+		assert_not_null(standard.normal_texture, "%s has relief" % path)
+		assert_true(standard.uv1_world_triplanar, "%s is laid in world metres" % path)
+
+
+func test_a_ramp_piece_is_concrete_in_its_own_colour() -> void:
+	Graphics.apply("medium")
+	var ramp := RampPiece.new()
+	ramp.colour = Color(0.8, 0.3, 0.2)
+	add_child(ramp)
+	var mesh := (ramp.find_children("*", "MeshInstance3D", false, false)[0] as MeshInstance3D).mesh
+	var material := mesh.surface_get_material(0) as StandardMaterial3D
+	assert_not_null(material.albedo_texture, "textured")
+	assert_true(material.vertex_color_use_as_albedo, "coloured by its vertices")
+	var colours: PackedColorArray = mesh.surface_get_arrays(0)[Mesh.ARRAY_COLOR]
+	var stored := Vector4(colours[0].r, colours[0].g, colours[0].b, colours[0].a)
+	# Vertex colours are kept in 8 bits a channel.
+	assert_almost_eq(stored, Vector4(0.8, 0.3, 0.2, 1.0), Vector4.ONE / 255.0, "its colour")
+	ramp.free()
