@@ -15,7 +15,9 @@ signal applied(preset: String)
 ## their colour); `shadow_size`: the directional shadow map's side (px); `shadow_filter`:
 ## RenderingServer's soft shadow quality; `msaa`: the 3D antialiasing (a graphics card
 ## does it almost for free; in software 2× multiplies the frame time by five, so only high
-## has it).
+## has it); `tree_share`: the share of the trees beside a track that stand (`Trackside`);
+## `prop_shadows`: whether the things beside the track cast shadows (in software, most of
+## what the trees cost).
 const PRESETS := {
 	low =
 	{
@@ -23,6 +25,8 @@ const PRESETS := {
 		shadow_size = 4096,
 		shadow_filter = RenderingServer.SHADOW_QUALITY_SOFT_LOW,
 		msaa = Viewport.MSAA_DISABLED,
+		tree_share = 0.25,
+		prop_shadows = false,
 	},
 	medium =
 	{
@@ -30,6 +34,8 @@ const PRESETS := {
 		shadow_size = 4096,
 		shadow_filter = RenderingServer.SHADOW_QUALITY_SOFT_MEDIUM,
 		msaa = Viewport.MSAA_DISABLED,
+		tree_share = 0.7,
+		prop_shadows = true,
 	},
 	high =
 	{
@@ -37,6 +43,8 @@ const PRESETS := {
 		shadow_size = 8192,
 		shadow_filter = RenderingServer.SHADOW_QUALITY_SOFT_HIGH,
 		msaa = Viewport.MSAA_4X,
+		tree_share = 1.0,
+		prop_shadows = true,
 	},
 }
 ## The presets from the plainest to the richest (the order auto steps in).
