@@ -84,6 +84,10 @@ func _ready() -> void:
 	_hud.bind(self)
 	_pause_menu.restart_requested.connect(restart)
 	_pause_menu.replay_requested.connect(watch_replay)
+	var marks := TyreMarks.new()
+	marks.name = "TyreMarks"
+	marks.bike = bike
+	add_child(marks)
 	recorder = ReplayRecorder.new()
 	recorder.name = "ReplayRecorder"
 	add_child(recorder)

@@ -37,6 +37,22 @@ impl Bike {
         (contact(Part::RearWheel), contact(Part::FrontWheel))
     }
 
+    /// How fast each tyre slides over the ground (m/s), rear and front: the speed, in the
+    /// ground's plane, of the tyre's own material at its lowest point. Rolling, it is near
+    /// 0; a locked or spinning wheel, or a tyre sliding sideways, slides. What the game's
+    /// tyre marks and smoke answer (a wheel in the air slides too: ask whether it is down).
+    pub fn tyre_slip_speeds(&self, world: &World, up: DVec3) -> (f64, f64) {
+        let (rear, front) = self.tyre_contacts(world, up);
+        let slip = |part: Part, contact: DVec3| {
+            let body = self.body(part);
+            let lever = contact - world.body_position(body);
+            let moving =
+                world.body_linear_velocity(body) + world.body_angular_velocity(body).cross(lever);
+            (moving - up * moving.dot(up)).length()
+        };
+        (slip(Part::RearWheel, rear), slip(Part::FrontWheel, front))
+    }
+
     /// Ground support point: midway between the two tyres' lowest points.
     pub fn support_point(&self, world: &World, up: DVec3) -> DVec3 {
         let (rear, front) = self.tyre_contacts(world, up);
