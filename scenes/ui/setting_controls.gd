@@ -13,6 +13,15 @@ func _ready() -> void:
 		var entry: Dictionary = Settings.entries[key]
 		if not entry.menu.is_empty():
 			_add_control(entry)
+	Graphics.applied.connect(_show_graphics_preset)
+
+
+## The graphics list's auto names the preset auto chose.
+func _show_graphics_preset(_preset: String) -> void:
+	var list := control_of(&"graphics_quality") as OptionButton
+	if list != null:
+		var entry: Dictionary = Settings.entries[&"graphics_quality"]
+		list.set_item_text(0, _choice_label(entry, _choices(&"graphics_quality")[0]))
 
 
 ## The control of setting `key` (null if the menu has none).
@@ -87,6 +96,8 @@ func _choices(key: StringName) -> Array:
 static func _choice_label(entry: Dictionary, choice: Variant) -> String:
 	if entry.name == &"controller":
 		return NativeModule.controller_label(choice)
+	if entry.name == &"graphics_quality" and choice == "auto":
+		return "Auto (%s)" % Graphics.preset.capitalize()
 	if typeof(choice) == TYPE_STRING:
 		return String(choice).capitalize()
 	return "%s %s" % [Settings.number_text(choice), entry.unit]

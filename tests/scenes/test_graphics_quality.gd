@@ -50,6 +50,17 @@ func test_auto_steps_up_on_fast_frames_and_settles_after_stepping_down() -> void
 	assert_eq(Graphics.preset, "low", "down again when it is still too slow")
 
 
+func test_the_pause_menu_names_the_preset_auto_chose() -> void:
+	var menu: PauseMenu = load("res://scenes/ui/pause_menu.tscn").instantiate()
+	add_child(menu)
+	var list := menu.control_of(&"graphics_quality") as OptionButton
+	assert_eq(list.get_item_text(0), "Auto (Medium)")
+	_frames(Graphics.FAST_FRAME_S * 0.5)
+	assert_eq(list.get_item_text(0), "Auto (High)", "after auto stepped up")
+	assert_eq(list.get_item_text(1), "Low")
+	menu.free()
+
+
 func test_a_chosen_preset_is_kept_whatever_the_frame_time() -> void:
 	Settings.set_value(&"graphics_quality", "medium")
 	_frames(Graphics.SLOW_FRAME_S * 4.0)
