@@ -33,6 +33,7 @@ var successes := 0
 var falls := 0
 
 var _spawn_index := 0
+var _rumble: Rumble
 var _attempt_seed := 1
 var _finished_for := -1.0
 ## What the last crash was (for the player): "the rider's head or body hit the ground".
@@ -84,6 +85,10 @@ func _ready() -> void:
 	_hud.bind(self)
 	_pause_menu.restart_requested.connect(restart)
 	_pause_menu.replay_requested.connect(watch_replay)
+	_rumble = Rumble.new()
+	_rumble.name = "Rumble"
+	add_child(_rumble)
+	_rumble.follow(bike)
 	var marks := TyreMarks.new()
 	marks.name = "TyreMarks"
 	marks.bike = bike
@@ -265,6 +270,7 @@ func setting_targets() -> Array[Object]:
 	return [
 		_driver,
 		_camera,
+		_rumble,
 		bike.get_node(^"TrajectoryView"),
 		bike.get_node(^"PhysicalBikeView"),
 		bike.get_node(^"VisualBikeView"),

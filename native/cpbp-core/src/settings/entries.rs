@@ -256,6 +256,16 @@ pub const GRAPHICS_QUALITY: Setting = Setting {
     menu: "View",
     ..BASE
 };
+pub const RUMBLE: Setting = Setting {
+    name: "rumble",
+    label: "Rumble",
+    description: "Shake the gamepad on landings and crashes.",
+    default: D::Bool(true),
+    owner: Owner::Game,
+    player: true,
+    menu: "Riding",
+    ..BASE
+};
 pub const MASTER_VOLUME: Setting = Setting {
     name: "master_volume",
     label: "Volume",
@@ -291,6 +301,7 @@ pub const ENTRIES: &[Setting] = &[
     MOTOR_FORCE,
     AUTO_SPEED_KMH,
     AUTO_ACCELERATE,
+    RUMBLE,
     MASTER_VOLUME,
     ENGINE_VOLUME,
     LEVEL,
