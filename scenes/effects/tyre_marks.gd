@@ -38,9 +38,10 @@ var _pieces: Array[PackedVector3Array] = []
 var _opacity: PackedFloat32Array = []
 var _changed := false
 var _smoke: Array[CPUParticles3D] = []
-var _last_speed := NAN
-var _last_step := -1
+var _slowing := StepRate.new()
 var _deceleration := 0.0
+## The bike's tyre friction, read once (the bike does not change within a ride).
+var _friction := NAN
 
 
 func _ready() -> void:
@@ -79,19 +80,12 @@ func clear() -> void:
 
 func _physics_process(_delta: float) -> void:
 	if bike == null or not bike.is_running():
-		_last_speed = NAN
+		_slowing.reset()
 		return
-	# The speed changes once a control step, not every frame: measure per step.
-	var step := bike.get_step_count()
-	if step != _last_step:
-		var speed := bike.get_speed()
-		var elapsed := (step - _last_step) * bike.get_control_dt()
-		if not is_nan(_last_speed) and step > _last_step:
-			var now := (_last_speed - speed) / elapsed
-			var share := minf(elapsed / DECELERATION_SMOOTHING, 1.0)
-			_deceleration += (now - _deceleration) * share
-		_last_speed = speed
-		_last_step = step
+	var now := _slowing.falling(bike, bike.get_speed())
+	if not is_nan(now):
+		var share := minf(_slowing.elapsed / DECELERATION_SMOOTHING, 1.0)
+		_deceleration += (now - _deceleration) * share
 	var grounded: Array[bool] = [bike.is_rear_wheel_grounded(), bike.is_front_wheel_grounded()]
 	follow(bike.get_tyres(), grounded, grip_in_use(_deceleration, bike.get_lean()))
 
@@ -102,9 +96,10 @@ func grip_in_use(deceleration: float, lean: float) -> float:
 	var g := bike.get_gravity() if bike != null else 0.0
 	if g <= 0.0:
 		return 0.0
-	var friction: float = _tyre_friction()
+	if is_nan(_friction):
+		_friction = _tyre_friction()
 	var sideways := g * tan(clampf(absf(lean), 0.0, 1.4))
-	return Vector2(deceleration, sideways).length() / (friction * g)
+	return Vector2(deceleration, sideways).length() / (_friction * g)
 
 
 func _tyre_friction() -> float:

@@ -22,8 +22,7 @@ var device := 0
 
 var _bike: BikeSimulation
 var _fall_speed := 0.0
-var _last_height := NAN
-var _last_step := -1
+var _falling := StepRate.new()
 
 
 ## Rumbles for `bike`'s landings and crashes.
@@ -35,16 +34,11 @@ func follow(bike: BikeSimulation) -> void:
 
 func _physics_process(_delta: float) -> void:
 	if _bike == null or not _bike.is_running():
-		_last_height = NAN
+		_falling.reset()
 		return
-	var step := _bike.get_step_count()
-	if step == _last_step:
-		return
-	var height := _bike.get_center_of_mass().y
-	if not is_nan(_last_height) and step > _last_step:
-		_fall_speed = (_last_height - height) / ((step - _last_step) * _bike.get_control_dt())
-	_last_height = height
-	_last_step = step
+	var now := _falling.falling(_bike, _bike.get_center_of_mass().y)
+	if not is_nan(now):
+		_fall_speed = now
 
 
 ## Shakes the pad for a landing from a fall at `fall_speed` (m/s, downwards).

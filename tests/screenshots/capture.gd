@@ -54,8 +54,7 @@ func _ready() -> void:
 	Settings.set_value(&"graphics_quality", PICTURE_QUALITY)
 	for setting: String in staging["setting"]:
 		var pair := setting.split("=", true, 1)
-		var value: Variant = str_to_var(pair[-1]) if str_to_var(pair[-1]) != null else pair[-1]
-		Settings.set_value(StringName(pair[0]), value)
+		Settings.set_value(StringName(pair[0]), _parsed(pair[-1]))
 	for copy: String in staging["copy"]:
 		var ends := copy.split(">")
 		DirAccess.make_dir_recursive_absolute(ends[-1].get_base_dir())
@@ -69,7 +68,7 @@ func _ready() -> void:
 	var root := packed.instantiate()
 	for assignment: String in staging["set"]:
 		var pair := assignment.split("=", true, 1)
-		root.set(pair[0], str_to_var(pair[1]) if str_to_var(pair[1]) != null else pair[1])
+		root.set(pair[0], _parsed(pair[1]))
 	add_child(root)
 	var frames := int(options.frames)
 	RenderingServer.render_loop_enabled = frames <= DRAWN_FRAMES
@@ -178,3 +177,9 @@ func _quit_with(message: String, code: int) -> void:
 	if not message.is_empty():
 		printerr("capture: %s" % message)
 	CleanExit.quit(get_tree(), code)
+
+
+## A command-line value as Godot would write it (a number, a bool, a vector), else the text.
+static func _parsed(text: String) -> Variant:
+	var value: Variant = str_to_var(text)
+	return value if value != null else text
