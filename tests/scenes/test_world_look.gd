@@ -60,9 +60,7 @@ func test_the_levels_surfaces_are_textured() -> void:
 	for path: String in Graphics.SURFACES:
 		var material := load(path)
 		if material is ShaderMaterial:
-			var ground := material as ShaderMaterial
-			assert_not_null(ground.get_shader_parameter(&"grass"), "%s has a texture" % path)
-			assert_not_null(ground.get_shader_parameter(&"grass_normal"), "%s has relief" % path)
+			_assert_every_sampler_has_a_texture(material as ShaderMaterial, path)
 			continue
 		var standard := material as StandardMaterial3D
 		assert_not_null(standard.albedo_texture, "%s has a texture" % path)
@@ -84,3 +82,16 @@ func test_a_ramp_piece_is_concrete_in_its_own_colour() -> void:
 	# Vertex colours are kept in 8 bits a channel.
 	assert_almost_eq(stored, Vector4(0.8, 0.3, 0.2, 1.0), Vector4.ONE / 255.0, "its colour")
 	ramp.free()
+
+
+## A shader surface (the ground, the skate park's slabs): each of its textures is given,
+## a normal map among them.
+func _assert_every_sampler_has_a_texture(surface: ShaderMaterial, path: String) -> void:
+	var relief := 0
+	for uniform: Dictionary in surface.shader.get_shader_uniform_list():
+		if uniform.type != TYPE_OBJECT:
+			continue
+		var texture := surface.get_shader_parameter(uniform.name) as Texture2D
+		assert_not_null(texture, "%s: %s has a texture" % [path, uniform.name])
+		relief += int(texture is NoiseTexture2D and (texture as NoiseTexture2D).as_normal_map)
+	assert_gt(relief, 0, "%s has relief" % path)

@@ -42,9 +42,6 @@ const CONE_SPACING := 4.0
 		layout_seed = value
 		_build()
 
-## Where each kind of prop stands, in this node's space (the rendering server keeps the
-## instances' transforms, and a headless one keeps none).
-var _laid := {}
 var _trees: MultiMeshInstance3D
 var _tyres: MultiMeshInstance3D
 var _cones: MultiMeshInstance3D
@@ -59,16 +56,16 @@ func _ready() -> void:
 
 ## Where every tree stands (global), in the order the graphics quality keeps them.
 func tree_positions() -> PackedVector3Array:
-	return _positions(&"Trees")
+	return PropMesh.laid_at(_trees)
 
 
 ## Where every tyre stack and cone stands (global).
 func tyre_positions() -> PackedVector3Array:
-	return _positions(&"TyreWalls")
+	return PropMesh.laid_at(_tyres)
 
 
 func cone_positions() -> PackedVector3Array:
-	return _positions(&"Cones")
+	return PropMesh.laid_at(_cones)
 
 
 ## Trees shown now (the graphics quality's share of tree_count).
@@ -82,19 +79,7 @@ func _on_graphics_applied(preset: String) -> void:
 	var settings: Dictionary = Graphics.PRESETS[preset]
 	var share: float = settings.tree_share
 	_trees.multimesh.visible_instance_count = roundi(_trees.multimesh.instance_count * share)
-	for props: MultiMeshInstance3D in [_trees, _tyres, _cones]:
-		props.cast_shadow = (
-			GeometryInstance3D.SHADOW_CASTING_SETTING_ON
-			if settings.prop_shadows
-			else GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-		)
-
-
-func _positions(title: StringName) -> PackedVector3Array:
-	var out := PackedVector3Array()
-	for at: Vector3 in _laid.get(title, PackedVector3Array()):
-		out.append(global_transform * at)
-	return out
+	PropMesh.cast_shadows([_trees, _tyres, _cones], settings.prop_shadows)
 
 
 func _build() -> void:
@@ -103,7 +88,9 @@ func _build() -> void:
 	for child: Node in [_trees, _tyres, _cones]:
 		if child != null:
 			child.queue_free()
-	_laid = {}
+	_trees = null
+	_tyres = null
+	_cones = null
 	var lap := get_node_or_null(path) as Path3D
 	if lap == null or lap.curve == null or lap.curve.get_baked_length() <= 0.0:
 		if not path.is_empty():
@@ -188,18 +175,6 @@ static func _distance_to(line: PackedVector3Array, at: Vector3) -> float:
 
 
 func _instances(title: String, mesh: Mesh, transforms: Array) -> MultiMeshInstance3D:
-	var origins := PackedVector3Array()
-	for placed: Transform3D in transforms:
-		origins.append(placed.origin)
-	_laid[StringName(title)] = origins
-	var multimesh := MultiMesh.new()
-	multimesh.transform_format = MultiMesh.TRANSFORM_3D
-	multimesh.mesh = mesh
-	multimesh.instance_count = transforms.size()
-	for i in transforms.size():
-		multimesh.set_instance_transform(i, transforms[i])
-	var instances := MultiMeshInstance3D.new()
-	instances.name = title
-	instances.multimesh = multimesh
+	var instances := PropMesh.instances(title, mesh, transforms)
 	add_child(instances)
 	return instances

@@ -1,8 +1,8 @@
 class_name TracksideProps
 extends RefCounted
 ## The meshes Trackside stands beside a track, low-poly in the manner of Kenney's kits:
-## a conifer, a stack of tyres, a traffic cone. Built once from primitives (nothing to go
-## missing) and shared by every instance.
+## a conifer, a stack of tyres, a traffic cone. Built once (`PropMesh`) and shared by
+## every instance.
 
 const BARK := Color(0.36, 0.25, 0.17)
 const NEEDLES := Color(0.11, 0.23, 0.1)
@@ -16,20 +16,18 @@ static var _made := {}
 ## A conifer about 6 m tall: a trunk and two tiers of needles.
 static func tree() -> Mesh:
 	if not _made.has("tree"):
-		var trunk := CylinderMesh.new()
-		trunk.top_radius = 0.14
-		trunk.bottom_radius = 0.2
-		trunk.height = 1.6
-		trunk.radial_segments = 6
-		trunk.rings = 1
-		var lower := _cone(1.9, 3.2, 7)
-		var upper := _cone(1.3, 2.6, 7)
-		_made["tree"] = _joined(
-			[
-				[trunk, Vector3(0, 0.8, 0), BARK],
-				[lower, Vector3(0, 2.9, 0), NEEDLES],
-				[upper, Vector3(0, 4.4, 0), NEEDLES.lightened(0.08)],
-			]
+		var trunk := PropMesh.cylinder(0.14, 0.2, 1.6, 6)
+		var lower := PropMesh.cylinder(0.0, 1.9, 3.2, 7)
+		var upper := PropMesh.cylinder(0.0, 1.3, 2.6, 7)
+		_made["tree"] = (
+			PropMesh
+			. joined(
+				[
+					[trunk, Vector3(0, 0.8, 0), BARK],
+					[lower, Vector3(0, 2.9, 0), NEEDLES],
+					[upper, Vector3(0, 4.4, 0), NEEDLES.lightened(0.08)],
+				]
+			)
 		)
 	return _made["tree"]
 
@@ -45,51 +43,24 @@ static func tyre_stack() -> Mesh:
 			tyre.rings = 12
 			tyre.ring_segments = 6
 			parts.append([tyre, Vector3(0, 0.11 + 0.22 * level, 0), RUBBER])
-		_made["tyres"] = _joined(parts)
+		_made["tyres"] = PropMesh.joined(parts)
 	return _made["tyres"]
 
 
 ## A traffic cone on its square foot, with a white band.
 static func cone() -> Mesh:
 	if not _made.has("cone"):
-		var foot := BoxMesh.new()
-		foot.size = Vector3(0.36, 0.03, 0.36)
-		var body := _cone(0.15, 0.5, 10)
-		var band := CylinderMesh.new()
-		band.top_radius = 0.075
-		band.bottom_radius = 0.095
-		band.height = 0.08
-		band.radial_segments = 10
-		band.rings = 1
-		_made["cone"] = _joined(
-			[
-				[foot, Vector3(0, 0.015, 0), CONE_ORANGE],
-				[body, Vector3(0, 0.28, 0), CONE_ORANGE],
-				[band, Vector3(0, 0.33, 0), CONE_WHITE],
-			]
+		var foot := PropMesh.box(Vector3(0.36, 0.03, 0.36))
+		var body := PropMesh.cylinder(0.0, 0.15, 0.5, 10)
+		var band := PropMesh.cylinder(0.075, 0.095, 0.08, 10)
+		_made["cone"] = (
+			PropMesh
+			. joined(
+				[
+					[foot, Vector3(0, 0.015, 0), CONE_ORANGE],
+					[body, Vector3(0, 0.28, 0), CONE_ORANGE],
+					[band, Vector3(0, 0.33, 0), CONE_WHITE],
+				]
+			)
 		)
 	return _made["cone"]
-
-
-static func _cone(radius: float, height: float, sides: int) -> CylinderMesh:
-	var mesh := CylinderMesh.new()
-	mesh.top_radius = 0.0
-	mesh.bottom_radius = radius
-	mesh.height = height
-	mesh.radial_segments = sides
-	mesh.rings = 1
-	return mesh
-
-
-## One mesh of `parts` ([primitive, offset, colour] each), a surface a colour.
-static func _joined(parts: Array) -> ArrayMesh:
-	var joined := ArrayMesh.new()
-	for part: Array in parts:
-		var tool := SurfaceTool.new()
-		tool.append_from(part[0] as Mesh, 0, Transform3D(Basis(), part[1]))
-		var material := StandardMaterial3D.new()
-		material.albedo_color = part[2]
-		material.roughness = 0.9
-		tool.set_material(material)
-		tool.commit(joined)
-	return joined
