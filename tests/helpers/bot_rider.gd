@@ -12,6 +12,11 @@ const HEADING_GAIN := 0.25
 const SIDE_GAIN := 0.04
 const TURN_ACTIONS: Array[StringName] = [&"steer_left", &"steer_right"]
 const DRIVE_ACTIONS: Array[StringName] = [&"brake", &"throttle"]
+## Trigger per m/s of speed error: the throttle's, and the brake's (the whole brake answers
+## the trigger, where the motor share scales the throttle: 0.6 × 0.6 brakes as hard for an
+## error as the bot did when the share scaled the brake too).
+const THROTTLE_GAIN := 0.6
+const BRAKE_GAIN := 0.36
 const RIDER_ACTIONS: Array[StringName] = [&"rider_back", &"rider_forward"]
 
 ## The bike to ride and the path to follow.
@@ -56,8 +61,10 @@ func _physics_process(_delta: float) -> void:
 	var wanted := kmh / 3.6
 	var error := wanted - speed
 	# Nothing slows a rolling bike but the brake (no drag, no rolling resistance), so the
-	# triggers only correct the speed error.
-	var drive := clampf(0.6 * error, -1.0, 1.0) if wanted > 0.0 else -1.0
+	# triggers only correct the speed error: the throttle through the motor share, the
+	# brake more lightly, as its trigger gives the bike's whole brake.
+	var gain := THROTTLE_GAIN if error > 0.0 else BRAKE_GAIN
+	var drive := clampf(gain * error, -1.0, 1.0) if wanted > 0.0 else -1.0
 	_press_axis(DRIVE_ACTIONS, 1.0 if wheelie else drive)
 	_press_axis(RIDER_ACTIONS, -1.0 if wheelie else 0.0)
 

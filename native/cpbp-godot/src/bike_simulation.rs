@@ -318,13 +318,15 @@ impl BikeSimulation {
         self.controller.0
     }
 
-    /// The drive the pedals ask for with the present top speed and motor share.
+    /// The drive the pedals ask for with the present top speed and motor share. The
+    /// motor share is the engine's: the brake trigger gives the bike's whole brake, as the
+    /// scenarios and the rides that measure it (0.9 g on the street bike) pull it.
     pub(crate) fn drive(&self) -> Option<DriveInput> {
         let (throttle, brake) = self.pedals?;
         let force = self.settings.number(&settings::MOTOR_FORCE);
         let drive = DriveInput {
             throttle: throttle * force,
-            brake: brake * force,
+            brake,
             max_speed: self.settings.number(&settings::MAX_SPEED_KMH) / 3.6,
         };
         Some(drive.sanitized())

@@ -39,7 +39,8 @@ pub const MAX_SPEED_KMH: Setting = Setting {
 pub const MOTOR_FORCE: Setting = Setting {
     name: "motor_force",
     label: "Motor force",
-    description: "Share of the rear motor's torque that full throttle or brake uses.",
+    description: "Share of the rear motor's torque that full throttle uses (the brake \
+                  trigger gives the bike's whole brake).",
     unit: "share",
     default: D::Float(0.6),
     range: Some(Range::new(0.1, 1.0, 0.05)),
