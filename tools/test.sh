@@ -109,6 +109,9 @@ screenshots() {
          --setting=graphics_quality=low \
     && tools/screenshot.sh $game build/screenshots/skate-park.png 150 \
          --set=level_path=$levels/skate_park/skate_park.tscn --tap=next_spawn@5 --hold=throttle:0.6 \
+    && tools/screenshot.sh $game build/screenshots/tyre-marks.png 235 \
+         --set=level_path=$levels/track/track.tscn --hold=throttle:1.0@5-150 \
+         --hold=brake:1.0@150-235 \
     && tools/screenshot.sh $game build/screenshots/pause-menu.png 60 \
          --set=level_path=$levels/track/track.tscn --tap=pause@40 \
     && tools/screenshot.sh $game build/screenshots/camera-low-side.png 200 \
@@ -128,8 +131,9 @@ screenshots() {
          "--copy=res://build/ghosts/track.ghost>user://test-ghosts/track.ghost"
 }
 
-# Screenshots of the menus, levels, cameras, replay and ghost race under Xvfb, failing on
-# a blank picture (the ghost race races the lap the bot rode in the GDScript suites).
+# Screenshots of the menus, levels, cameras, a full brake's tyre marks, replay and ghost
+# race under Xvfb, failing on a blank picture (the ghost race races the lap the bot rode
+# in the GDScript suites).
 step "screenshots (Xvfb)"   screenshots
 # The engine recorded by Godot's movie writer sounds at its firing frequency, rising with
 # speed; a paused game is exactly silent.

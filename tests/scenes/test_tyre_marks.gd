@@ -77,3 +77,17 @@ func _slide_rear(slide: float, metres: float, grip := 0.0) -> void:
 		var tyres: Array[Vector4] = [Vector4(x, 0, 0, slide), Vector4(x + 1.4, 0, 0, 0.1)]
 		var grounded: Array[bool] = [true, true]
 		_marks.follow(tyres, grounded, grip)
+
+
+func test_the_marks_lie_over_every_surface_drawn_above_the_ground() -> void:
+	# The tyres meet the level's ground at y = 0; the road and the park's floor are drawn
+	# a few millimetres over it, and a mark under them would never be seen (the track's
+	# road was 20 mm thick and hid every mark on it).
+	var track := (load("res://scenes/levels/track/track.tscn") as PackedScene).instantiate()
+	var road := track.get_node(^"Road") as CSGPolygon3D
+	var top := -INF
+	for corner in road.polygon:
+		top = maxf(top, corner.y)
+	track.free()
+	assert_lt(top + 0.003, TyreMarks.LIFT, "over the track's road (top %.3f m)" % top)
+	assert_lt(ParkDressing.FLOOR_RISE + 0.003, TyreMarks.LIFT, "over the skate park's floor")
