@@ -93,6 +93,10 @@ func _ready() -> void:
 	marks.name = "TyreMarks"
 	marks.bike = bike
 	add_child(marks)
+	var sparks := Sparks.new()
+	sparks.name = "Sparks"
+	sparks.bike = bike
+	add_child(sparks)
 	recorder = ReplayRecorder.new()
 	recorder.name = "ReplayRecorder"
 	add_child(recorder)

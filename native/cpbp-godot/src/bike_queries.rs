@@ -265,28 +265,6 @@ impl BikeSimulation {
             .is_some_and(|s| s.bike().wheel_contacts(s.world()).1)
     }
 
-    /// Each tyre's lowest point (global), rear then front, and how fast it slides over the
-    /// ground (m/s) as its fourth number: what tyre marks and smoke answer. The tyres'
-    /// friction is the bike description's `tyre_friction`.
-    #[func]
-    fn get_tyres(&self) -> Array<Vector4> {
-        let Some(s) = self.sim() else {
-            return Array::new();
-        };
-        let (bike, up) = (s.bike(), s.up());
-        let (rear, front) = bike.tyre_contacts(s.world(), up);
-        let (rear_slip, front_slip) = bike.tyre_slip_speeds(s.world(), up);
-        let at =
-            |p: DVec3, slip: f64| Vector4::new(p.x as f32, p.y as f32, p.z as f32, slip as f32);
-        Array::from(&[at(rear, rear_slip), at(front, front_slip)])
-    }
-
-    /// The simulation's gravity (m/s²).
-    #[func]
-    fn get_gravity(&self) -> f64 {
-        self.sim().map_or(0.0, |s| s.config().gravity.length())
-    }
-
     /// The rider's feet, left then right (none on the classic physics' rigid bike).
     #[func]
     fn get_feet(&self) -> Array<Gd<BikeFoot>> {

@@ -39,6 +39,8 @@ pub(crate) struct CollideContext<'a> {
     pub(crate) touching_static: &'a mut Vec<bool>,
     /// Per body, the sum of the normals (ground to body) of its contacts with the terrain.
     pub(crate) ground_normals: &'a mut Vec<Vec3>,
+    /// Per body, its deepest contact with the terrain: where, and how deep.
+    pub(crate) ground_points: &'a mut Vec<Option<(Vec3, f64)>>,
     pub(crate) tyres: &'a [Tyre],
     pub(crate) feet: &'a mut [Foot],
     /// The step's length (s): a foot's spring–damper depends on it.
@@ -208,6 +210,13 @@ pub(crate) unsafe extern "C" fn near_callback(
             for contact in &made {
                 for (axis, total) in sum.iter_mut().enumerate() {
                     *total += sign * contact.normal[axis];
+                }
+            }
+            let deepest = &mut context.ground_points[index];
+            for contact in &made {
+                if deepest.is_none_or(|(_, depth)| contact.depth > depth) {
+                    let at = [contact.pos[0], contact.pos[1], contact.pos[2]];
+                    *deepest = Some((at, contact.depth));
                 }
             }
         }

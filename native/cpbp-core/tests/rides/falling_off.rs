@@ -104,3 +104,35 @@ fn a_replica_of_a_riderless_bike_steps_exactly_as_the_master() {
     }
     assert_eq!(ride.sim().world().snapshot(), replica.world().snapshot());
 }
+
+/// Knocked over at 15 km/h, the bike slides on its side and scrapes the road (sparks in
+/// the game), where ridden upright nothing of it but the tyres touches.
+#[test]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "rides with planners: run in release (tools/test.sh does)"
+)]
+fn a_bike_sliding_on_its_side_scrapes_the_road_and_an_upright_one_does_not() {
+    let mut upright = common::ride_in(PhysicsModel::Exact, ControllerKind::ARCADE, 15.0, 1);
+    common::ride(&mut upright, 2.0, 0.0);
+    let (sim, up) = (upright.sim(), upright.sim().up());
+    assert!(
+        sim.bike().scrapes(sim.world(), up).is_empty(),
+        "riding upright"
+    );
+
+    let mut ride = knocked_over(ControllerKind::ARCADE);
+    let mut fastest = 0.0_f64;
+    for _ in 0..common::FRAMES_PER_SECOND {
+        ride.step();
+        let (sim, up) = (ride.sim(), ride.sim().up());
+        for (at, speed) in sim.bike().scrapes(sim.world(), up) {
+            assert!(at.y.abs() < 0.05, "a scrape on the road, not at {at}");
+            fastest = fastest.max(speed);
+        }
+    }
+    assert!(
+        fastest > 1.0,
+        "slid on its side at {fastest:.2} m/s at most"
+    );
+}

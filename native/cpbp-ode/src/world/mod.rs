@@ -56,6 +56,10 @@ pub struct World {
     touching_static: Vec<bool>,
     /// Per body: the sum of its terrain contacts' normals in the last step (ground to body).
     ground_normals: Vec<crate::Vec3>,
+    /// Per body: its deepest terrain contact in the last step (where and how deep). Only
+    /// seen (sparks), never stepped on, so it is not part of a snapshot: a restored world
+    /// has none until it steps.
+    ground_points: Vec<Option<(crate::Vec3, f64)>>,
     /// Torus tyres: sphere geoms whose contacts are moved to where a torus would touch.
     tyres: Vec<Tyre>,
     /// Feet: sphere geoms that stand on the terrain like a rider's foot (`add_foot`).
@@ -109,6 +113,7 @@ impl World {
                 surface: SurfaceParams::default(),
                 touching_static: Vec::new(),
                 ground_normals: Vec::new(),
+                ground_points: Vec::new(),
                 tyres: Vec::new(),
                 feet: Vec::new(),
                 shared_meshes: Vec::new(),
@@ -150,6 +155,7 @@ impl World {
             self.bodies.push(body);
             self.touching_static.push(false);
             self.ground_normals.push([0.0; 3]);
+            self.ground_points.push(None);
         }
         BodyId(self.bodies.len() - 1)
     }
@@ -197,6 +203,12 @@ impl World {
     pub fn body_ground_normal(&self, body: BodyId) -> Option<DVec3> {
         let sum = DVec3::from_array(self.ground_normals[body.0]);
         (self.touching_static[body.0] && sum.length_squared() > 0.0).then(|| sum.normalize())
+    }
+
+    /// Where a body touched the terrain deepest in the last step; none if it touched none,
+    /// or if the world was restored from a snapshot since.
+    pub fn body_ground_point(&self, body: BodyId) -> Option<DVec3> {
+        self.ground_points[body.0].map(|(at, _)| DVec3::from_array(at))
     }
 
     /// Number of bodies.
@@ -296,6 +308,7 @@ impl World {
         self.random_seed = state.random_seed;
         self.touching_static.copy_from_slice(&state.touching_static);
         self.ground_normals.copy_from_slice(&state.ground_normals);
+        self.ground_points.iter_mut().for_each(|p| *p = None);
         for (foot, &touching) in self.feet.iter_mut().zip(&state.feet_touching) {
             foot.touching = touching;
         }
@@ -313,6 +326,7 @@ impl World {
     pub fn forget_contacts(&mut self) {
         self.touching_static.iter_mut().for_each(|t| *t = false);
         self.ground_normals.iter_mut().for_each(|n| *n = [0.0; 3]);
+        self.ground_points.iter_mut().for_each(|p| *p = None);
         self.feet.iter_mut().for_each(|f| f.touching = false);
     }
 
@@ -329,6 +343,7 @@ impl World {
             surface: self.surface,
             touching_static: &mut self.touching_static,
             ground_normals: &mut self.ground_normals,
+            ground_points: &mut self.ground_points,
             tyres: &self.tyres,
             feet: &mut self.feet,
             dt,

@@ -43,14 +43,42 @@ impl Bike {
     /// tyre marks and smoke answer (a wheel in the air slides too: ask whether it is down).
     pub fn tyre_slip_speeds(&self, world: &World, up: DVec3) -> (f64, f64) {
         let (rear, front) = self.tyre_contacts(world, up);
-        let slip = |part: Part, contact: DVec3| {
-            let body = self.body(part);
-            let lever = contact - world.body_position(body);
-            let moving =
-                world.body_linear_velocity(body) + world.body_angular_velocity(body).cross(lever);
-            (moving - up * moving.dot(up)).length()
-        };
-        (slip(Part::RearWheel, rear), slip(Part::FrontWheel, front))
+        (
+            self.sliding_speed(world, Part::RearWheel, rear, up),
+            self.sliding_speed(world, Part::FrontWheel, front, up),
+        )
+    }
+
+    /// Where the bike itself scrapes the ground, and how fast (m/s) it slides there: the
+    /// deepest terrain contact, in the last step, of each of its bodies that is neither a
+    /// wheel nor the rider (the frame, the fork and its legs, the swingarm). What throws
+    /// sparks when the bike slides on its side.
+    pub fn scrapes(&self, world: &World, up: DVec3) -> Vec<(DVec3, f64)> {
+        let mut seen = Vec::new();
+        [Part::Frame, Part::Fork, Part::ForkLower, Part::Swingarm]
+            .into_iter()
+            .filter(|&part| {
+                // A bike without suspension rides some parts on one body: once each.
+                let body = self.body(part);
+                !seen.contains(&body) && {
+                    seen.push(body);
+                    true
+                }
+            })
+            .filter_map(|part| {
+                let at = world.body_ground_point(self.body(part))?;
+                Some((at, self.sliding_speed(world, part, at, up)))
+            })
+            .collect()
+    }
+
+    /// The speed (m/s), in the ground's plane, of `part`'s material at `at`.
+    fn sliding_speed(&self, world: &World, part: Part, at: DVec3, up: DVec3) -> f64 {
+        let body = self.body(part);
+        let lever = at - world.body_position(body);
+        let moving =
+            world.body_linear_velocity(body) + world.body_angular_velocity(body).cross(lever);
+        (moving - up * moving.dot(up)).length()
     }
 
     /// Ground support point: midway between the two tyres' lowest points.
