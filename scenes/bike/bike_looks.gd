@@ -46,7 +46,10 @@ static func material(look: String, colour := Color(0, 0, 0, 0)) -> StandardMater
 	made.roughness = (
 		0.35 if look in ["paint", "helmet", "visor", "metal", "exhaust", "chain"] else 0.8
 	)
-	made.metallic = 0.6 if look in ["metal", "exhaust"] else 0.0
+	made.metallic = 0.6 if look in ["metal", "exhaust", "visor"] else 0.0
+	if look == "visor":
+		# A tinted visor is glass: it mirrors the sky rather than scattering it.
+		made.roughness = 0.08
 	if look in ["lamp", "tail_light"]:
 		made.emission_enabled = true
 		made.emission = made.albedo_color

@@ -36,6 +36,8 @@ const LOOK_DOWN := 1.2
 
 ## Drawn see-through (a ghost).
 var ghost := false
+## The bike's paint, which the helmet's stripe and spoiler wear (set before `build`).
+var paint := Color.WHITE
 
 var _skeleton: Skeleton3D
 var _ik: TwoBoneIK3D
@@ -323,25 +325,15 @@ func _dress(mesh: RiderMesh) -> void:
 	body.skeleton = body.get_path_to(_skeleton)
 
 
-## Neck, helmet and visor ride on the head bone; the head looks where the front wheel points.
+## Neck and helmet (RiderHelmet) ride on the head bone; the head looks where the front
+## wheel points.
 func _set_up_head(head: Vector3) -> void:
 	var attachment := BoneAttachment3D.new()
 	attachment.name = "Head"
 	_skeleton.add_child(attachment)
 	attachment.bone_name = "head"
-	var helmet := SphereMesh.new()
-	helmet.radius = 0.135
-	helmet.height = 0.28
-	_head_piece(attachment, helmet, "helmet", Transform3D.IDENTITY)
-	var visor := SphereMesh.new()
-	visor.radius = 0.5
-	visor.height = 1.0
-	_head_piece(
-		attachment,
-		visor,
-		"visor",
-		Transform3D(Basis.from_scale(Vector3(0.2, 0.11, 0.1)), Vector3(0, 0, -0.09))
-	)
+	for piece: Array in RiderHelmet.pieces():
+		_head_piece(attachment, piece[0], piece[1], piece[2])
 	var neck_at := _skeleton.get_bone_global_rest(_bone_index("neck")).origin - head
 	var neck := CapsuleMesh.new()
 	neck.radius = 0.06
@@ -372,4 +364,5 @@ func _head_piece(attachment: Node3D, mesh: Mesh, look: String, at: Transform3D) 
 
 
 func _material(look: String) -> StandardMaterial3D:
-	return BikeLooks.ghost_material(look) if ghost else BikeLooks.material(look)
+	var colour := paint if look == "paint" else Color(0, 0, 0, 0)
+	return BikeLooks.ghost_material(look, colour) if ghost else BikeLooks.material(look, colour)

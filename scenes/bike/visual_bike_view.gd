@@ -68,6 +68,7 @@ func _ready() -> void:
 	_rider = RiderFigure.new()
 	_rider.name = "Rider"
 	_rider.ghost = ghost
+	_rider.paint = _paint
 	add_child(_rider)
 	_rider.build(_frame)
 	follow()

@@ -152,3 +152,13 @@ static func _inward_faces(mesh: ArrayMesh) -> int:
 			if front.length() > 1e-8 and front.dot(normals[a] + normals[corners[i + 1]]) < 0.0:
 				inward += 1
 	return inward
+
+
+func test_the_helmet_wears_the_bikes_paint_and_a_visor() -> void:
+	var head := _view().rider().find_child("Head", true, false) as Node3D
+	var colours: Array[Color] = []
+	for piece: MeshInstance3D in head.find_children("*", "MeshInstance3D", false, false):
+		colours.append((piece.material_override as StandardMaterial3D).albedo_color)
+	assert_has(colours, _game.bike.bike.paint, "a stripe in the bike's paint")
+	assert_has(colours, BikeLooks.COLOURS.visor, "a visor")
+	assert_has(colours, BikeLooks.COLOURS.helmet, "a shell")
