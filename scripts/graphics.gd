@@ -66,6 +66,7 @@ const SURFACES: Array[String] = [
 	"res://scenes/levels/materials/wall.tres",
 	"res://scenes/levels/materials/piece.tres",
 	"res://scenes/levels/materials/slab.tres",
+	"res://scenes/levels/materials/dirt.tres",
 ]
 ## What a plain StandardMaterial3D surface has, by property: no textures, and none of the
 ## work that reads them (an empty slot is still sampled, a white texture bound in its place).

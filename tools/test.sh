@@ -115,6 +115,9 @@ screenshots() {
     && tools/screenshot.sh $game build/screenshots/crash.png 214 \
          --set=level_path=$levels/track/track.tscn --call=Bike:set_controller:manual@140 \
          --hold=throttle:1.0@5-150 --hold=steer_right:1.0@150-175 \
+    && tools/screenshot.sh $game build/screenshots/dust.png 285 \
+         --set=level_path=$levels/track/track.tscn --tap=next_spawn@5 --tap=next_spawn@10 \
+         --hold=throttle:1.0@15- \
     && tools/screenshot.sh $game build/screenshots/pause-menu.png 60 \
          --set=level_path=$levels/track/track.tscn --tap=pause@40 \
     && tools/screenshot.sh $game build/screenshots/camera-low-side.png 200 \
@@ -135,8 +138,8 @@ screenshots() {
 }
 
 # Screenshots of the menus, levels, cameras, a full brake's tyre marks, a crash's sparks,
-# replay and ghost race under Xvfb, failing on a blank picture (the ghost race races the
-# lap the bot rode in the GDScript suites).
+# dust on the track's gravel, replay and ghost race under Xvfb, failing on a blank
+# picture (the ghost race races the lap the bot rode in the GDScript suites).
 step "screenshots (Xvfb)"   screenshots
 # The engine recorded by Godot's movie writer sounds at its firing frequency, rising with
 # speed; a paused game is exactly silent.

@@ -77,11 +77,13 @@ func _process(delta: float) -> void:
 	var forward := frame.basis.x
 	forward.y = 0.0
 	if forward.length() > 0.1:
-		# A normalised lerp, not slerp: Godot's slerp normalises a near-zero cross product
-		# in single precision when the headings are almost equal, and then errors.
-		var blended := _heading.lerp(forward.normalized(), clampf(stiffness * delta, 0.0, 1.0))
-		if blended.length() > 1e-3:
-			_heading = blended.normalized()
+		# Turned about the vertical by a share of the angle between them: it comes round
+		# from any heading, a reversed one too (a spawn point facing back along the lap),
+		# which a blend of the two directions never leaves.
+		var angle := _heading.signed_angle_to(forward.normalized(), Vector3.UP)
+		var turned := _heading.rotated(Vector3.UP, angle * clampf(stiffness * delta, 0.0, 1.0))
+		if is_finite(turned.length()) and turned.length() > 1e-3:
+			_heading = turned.normalized()
 	var wanted := centre + _offset_around(_heading, OFFSETS[mode])
 	var catch_up := clampf(stiffness * delta, 0.0, 1.0) if _placed else 1.0
 	global_position = _unblocked(centre, global_position.lerp(wanted, catch_up))

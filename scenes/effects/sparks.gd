@@ -69,6 +69,8 @@ func _make_emitter() -> CPUParticles3D:
 	emitter.amount = AMOUNT
 	emitter.lifetime = LIFETIME
 	emitter.local_coords = false
+	# A puff's or a spark's quad would cast a square shadow.
+	emitter.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	var streak := QuadMesh.new()
 	streak.size = Vector2(0.03, 0.14)
 	var material := StandardMaterial3D.new()

@@ -89,14 +89,11 @@ func _ready() -> void:
 	_rumble.name = "Rumble"
 	add_child(_rumble)
 	_rumble.follow(bike)
-	var marks := TyreMarks.new()
-	marks.name = "TyreMarks"
-	marks.bike = bike
-	add_child(marks)
-	var sparks := Sparks.new()
-	sparks.name = "Sparks"
-	sparks.bike = bike
-	add_child(sparks)
+	# The effects that answer the bike's contact with the ground, each named as its class.
+	for effect: Node3D in [TyreMarks.new(), Sparks.new(), Dust.new()]:
+		effect.name = effect.get_script().get_global_name()
+		effect.set(&"bike", bike)
+		add_child(effect)
 	recorder = ReplayRecorder.new()
 	recorder.name = "ReplayRecorder"
 	add_child(recorder)

@@ -85,3 +85,12 @@ func test_the_camera_button_cycles_the_modes_in_order() -> void:
 	expect_error("no camera mode")
 	_camera.mode = "drone"
 	assert_eq(_camera.mode, "helmet", "an unknown mode is refused")
+
+
+func test_a_bike_put_down_facing_back_gets_the_camera_round_behind_it() -> void:
+	await wait_frames(30)
+	_bike.reset_to(Transform3D(Basis(Vector3.UP, PI), Vector3(0, 0.02, 0)))
+	await wait_frames(3 * 60)
+	var to_bike := _bike.get_center_of_mass() - _camera.global_position
+	var heading := _bike.get_body_transform(BikeSimulation.FRAME).basis.x
+	assert_gt(heading.dot(to_bike.normalized()), 0.7, "behind the bike, looking along it")

@@ -91,3 +91,5 @@ func test_the_marks_lie_over_every_surface_drawn_above_the_ground() -> void:
 	track.free()
 	assert_lt(top + 0.003, TyreMarks.LIFT, "over the track's road (top %.3f m)" % top)
 	assert_lt(ParkDressing.FLOOR_RISE + 0.003, TyreMarks.LIFT, "over the skate park's floor")
+	assert_lt(DirtPatch.RISE + 0.002, TyreMarks.LIFT, "over a dirt patch")
+	assert_gt(DirtPatch.RISE, top + 0.001, "a dirt patch over the road")
