@@ -10,9 +10,6 @@ const DUST_SPEED := 2.0
 const FULL_SPEED := 15.0
 ## A tyre sliding this fast (m/s) throws as much as one at FULL_SPEED.
 const FULL_SLIDE := 4.0
-const AMOUNT := 36
-const LIFETIME := 1.6
-const COLOUR := Color(0.62, 0.52, 0.4, 0.7)
 
 ## The bike whose tyres raise the dust.
 @export var bike: BikeSimulation
@@ -22,7 +19,7 @@ var _clouds: Array[CPUParticles3D] = []
 
 func _ready() -> void:
 	for wheel in 2:
-		var cloud := _make_cloud()
+		var cloud := Puffs.cloud(Puffs.DUST)
 		cloud.name = "Dust%d" % wheel
 		add_child(cloud)
 		_clouds.append(cloud)
@@ -70,32 +67,3 @@ func follow(
 ## Whether wheel `wheel` (0 rear, 1 front) raises dust now.
 func raising(wheel: int) -> bool:
 	return _clouds[wheel].emitting
-
-
-## Soft brown puffs that swell, drift up a little and thin out (CPU particles, drawn by the
-## compatibility renderer on any machine).
-func _make_cloud() -> CPUParticles3D:
-	var cloud := CPUParticles3D.new()
-	cloud.emitting = false
-	cloud.amount = AMOUNT
-	cloud.lifetime = LIFETIME
-	cloud.local_coords = false
-	# A puff's or a spark's quad would cast a square shadow.
-	cloud.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-	cloud.mesh = TyreSmoke.puff(0.9)
-	cloud.direction = Vector3.UP
-	cloud.spread = 70.0
-	cloud.initial_velocity_min = 0.3
-	cloud.gravity = Vector3(0, 0.15, 0)
-	cloud.damping_min = 0.8
-	cloud.damping_max = 1.5
-	cloud.scale_amount_min = 0.7
-	var swelling := Curve.new()
-	swelling.add_point(Vector2(0, 0.5))
-	swelling.add_point(Vector2(1, 2.6))
-	cloud.scale_amount_curve = swelling
-	var fading := Gradient.new()
-	fading.set_color(0, COLOUR)
-	fading.set_color(1, Color(COLOUR, 0.0))
-	cloud.color_ramp = fading
-	return cloud

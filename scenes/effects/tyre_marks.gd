@@ -54,7 +54,7 @@ func _ready() -> void:
 	material.roughness = 0.95
 	material_override = material
 	for wheel in 2:
-		var smoke := TyreSmoke.make()
+		var smoke := Puffs.cloud(Puffs.SMOKE)
 		smoke.name = "Smoke%d" % wheel
 		add_child(smoke)
 		_smoke.append(smoke)
