@@ -67,7 +67,9 @@ func checkpoint_count() -> int:
 
 
 func status_line() -> String:
-	var lap := format_time(_lap_time) if _lap_started else "cross the start line"
+	# Before the start line the lap's clock reads as an empty time, as last and best do:
+	# words there ran into the HUD's planner line at 1280 pixels.
+	var lap := format_time(_lap_time if _lap_started else INF)
 	return (
 		"lap %s   last %s   best %s"
 		% [lap, format_time(_last_lap), format_time(Settings.best_lap(record_key))]
