@@ -203,10 +203,13 @@ func _build_bodywork(bike: BikeDescription) -> void:
 				_rod(FRAME, a, b, piece.radius, piece.look)
 				continue
 			var block := bodywork.fitted_block(piece.from * mirror, piece.size, piece.pitch, points)
-			if piece.shape == BodyworkPiece.Shape.ELLIPSOID:
-				_ellipsoid(FRAME, block.centre, block.size, block.pitch, piece.look)
-			else:
-				_box(FRAME, block.centre, block.size, block.pitch, piece.look)
+			match piece.shape:
+				BodyworkPiece.Shape.ELLIPSOID:
+					_unit_shape(FRAME, _unit_sphere(), block, piece.look)
+				BodyworkPiece.Shape.ROUNDED:
+					_unit_shape(FRAME, RoundedBox.mesh(), block, piece.look)
+				_:
+					_box(FRAME, block.centre, block.size, block.pitch, piece.look)
 
 
 ## The swingarm's two arms from the pivot to the axle, and the rear shock from the frame
@@ -342,16 +345,22 @@ func _box(body: int, centre: Vector3, size: Vector3, pitch: float, look: String)
 	_add(body, box, look, Transform3D(basis, _frame.world_of(centre)))
 
 
-func _ellipsoid(body: int, centre: Vector3, size: Vector3, pitch: float, look: String) -> void:
+## `unit` (a metre each way about its centre) stretched to `block`'s size and tilt.
+func _unit_shape(body: int, unit: Mesh, block: Dictionary, look: String) -> void:
+	var size: Vector3 = block.size
+	var basis := (
+		_frame.basis()
+		* Basis(Vector3.RIGHT, block.pitch)
+		* Basis.from_scale(Vector3(size.z, size.y, size.x))
+	)
+	_add(body, unit, look, Transform3D(basis, _frame.world_of(block.centre)))
+
+
+static func _unit_sphere() -> SphereMesh:
 	var sphere := SphereMesh.new()
 	sphere.radius = 0.5
 	sphere.height = 1.0
-	var basis := (
-		_frame.basis()
-		* Basis(Vector3.RIGHT, pitch)
-		* Basis.from_scale(Vector3(size.z, size.y, size.x))
-	)
-	_add(body, sphere, look, Transform3D(basis, _frame.world_of(centre)))
+	return sphere
 
 
 ## Adds a mesh placed at `world_at_rest` that rides on `body` from now on.

@@ -73,10 +73,11 @@ func test_a_smaller_bike_wears_the_bodywork_fitted_to_it_in_its_own_paint() -> v
 	assert_lt(gap, 0.12, "no gap opens between the seat and the tank")
 	var paint := (tanks[0].material_override as StandardMaterial3D).albedo_color
 	assert_eq(paint, description.paint, "the bike's own paint")
-	var engines := _pieces(view, "engine", "BoxMesh")
-	assert_eq(engines.size(), 1, "one engine")
+	var engines := _pieces(view, "engine", "ArrayMesh")
+	assert_eq(engines.size(), 1, "one engine, a rounded box")
+	assert_eq(engines[0].mesh, RoundedBox.mesh(), "the shared rounded box")
 	var engine_front := (
-		frame.bike_of(engines[0].global_position).x + (engines[0].mesh as BoxMesh).size.z / 2.0
+		frame.bike_of(engines[0].global_position).x + engines[0].global_basis.z.length() / 2.0
 	)
 	var front_tyre_back: float = points.front_axle.x - _game.bike.get_wheel_radius()
 	assert_lt(engine_front, front_tyre_back, "the engine clears the front tyre")
@@ -134,3 +135,15 @@ func test_a_controller_the_bike_does_not_offer_rides_as_arcade_and_says_why() ->
 	assert_eq(_game.bike.controller, "arcade", "rides with arcade")
 	assert_eq(Settings.get_value(&"controller"), "learned", "the player's choice stays saved")
 	assert_eq(announced, ["Learned is not offered on this bike: it has no learned model"])
+
+
+func test_a_rounded_box_has_flat_faces_and_rounded_corners() -> void:
+	var vertices: PackedVector3Array = RoundedBox.mesh().surface_get_arrays(0)[Mesh.ARRAY_VERTEX]
+	var widest := Vector3.ZERO
+	var farthest := 0.0
+	for at in vertices:
+		widest = widest.max(at.abs())
+		farthest = maxf(farthest, at.length())
+	assert_almost_eq(widest, Vector3.ONE * 0.5, Vector3.ONE * 1e-3, "a metre each way")
+	assert_lt(farthest, sqrt(3.0) / 2.0 - 0.05, "its corners rounded off")
+	assert_gt(farthest, 0.6, "squarer than a sphere")

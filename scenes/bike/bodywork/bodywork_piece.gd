@@ -4,7 +4,8 @@ extends Resource
 ## the bike its BikeBodywork was drawn on (x forward, y up, z right, origin on the ground
 ## midway between the wheels; metres) and carried by the bike's frame body.
 
-enum Shape { BOX, ELLIPSOID, ROD }
+## ROUNDED: a box with rounded edges (RoundedBox), placed and sized as a box.
+enum Shape { BOX, ELLIPSOID, ROD, ROUNDED }
 
 @export var shape := Shape.BOX
 ## Which BikeLooks material it is made of ("paint" takes the bike's own colour).
