@@ -46,3 +46,31 @@ func test_the_setting_reaches_the_games_rumble() -> void:
 	assert_false(rumble.rumble, "off from the menu")
 	game.free()
 	SettingsSandbox.leave()
+
+
+func test_the_abs_at_work_is_a_slipping_grounded_tyre_in_a_hard_stop() -> void:
+	var slipping: Array[Vector4] = [Vector4(0, 0, 0, 1.5), Vector4(0, 0, 0, 0.0)]
+	var rolling: Array[Vector4] = [Vector4(0, 0, 0, 0.1), Vector4(0, 0, 0, 0.0)]
+	var down: Array[bool] = [true, true]
+	assert_true(Rumble.abs_working(slipping, down, 15.0, 8.0), "a hard stop, the rear at 10 %")
+	assert_false(Rumble.abs_working(rolling, down, 15.0, 8.0), "both tyres rolling")
+	assert_false(Rumble.abs_working(slipping, down, 15.0, 0.5), "not slowing: a spinning wheel")
+	assert_false(Rumble.abs_working(slipping, down, 1.0, 8.0), "at walking pace")
+	assert_false(Rumble.abs_working(slipping, [false, true], 15.0, 8.0), "the rear in the air")
+	assert_false(Rumble.abs_working(slipping, down, NAN, 8.0), "a speed that is not a number")
+
+
+func test_the_engine_buzzes_more_towards_its_limiter() -> void:
+	var limiter := BikeSynth.limiter_rpm()
+	assert_eq(Rumble.engine_buzz(limiter * 0.5), 0.0, "cruising")
+	assert_between(Rumble.engine_buzz(limiter * 0.9), 0.01, Rumble.ENGINE_BUZZ - 0.01, "near")
+	assert_almost_eq(Rumble.engine_buzz(limiter), Rumble.ENGINE_BUZZ, 1e-6, "at the limiter")
+	assert_eq(Rumble.engine_buzz(NAN), 0.0)
+
+
+func test_the_abs_pulses_the_light_motor_but_never_over_a_crash() -> void:
+	_rumble.riding(true, 0.0)
+	assert_eq(Input.get_joy_vibration_strength(PAD), Vector2(Rumble.ABS_PULSE, 0.0), "ABS")
+	_rumble.crashed()
+	_rumble.riding(true, 0.0)
+	assert_eq(Input.get_joy_vibration_strength(PAD), Vector2(1.0, 1.0), "the crash's shake")

@@ -90,6 +90,13 @@ impl BikeSynth {
         self.voice.rpm()
     }
 
+    /// The crank speed the rev limiter holds (rpm): the top of a rev counter, and where
+    /// the pad's engine buzz is strongest.
+    #[func]
+    fn limiter_rpm() -> f32 {
+        cpbp_sound::engine::LIMITER_RPM
+    }
+
     /// Gear engaged (1–6).
     #[func]
     fn get_gear(&self) -> i64 {
