@@ -343,3 +343,20 @@ func test_a_bike_that_cannot_be_built_is_an_error_not_a_crash() -> void:
 	_level.add_child(_bike)
 	await wait_physics_frames(2)
 	assert_false(_bike.is_running())
+
+
+func test_an_on_off_bike_field_is_a_checkbox_and_builds_either_way() -> void:
+	var description := BikeDescription.new()
+	var name := &"tyre_friction_follows_wheel"
+	var properties := description.get_property_list()
+	var listed := properties.filter(func(p: Dictionary) -> bool: return p.name == name)
+	assert_eq(listed.size(), 1, "listed once")
+	assert_eq(int(listed[0].type), TYPE_BOOL, "a bool, so the inspector shows a checkbox")
+	assert_false(description.get(name), "off, as on the reference bike")
+	description.set(name, true)
+	assert_true(description.get(name))
+	_bike = BikeSimulation.new()
+	_bike.bike = description
+	_level.add_child(_bike)
+	await wait_physics_frames(2)
+	assert_true(_bike.is_running(), "a bike with the field on builds")

@@ -7,7 +7,7 @@
 use cpbp_core::bike::{BikeParams, FIELDS};
 use godot::classes::{IResource, Resource};
 use godot::prelude::*;
-use godot::register::info::{PropertyInfo, PropertyUsageFlags};
+use godot::register::info::{PropertyHintInfo, PropertyInfo, PropertyUsageFlags};
 
 use crate::node_settings::range_hint;
 
@@ -71,17 +71,25 @@ impl IResource for BikeDescription {
         FIELDS
             .iter()
             .map(|f| PropertyInfo {
-                variant_type: VariantType::FLOAT,
+                variant_type: if f.is_switch() {
+                    VariantType::BOOL
+                } else {
+                    VariantType::FLOAT
+                },
                 class_name: StringName::default(),
                 property_name: f.name.into(),
-                hint_info: range_hint(f.range, f.unit),
+                hint_info: if f.is_switch() {
+                    PropertyHintInfo::none()
+                } else {
+                    range_hint(f.range, f.unit)
+                },
                 usage: PropertyUsageFlags::DEFAULT,
             })
             .collect()
     }
 
     fn on_get(&self, property: StringName) -> Option<Variant> {
-        index_of(&property).map(|i| self.numbers[i].to_variant())
+        index_of(&property).map(|i| field_variant(i, self.numbers[i]))
     }
 
     fn on_set(&mut self, property: StringName, value: Variant) -> bool {
@@ -89,12 +97,24 @@ impl IResource for BikeDescription {
             return false;
         };
         // Kept as given, a bad one too: building the bike refuses it, naming the field.
-        self.numbers[i] = value.try_to::<f64>().unwrap_or(f64::NAN);
+        self.numbers[i] = match value.try_to::<bool>() {
+            Ok(on) if FIELDS[i].is_switch() => f64::from(u8::from(on)),
+            _ => value.try_to::<f64>().unwrap_or(f64::NAN),
+        };
         true
     }
 
     fn on_property_get_revert(&self, property: StringName) -> Option<Variant> {
-        index_of(&property).map(|i| reference_numbers()[i].to_variant())
+        index_of(&property).map(|i| field_variant(i, reference_numbers()[i]))
+    }
+}
+
+/// Field `i`'s value as the inspector and the file show it: a bool for an on/off field.
+fn field_variant(i: usize, number: f64) -> Variant {
+    if FIELDS[i].is_switch() {
+        (number != 0.0).to_variant()
+    } else {
+        number.to_variant()
     }
 }
 

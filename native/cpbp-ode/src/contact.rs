@@ -4,7 +4,7 @@
 use std::os::raw::c_void;
 
 use crate::feet::Foot;
-use crate::tyre::Tyre;
+use crate::tyre::{rolling_direction, Tyre};
 use crate::{ffi, Vec3};
 
 /// Most contact points generated for one pair of geoms in one step.
@@ -85,9 +85,17 @@ pub(crate) unsafe fn read_vec3(p: *const f64) -> Vec3 {
     unsafe { [*p, *p.add(1), *p.add(2)] }
 }
 
+/// What `shape_tyre` made of a contact.
+enum Shaped {
+    /// Neither geom is a tyre: the contact as ODE found it.
+    NotTyre,
+    /// A tyre's, moved to where its torus touches; `rolling` is the direction its friction
+    /// follows when the tyre asks for that (`Tyre::friction_follows_wheel`).
+    Tyre { rolling: Option<[f64; 3]> },
+}
+
 /// If either geom is a tyre, moves the contact to where its torus touches. Returns `None`
-/// when the torus does not touch there (the contact is dropped), else whether a tyre
-/// shaped it.
+/// when the torus does not touch there (the contact is dropped).
 ///
 /// # Safety
 /// `o1` and `o2` must be live geoms whose data is 0 or a tyre index + 1 into `tyres`.
@@ -96,7 +104,7 @@ unsafe fn shape_tyre(
     o1: ffi::dGeomID,
     o2: ffi::dGeomID,
     contact: &mut ffi::dContactGeom,
-) -> Option<bool> {
+) -> Option<Shaped> {
     // SAFETY: guaranteed by the caller; ODE returns pointers to 3 (position) and 12
     // (rotation, row-major 3×4) reals.
     unsafe {
@@ -121,12 +129,17 @@ unsafe fn shape_tyre(
                     contact.pos = [p[0], p[1], p[2], 0.0];
                     contact.normal = [n[0] * sign, n[1] * sign, n[2] * sign, 0.0];
                     contact.depth = touch.depth;
-                    Some(true)
+                    let rolling = if tyre.friction_follows_wheel {
+                        rolling_direction(axle, touch.normal)
+                    } else {
+                        None
+                    };
+                    Some(Shaped::Tyre { rolling })
                 }
                 None => None,
             };
         }
-        Some(false)
+        Some(Shaped::NotTyre)
     }
 }
 
@@ -188,13 +201,18 @@ pub(crate) unsafe extern "C" fn near_callback(
         }
         let mut made: Vec<ffi::dContactGeom> = Vec::new();
         for contact in contacts.iter_mut().take(count.max(0) as usize) {
-            let tyre = match shape_tyre(context.tyres, o1, o2, &mut contact.geom) {
+            let (tyre, rolling) = match shape_tyre(context.tyres, o1, o2, &mut contact.geom) {
                 None => continue,
-                Some(true) if repeats(&made, &contact.geom) => continue,
-                Some(tyre) => tyre,
+                Some(Shaped::NotTyre) => (false, None),
+                Some(Shaped::Tyre { .. }) if repeats(&made, &contact.geom) => continue,
+                Some(Shaped::Tyre { rolling }) => (true, rolling),
             };
             made.push(contact.geom);
             contact.surface.mode = friction_mode(tyre);
+            if let Some(d) = rolling {
+                contact.surface.mode |= ffi::dContactFDir1 as i32;
+                contact.fdir1 = [d[0], d[1], d[2], 0.0];
+            }
             contact.surface.mu = context.surface.mu;
             contact.surface.soft_erp = context.surface.soft_erp;
             contact.surface.soft_cfm = context.surface.soft_cfm;

@@ -19,6 +19,9 @@ const FACE_TOLERANCE: f64 = 0.005;
 pub(crate) struct Tyre {
     pub(crate) radius: f64,
     pub(crate) crown: f64,
+    /// Whether its contacts' friction acts along and across the wheel (`rolling_direction`)
+    /// rather than along the two axes ODE derives from the contact normal alone.
+    pub(crate) friction_follows_wheel: bool,
 }
 
 /// Where a torus touches: the point, the normal from the ground towards the wheel, and
@@ -36,6 +39,29 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 fn add(a: [f64; 3], b: [f64; 3], k: f64) -> [f64; 3] {
     [a[0] + b[0] * k, a[1] + b[1] * k, a[2] + b[2] * k]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// The direction a wheel with this `axle` rolls over ground with this contact `normal`: in
+/// the ground's plane and square to the axle. `None` when the wheel lies flat (its axle
+/// along the normal), where no direction is the wheel's own.
+///
+/// ODE's friction is a pyramid bounded along two directions: left to itself it takes them
+/// from the normal alone, so on level ground they are fixed world axes and a tyre heading
+/// diagonally to them grips up to √2 times harder than one heading along one. Given this
+/// direction (`dContactFDir1`), the bounds are the tyre's own, along it and across it, and
+/// grip is the same at every heading.
+pub(crate) fn rolling_direction(axle: [f64; 3], normal: [f64; 3]) -> Option<[f64; 3]> {
+    let along = cross(axle, normal);
+    let length = dot(along, along).sqrt();
+    (length > 1e-6).then(|| add([0.0; 3], along, 1.0 / length))
 }
 
 impl Tyre {
@@ -116,7 +142,6 @@ impl Tyre {
 }
 
 #[cfg(test)]
-#[cfg(test)]
 mod tests {
     use super::*;
 
@@ -138,6 +163,7 @@ mod tests {
         let tyre = Tyre {
             radius: 0.3,
             crown: 0.06,
+            friction_follows_wheel: false,
         };
         let (pos, depth) = on_plane(&tyre, [0.0, 0.29, 0.0], [0.0, 0.0, 1.0], 0.01).unwrap();
         assert!((depth - 0.01).abs() < 1e-12);
@@ -150,7 +176,11 @@ mod tests {
         // lies (r − ρ) sin 30° to the −z side of the centre, which leans out beyond it; a
         // sphere would touch right under the centre.
         let (r, crown, lean) = (0.3, 0.06, 30f64.to_radians());
-        let tyre = Tyre { radius: r, crown };
+        let tyre = Tyre {
+            radius: r,
+            crown,
+            friction_follows_wheel: false,
+        };
         let axle = [0.0, -lean.sin(), lean.cos()];
         let resting = (r - crown) * lean.cos() + crown;
         let centre = [0.0, resting - 0.002, 0.0];
@@ -169,6 +199,7 @@ mod tests {
         let tyre = Tyre {
             radius: 0.3,
             crown: 0.06,
+            friction_follows_wheel: false,
         };
         let (_, depth) = on_plane(&tyre, [0.0, 0.05, 0.0], [0.0, 1.0, 0.0], 0.25).unwrap();
         assert!((depth - 0.01).abs() < 1e-12);
@@ -186,6 +217,7 @@ mod tests {
         let tyre = Tyre {
             radius: 0.3,
             crown: 0.06,
+            friction_follows_wheel: false,
         };
         let (centre, axle) = ([0.0, 0.3, 0.0], [0.0, 0.0, 1.0]);
         let edge = [0.233, 0.12, 0.0];
@@ -203,5 +235,21 @@ mod tests {
         assert!(tyre
             .contact(centre, axle, [0.0, 1.0, 0.0], 0.0, [0.31, 0.12, 0.0])
             .is_none());
+    }
+
+    #[test]
+    fn a_wheel_rolls_square_to_its_axle_within_the_ground() {
+        let up = [0.0, 1.0, 0.0];
+        // Upright, axle along +z: rolls along ±x.
+        let d = rolling_direction([0.0, 0.0, 1.0], up).unwrap();
+        assert!((d[0].abs() - 1.0).abs() < 1e-12 && d[1].abs() < 1e-12 && d[2].abs() < 1e-12);
+        // Heading 45° and leaning 40°: still level and square to the axle's level part.
+        let (h, lean) = (45f64.to_radians(), 40f64.to_radians());
+        let axle = [-h.sin() * lean.cos(), -lean.sin(), h.cos() * lean.cos()];
+        let d = rolling_direction(axle, up).unwrap();
+        assert!(d[1].abs() < 1e-12 && dot(d, axle).abs() < 1e-12);
+        assert!((dot(d, d) - 1.0).abs() < 1e-12);
+        // Lying flat: no direction of its own.
+        assert_eq!(rolling_direction(up, up), None);
     }
 }

@@ -70,12 +70,7 @@ pub fn parse_bike_file(text: &str) -> Result<BikeFile, String> {
                     .map_err(|_| format!("suspension must be true or false, not {value}"))?;
             }
             key if LOOKS.contains(&key) => {}
-            key => {
-                let number = value
-                    .parse::<f64>()
-                    .map_err(|_| format!("{key} must be a number, not {value}"))?;
-                values.push((key.to_owned(), number));
-            }
+            key => values.push((key.to_owned(), number_of(key, value)?)),
         }
     }
     let params = BikeParams::from_fields(values.iter().map(|(k, v)| (k.as_str(), *v)), sprung)?;
@@ -84,6 +79,20 @@ pub fn parse_bike_file(text: &str) -> Result<BikeFile, String> {
         key: String::new(),
         params,
     })
+}
+
+/// A field's value in a bike file: a number, or `true`/`false` for an on/off field (1/0).
+fn number_of(key: &str, value: &str) -> Result<f64, String> {
+    if super::field(key).is_some_and(|f| f.is_switch()) {
+        return match value {
+            "true" => Ok(1.0),
+            "false" => Ok(0.0),
+            _ => Err(format!("{key} must be true or false, not {value}")),
+        };
+    }
+    value
+        .parse::<f64>()
+        .map_err(|_| format!("{key} must be a number, not {value}"))
 }
 
 #[cfg(test)]
@@ -129,5 +138,16 @@ mod tests {
             .unwrap_err()
             .contains("wheelbase must be a number"));
         assert!(parse_bike_file("[gd_resource type=\"Mesh\"]").is_err());
+        let switch = "tyre_friction_follows_wheel";
+        let on = REFERENCE.replace("trail = 0.095", &format!("trail = 0.095\n{switch} = true"));
+        assert!(
+            parse_bike_file(&on)
+                .unwrap()
+                .params
+                .tyre_friction_follows_wheel
+        );
+        let broken = REFERENCE.replace("trail = 0.095", &format!("trail = 0.095\n{switch} = 1"));
+        let why = parse_bike_file(&broken).unwrap_err();
+        assert!(why.contains("must be true or false, not 1"), "{why}");
     }
 }

@@ -23,10 +23,16 @@ pub struct BikeField {
 }
 
 impl BikeField {
+    /// Whether the field is on/off (1 or 0): a bike file and the inspector show it as a
+    /// bool, `true` or `false`.
+    pub fn is_switch(&self) -> bool {
+        matches!(self.unit_change, UnitChange::Switch)
+    }
+
     /// The field's value on `bike`, in the file's unit (None: the bike lacks the part).
     pub fn value(&self, bike: &BikeParams) -> Option<f64> {
         (self.get)(bike).map(|v| match self.unit_change {
-            UnitChange::None => v,
+            UnitChange::None | UnitChange::Switch => v,
             UnitChange::Degrees => v.to_degrees(),
             UnitChange::Kmh => v * 3.6,
         })
@@ -46,8 +52,11 @@ impl BikeField {
                 self.name, r.min, r.max
             ));
         }
+        if matches!(self.unit_change, UnitChange::Switch) && value != 0.0 && value != 1.0 {
+            return Err(format!("{} is 1 (on) or 0 (off), not {value}", self.name));
+        }
         let value = match self.unit_change {
-            UnitChange::None => value,
+            UnitChange::None | UnitChange::Switch => value,
             UnitChange::Degrees => value.to_radians(),
             UnitChange::Kmh => value / 3.6,
         };
@@ -61,10 +70,12 @@ impl BikeField {
 #[derive(Clone, Copy)]
 enum UnitChange {
     None,
+    /// An on/off field: 1 on, 0 off (a bike file holds numbers), nothing in between.
+    Switch,
     Degrees,
     Kmh,
 }
-use UnitChange::{Degrees as DEG, Kmh as KMH, None as SAME};
+use UnitChange::{Degrees as DEG, Kmh as KMH, None as SAME, Switch as ON_OFF};
 
 macro_rules! field {
     ($name:literal, $unit:literal, $min:expr, $max:expr, $step:expr, $scale:expr, $($path:tt)+) => {
@@ -85,6 +96,9 @@ macro_rules! field {
     (@set $part:ident / $($field:ident).+) => {
         |b: &mut BikeParams, v| if let Some(p) = b.$part.as_mut() { p.$($field).+ = v; }
     };
+    // A bool of the model, read and written as 1 or 0 (`ON_OFF`).
+    (@get flag $field:ident) => { |b: &BikeParams| Some(if b.$field { 1.0 } else { 0.0 }) };
+    (@set flag $field:ident) => { |b: &mut BikeParams, v| b.$field = v != 0.0 };
     (@get $field:ident) => { |b: &BikeParams| Some(b.$field) };
     (@set $field:ident) => { |b: &mut BikeParams, v| b.$field = v };
 }
@@ -105,6 +119,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "swingarm_mass", "kg", 1.0, 20.0, 0.5, SAME, swingarm_mass },
     field! { "steer_limit_deg", "°", 10.0, 60.0, 1.0, DEG, steer_limit },
     field! { "tyre_friction", "", 0.3, 1.5, 0.05, SAME, tyre_friction },
+    field! { "tyre_friction_follows_wheel", "", 0.0, 1.0, 1.0, ON_OFF, flag tyre_friction_follows_wheel },
     field! { "max_lean_deg", "°", 15.0, 60.0, 0.5, DEG, max_lean },
     field! { "rider/lower_leg_mass", "kg", 2.0, 30.0, 0.05, SAME, [0] },
     field! { "rider/upper_leg_mass", "kg", 4.0, 40.0, 0.05, SAME, [1] },

@@ -60,6 +60,11 @@ pub struct BikeParams {
     pub steer_limit: f64,
     /// Coulomb friction coefficient of tyres on the ground.
     pub tyre_friction: f64,
+    /// Whether the tyres' friction acts along and across each wheel, so grip is the same
+    /// at every heading (`World::set_tyre_friction_follows_wheel`). Off, the reference
+    /// bike's: ODE's friction pyramid then takes world axes on level ground, and a tyre
+    /// heading diagonally to them grips up to √2 times harder than one heading along one.
+    pub tyre_friction_follows_wheel: bool,
     /// The deepest lean (rad) the turn command asks for (`TurnIntent::for_bike`): the
     /// reference bike's 30°, where the thesis's arcade controller, with the rider upright
     /// in the mid-plane, still holds long circles (it overshoots deeper leans and falls:
@@ -95,6 +100,7 @@ impl Default for BikeParams {
             rider_brace: 0.0,
             steer_limit: 35f64.to_radians(),
             tyre_friction: 1.0,
+            tyre_friction_follows_wheel: false,
             max_lean: 30f64.to_radians(),
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),

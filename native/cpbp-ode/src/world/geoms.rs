@@ -36,10 +36,32 @@ impl World {
     /// centre (a sphere is a tyre whose crown is as round as the whole wheel).
     pub fn add_tyre(&mut self, radius: f64, crown: f64, body: BodyId) -> GeomId {
         let geom = self.add_sphere(radius, Some(body));
-        self.tyres.push(Tyre { radius, crown });
+        self.tyres.push(Tyre {
+            radius,
+            crown,
+            friction_follows_wheel: false,
+        });
         // SAFETY: the geom belongs to this world; its data is the tyre's index + 1.
         unsafe { ffi::dGeomSetData(self.geoms[geom.0], self.tyres.len() as *mut c_void) };
         geom
+    }
+
+    /// Makes the friction of `tyre`'s contacts act along and across the wheel (`on`) or
+    /// along the two axes ODE derives from the contact normal (the default: world axes on
+    /// level ground, so grip depends on heading). Does nothing to a geom that is no tyre.
+    pub fn set_tyre_friction_follows_wheel(&mut self, tyre: GeomId, on: bool) {
+        let geom = self.geoms[tyre.0];
+        // SAFETY: the geom belongs to this world; a tyre is a sphere whose data is its
+        // index + 1.
+        let index = unsafe {
+            if ffi::dGeomGetClass(geom) != ffi::dSphereClass as i32 {
+                return;
+            }
+            ffi::dGeomGetData(geom) as usize
+        };
+        if let Some(tyre) = index.checked_sub(1).and_then(|i| self.tyres.get_mut(i)) {
+            tyre.friction_follows_wheel = on;
+        }
     }
 
     /// Adds a foot: a sphere of `radius` on `body`, standing on the terrain as `surface`

@@ -37,6 +37,21 @@ fn a_bad_number_is_refused_naming_its_field() {
     assert!(why.contains("the fork would have no offset"), "{why}");
     let why = BikeParams::from_fields([("colour", 1.0)], true).unwrap_err();
     assert!(why.contains("no bike field is called colour"), "{why}");
+    let why = BikeParams::from_fields([("tyre_friction_follows_wheel", 0.5)], true).unwrap_err();
+    assert!(
+        why.contains("tyre_friction_follows_wheel is 1 (on) or 0 (off), not 0.5"),
+        "{why}"
+    );
+}
+
+#[test]
+fn an_on_off_field_reads_and_writes_one_or_zero() {
+    let name = "tyre_friction_follows_wheel";
+    let on = BikeParams::from_fields([(name, 1.0)], true).unwrap();
+    assert!(on.tyre_friction_follows_wheel);
+    assert_eq!(field(name).unwrap().value(&on), Some(1.0));
+    let off = BikeParams::from_fields([(name, 0.0)], true).unwrap();
+    assert_eq!(off, BikeParams::default());
 }
 
 #[test]

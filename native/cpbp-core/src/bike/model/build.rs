@@ -23,6 +23,7 @@ impl Bike {
             placement: *placement,
             rest: Vec::new(),
             shapes: Vec::new(),
+            tyre_friction_follows_wheel: params.tyre_friction_follows_wheel,
         };
         let (r, crown) = (params.wheel_radius, params.tyre_crown);
         let rear = builder.wheel(
@@ -153,6 +154,8 @@ struct Builder<'w> {
     placement: Placement,
     rest: Vec<(DVec3, DQuat)>,
     shapes: Vec<PartShape>,
+    /// `BikeParams::tyre_friction_follows_wheel`, for the wheels' tyres.
+    tyre_friction_follows_wheel: bool,
 }
 
 impl Builder<'_> {
@@ -189,7 +192,9 @@ impl Builder<'_> {
             axle,
             DQuat::IDENTITY,
         );
-        self.world.add_tyre(radius, crown, body);
+        let tyre = self.world.add_tyre(radius, crown, body);
+        self.world
+            .set_tyre_friction_follows_wheel(tyre, self.tyre_friction_follows_wheel);
         self.shape(part, Shape::Sphere { radius }, DVec3::ZERO, DQuat::IDENTITY);
         body
     }
