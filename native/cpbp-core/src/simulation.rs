@@ -7,8 +7,8 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use crate::bike::{
-    Bike, BikeParams, Controls, CrashCause, CrashMonitor, Exploded, Part, PeriodWatch,
-    PitchRequest, Placement, GRAVITY,
+    Bike, BikeParams, Controls, Crash, CrashMonitor, Exploded, Part, PeriodWatch, PitchRequest,
+    Placement, GRAVITY,
 };
 use crate::ode::World;
 use crate::physics::PhysicsModel;
@@ -45,7 +45,7 @@ impl Default for SimulationConfig {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct StepEvents {
     /// The ride crashed in this step (reported once).
-    pub crashed: Option<CrashCause>,
+    pub crashed: Option<Crash>,
     /// A wheel touched the ground again after the bike was airborne.
     pub landed: bool,
     /// The physics blew up and was recovered from (with the reason).
@@ -64,7 +64,7 @@ pub struct Simulation {
     /// The pitch the rider's weight asks for (`Goal::pitch_request`).
     pitch_request: PitchRequest,
     crash: CrashMonitor,
-    crashed: Option<CrashCause>,
+    crashed: Option<Crash>,
     airborne_for: f64,
     /// The ground's blow in the last step beyond the weight's share (N·s along up).
     ground_blow: f64,
@@ -129,7 +129,7 @@ impl Simulation {
     }
 
     /// The crash of this ride, if it crashed (cleared by reset and lift).
-    pub fn crashed(&self) -> Option<CrashCause> {
+    pub fn crashed(&self) -> Option<Crash> {
         self.crashed
     }
 
@@ -299,7 +299,7 @@ struct MasterWatch<'a> {
     airborne_at_start: bool,
     airborne_for: &'a mut f64,
     crash: &'a mut CrashMonitor,
-    crashed: &'a mut Option<CrashCause>,
+    crashed: &'a mut Option<Crash>,
     events: StepEvents,
     momentum_before: DVec3,
 }
@@ -320,10 +320,11 @@ impl PeriodWatch for MasterWatch<'_> {
         }
         let lean = self.bike.lean(world, self.up);
         let touching = self.bike.part_touching_ground(world);
-        if let Some(cause) = self.crash.update(dt, lean, touching) {
+        let side_slide = self.bike.tyre_side_slide(world, self.up);
+        if let Some(crash) = self.crash.update(dt, lean, touching, side_slide) {
             if self.crashed.is_none() {
-                *self.crashed = Some(cause);
-                self.events.crashed = Some(cause);
+                *self.crashed = Some(crash);
+                self.events.crashed = Some(crash);
             }
         }
     }

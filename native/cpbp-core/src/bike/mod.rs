@@ -25,7 +25,7 @@ pub use controls::{
     index, Controls, ForceClass, CONTROL_DIM, DRIVE_ENTRIES, FORCE_TUNINGS, JOINT_TARGETS, LOWER,
     MAX_TORQUE, UPPER,
 };
-pub use crash::{CrashCause, CrashMonitor};
+pub use crash::{Crash, CrashCause, CrashMonitor, Fall};
 pub use drive::{DriveInput, DEFAULT_MAX_SPEED_KMH, TOP_SPEED_KMH};
 pub use feet::Feet;
 pub use fields::{field, BikeField, FIELDS};

@@ -16,6 +16,7 @@ mod falling_off;
 mod feet;
 mod front_brake;
 mod learned;
+mod low_side;
 mod optimizer;
 mod physics_models;
 mod reproducible;

@@ -36,6 +36,33 @@ impl Bike {
         )
     }
 
+    /// How fast the tyres on the ground slide sideways (m/s, positive towards the bike's
+    /// right): of the two contact points' velocities across the bike's heading, the
+    /// larger. Near zero while they grip; what the crash monitor reads a low-side from.
+    pub fn tyre_side_slide(&self, world: &World, up: DVec3) -> f64 {
+        let right = self.heading(world, up).cross(up);
+        let (rear_contact, front_contact) = self.tyre_contacts(world, up);
+        let across = |part: Part, contact: DVec3| {
+            let body = self.body(part);
+            if !world.body_touches_static(body) {
+                return 0.0;
+            }
+            let centre = world.body_position(body);
+            let velocity = world.body_linear_velocity(body)
+                + world.body_angular_velocity(body).cross(contact - centre);
+            velocity.dot(right)
+        };
+        let (rear, front) = (
+            across(Part::RearWheel, rear_contact),
+            across(Part::FrontWheel, front_contact),
+        );
+        if rear.abs() >= front.abs() {
+            rear
+        } else {
+            front
+        }
+    }
+
     /// Linear momentum of bike and rider (N·s). Over a step, gravity and the ground are
     /// the only outside forces, so its change along up is the ground's blow beyond what
     /// carries the weight: about zero riding along, a spike on landing.
