@@ -14,7 +14,7 @@ pub use ground::FootState;
 
 use glam::{DQuat, DVec3};
 
-use crate::bike::controls::{index, Controls, ForceClass};
+use crate::bike::controls::{index, Controls, ForceClass, MAX_TORQUE};
 use crate::bike::params::BikeParams;
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::{BodyId, GeomId, JointId, World};
@@ -212,11 +212,14 @@ impl Bike {
             controls
         };
         let c = controls.values();
+        // The controls' steering tuning scales the rider's own strength at the bar
+        // (`BikeParams::max_steer_torque`; 60/60 = 1 exactly on the reference bike).
+        let rider_share = self.params.max_steer_torque / MAX_TORQUE[ForceClass::Steering as usize];
         world.set_motor(
             self.steer,
             0,
             c[index::STEER],
-            controls.max_torque(ForceClass::Steering),
+            controls.max_torque(ForceClass::Steering) * rider_share,
         );
         self.set_rear_motor(world, controls, held, up);
         self.set_front_brake(world, controls, held, up, 0.0);
