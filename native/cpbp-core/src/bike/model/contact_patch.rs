@@ -15,25 +15,32 @@ impl Bike {
         world.hinge_rate(self.rear_axle) * self.params.wheel_radius
     }
 
+    /// The velocity of each tyre's material at its contact point (rear, front), as part of
+    /// the spinning wheel; `None` for a tyre off the ground.
+    fn contact_velocities(&self, world: &World, up: DVec3) -> [Option<DVec3>; 2] {
+        let (rear_contact, front_contact) = self.tyre_contacts(world, up);
+        [
+            (Part::RearWheel, rear_contact),
+            (Part::FrontWheel, front_contact),
+        ]
+        .map(|(part, contact)| {
+            let body = self.body(part);
+            world.body_touches_static(body).then(|| {
+                let centre = world.body_position(body);
+                world.body_linear_velocity(body)
+                    + world.body_angular_velocity(body).cross(contact - centre)
+            })
+        })
+    }
+
     /// How fast each tyre (rear, front) slides over the ground at its contact point
     /// (m/s): the contact's velocity as part of the spinning wheel, across `up`. Zero for
     /// a tyre off the ground and for one rolling without slip.
     pub fn tyre_slip(&self, world: &World, up: DVec3) -> (f64, f64) {
-        let (rear_contact, front_contact) = self.tyre_contacts(world, up);
-        let slip = |part: Part, contact: DVec3| {
-            let body = self.body(part);
-            if !world.body_touches_static(body) {
-                return 0.0;
-            }
-            let centre = world.body_position(body);
-            let velocity = world.body_linear_velocity(body)
-                + world.body_angular_velocity(body).cross(contact - centre);
-            (velocity - up * velocity.dot(up)).length()
-        };
-        (
-            slip(Part::RearWheel, rear_contact),
-            slip(Part::FrontWheel, front_contact),
-        )
+        let [rear, front] = self
+            .contact_velocities(world, up)
+            .map(|v| v.map_or(0.0, |v| (v - up * v.dot(up)).length()));
+        (rear, front)
     }
 
     /// How fast the tyres on the ground slide sideways (m/s, positive towards the bike's
@@ -41,21 +48,9 @@ impl Bike {
     /// larger. Near zero while they grip; what the crash monitor reads a low-side from.
     pub fn tyre_side_slide(&self, world: &World, up: DVec3) -> f64 {
         let right = self.heading(world, up).cross(up);
-        let (rear_contact, front_contact) = self.tyre_contacts(world, up);
-        let across = |part: Part, contact: DVec3| {
-            let body = self.body(part);
-            if !world.body_touches_static(body) {
-                return 0.0;
-            }
-            let centre = world.body_position(body);
-            let velocity = world.body_linear_velocity(body)
-                + world.body_angular_velocity(body).cross(contact - centre);
-            velocity.dot(right)
-        };
-        let (rear, front) = (
-            across(Part::RearWheel, rear_contact),
-            across(Part::FrontWheel, front_contact),
-        );
+        let [rear, front] = self
+            .contact_velocities(world, up)
+            .map(|v| v.map_or(0.0, |v| v.dot(right)));
         if rear.abs() >= front.abs() {
             rear
         } else {
