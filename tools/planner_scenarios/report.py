@@ -28,6 +28,11 @@ METRICS = {
     "brake90": "full brake from 90 km/h to rest: mean deceleration v₀²/2d from the trigger (g)",
     "brake-bend": "full brake in a 25 m bend at 25° of lean (38.5 km/h): mean deceleration (g)",
     "logs": "RMS lean over the test level's logs at 15 km/h (°)",
+    **{f"camber{d}-{side}": f"stop on a road falling {d}° to the {side}, stand, ride off: "
+                            "largest lean from upright (°)"
+       for d in (5, 8, 10) for side in ("left", "right")},
+    "slope10-across45": "stop across a 10° slope at 45°, stand, ride off: largest lean "
+                        "from upright (°)",
 }
 # What a full brake reports beside its metric (the rows' `extra`), with its heading.
 BRAKE_MEASURES = (("distance_m", "distance (m)"), ("peak_g", "peak 0.1 s (g)"),

@@ -1,9 +1,11 @@
 //! Feet: sphere geoms on a body that stand on the terrain with a leg's give and a sole's
 //! grip instead of a rigid body's. A foot is off the ground (disabled: ODE skips it when
 //! colliding) until put down, and its touching the terrain is reported apart from the
-//! body's, so a rider's foot on the road is not a part of the bike on the road.
+//! body's, so a rider's foot on the road is not a part of the bike on the road. A foot
+//! may have a leg that stretches (`World::set_foot_leg`): its sole then sits that far
+//! along the leg from where it was built, and the stretch is part of the world's state.
 
-use crate::ffi;
+use crate::{ffi, DVec3};
 
 /// How a foot meets the ground: a spring–damper along the contact normal (the leg) and
 /// Coulomb friction (the sole).
@@ -32,6 +34,24 @@ pub(crate) struct Foot {
     pub(crate) geom: ffi::dGeomID,
     pub(crate) surface: FootSurface,
     pub(crate) touching: bool,
+    /// The leg that moves the sole, if it has one (a foot without is fixed where built).
+    pub(crate) leg: Option<Leg>,
+}
+
+/// A leg that stretches: the sole sits `extension` metres along `direction` (a unit
+/// vector in the body's frame) from `sole`, where the foot was built on the body.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Leg {
+    pub(crate) sole: DVec3,
+    pub(crate) direction: DVec3,
+    pub(crate) extension: f64,
+}
+
+impl Leg {
+    /// Where the sole sits on the body (the geom's offset).
+    pub(crate) fn sole_offset(&self) -> DVec3 {
+        self.sole + self.direction * self.extension
+    }
 }
 
 #[cfg(test)]

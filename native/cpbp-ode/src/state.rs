@@ -45,6 +45,11 @@ pub struct WorldState {
     /// its own history.
     pub touching_static: Vec<bool>,
     pub feet_touching: Vec<bool>,
+    /// Per foot, whether it is down and how far its leg is stretched (m): a rider's choice
+    /// of foot and the leg's reach are carried from step to step, so a rollout branched
+    /// from a snapshot goes on with the same foot as the ride.
+    pub feet_down: Vec<bool>,
+    pub feet_extension: Vec<f64>,
     /// Per body, the sum of its contacts' normals with the terrain in the last step (from
     /// the ground towards the body; zero where it touched none): the slope under a wheel,
     /// which a step may read before it runs, as it reads the flags above.

@@ -9,6 +9,15 @@
 //! collide at all, so riding is exactly what it was; a launch with the throttle open
 //! lifts them at once, so every ride that sets off at full throttle (the experiment's,
 //! the tests') is exactly what it was too.
+//!
+//! That foot is a stiff leg at a fixed place, which stands the bike on level ground but
+//! not across a slope: on a road falling 8° to one side the uphill foot touched with the
+//! weight already downhill, the bike rolled off it onto the downhill foot and stood
+//! leaned 9°, and from there, pulling away, no steering recovered (issue 68). A bike with
+//! `reach` has legs that reach: the rider puts one foot down, on the side the bike leans
+//! to, and its leg stretches or bends until the bike leans `prop_lean` from upright onto
+//! it (upright against gravity, not against the road), and it stays down as a prop while
+//! the bike pulls away, to `prop_until`. The rule is in `model/legs.rs`.
 
 use glam::DVec3;
 
@@ -33,6 +42,16 @@ pub struct Feet {
     /// the bar held, its rider's body still levered the bike from one foot over onto the
     /// other, to 19°, where the flop outweighed the bar.
     pub straighten_rate: f64,
+    /// How far (m) a leg stretches from where the sole is built to reach the road; 0 is
+    /// a stiff leg, the feet as the reference's rider had them (both down, fixed).
+    pub reach: f64,
+    /// The lean (rad) from upright, against gravity, a reaching leg holds the bike at.
+    pub prop_lean: f64,
+    /// How fast (m/s) a reaching leg stretches or shortens.
+    pub leg_speed: f64,
+    /// Pulling away, a reaching leg's foot stays down, a prop, below this forward speed
+    /// (m/s), with the throttle open.
+    pub prop_until: f64,
 }
 
 impl Default for Feet {
@@ -45,7 +64,10 @@ impl Default for Feet {
     /// planner's hill start from there fell. The shoe grips at μ = 0.8 (rubber soles on
     /// asphalt). Down below 0.8 m/s (about 3 km/h), where steering no longer
     /// balances. The bar goes straight in about half a second (6/s: a 95 % return in
-    /// 0.5 s).
+    /// 0.5 s). The legs do not reach (`reach` 0); where they do, the bike stands 2.5° from
+    /// upright on one, the leg moves at 1 m/s (a tenth of a second for the 10 cm a
+    /// camber asks), and the foot props the bike to 1.4 m/s (5 km/h, a walk), where
+    /// steering balances again.
     fn default() -> Self {
         Self {
             right_foot: DVec3::new(-0.05, 0.045, 0.40),
@@ -57,6 +79,10 @@ impl Default for Feet {
             },
             down_below: 0.8,
             straighten_rate: 6.0,
+            reach: 0.0,
+            prop_lean: 2.5f64.to_radians(),
+            leg_speed: 1.0,
+            prop_until: 1.4,
         }
     }
 }
@@ -66,6 +92,11 @@ impl Feet {
     pub fn positions(&self) -> [DVec3; 2] {
         let right = self.right_foot;
         [DVec3::new(right.x, right.y, -right.z), right]
+    }
+
+    /// Whether the legs reach (`reach`): one foot down, stretched to the road.
+    pub fn reaching(&self) -> bool {
+        self.reach > 0.0
     }
 
     /// Whether the feet are down at forward speed `speed` (m/s), with the throttle open

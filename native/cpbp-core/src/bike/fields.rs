@@ -169,6 +169,10 @@ pub const FIELDS: &[BikeField] = &[
     field! { "feet/damping", "N·s/m", 10.0, 50_000.0, 10.0, SAME, feet / surface.damping },
     field! { "feet/down_below", "m/s", 0.0, 5.0, 0.05, SAME, feet / down_below },
     field! { "feet/straighten_rate", "1/s", 0.0, 30.0, 0.5, SAME, feet / straighten_rate },
+    field! { "feet/reach", "m", 0.0, 0.6, 0.005, SAME, feet / reach },
+    field! { "feet/prop_lean_deg", "°", 0.5, 15.0, 0.5, DEG, feet / prop_lean },
+    field! { "feet/leg_speed", "m/s", 0.1, 5.0, 0.1, SAME, feet / leg_speed },
+    field! { "feet/prop_until", "m/s", 0.0, 5.0, 0.05, SAME, feet / prop_until },
 ];
 
 /// The field called `name`.

@@ -9,7 +9,7 @@ pub mod pendulum;
 
 use std::sync::Arc;
 
-use cpbp_core::bike::{DriveInput, Placement};
+use cpbp_core::bike::{read_bike_file, BikeParams, DriveInput, Placement};
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
@@ -18,6 +18,15 @@ use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
 
 pub const FRAMES_PER_SECOND: usize = 30;
+
+/// The game's street bike, as its file has it (scenes/bike/bikes/street_390.tres).
+pub fn street_bike() -> BikeParams {
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../scenes/bike/bikes/street_390.tres"
+    );
+    read_bike_file(std::path::Path::new(file)).unwrap().params
+}
 
 /// A simulation on an endless flat plane, the bike at rest facing an arbitrary heading
 /// (so nothing is symmetric by accident).

@@ -6,21 +6,11 @@
 //! the rider turns the bar with 100 N·m (`max_steer_torque`); with the reference's 60 the
 //! bar barely moves past 40° and the lean creeps on into a low-side.
 
-use std::path::Path;
-
 use crate::common;
 
-use cpbp_core::bike::{read_bike_file, BikeParams, Fall};
+use cpbp_core::bike::{BikeParams, Fall};
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::SimulationConfig;
-
-fn street_bike() -> BikeParams {
-    let file = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../scenes/bike/bikes/street_390.tres"
-    );
-    read_bike_file(Path::new(file)).unwrap().params
-}
 
 /// Arcade on `bike` at `kmh`, then asked for `lean_deg` of right lean for 6 s: the mean
 /// lean (°) over the last 3 s, or how it fell.
@@ -55,12 +45,12 @@ fn lean_hard(bike: BikeParams, kmh: f64, lean_deg: f64) -> Result<f64, (Option<F
 fn a_lean_beyond_the_grip_is_a_low_side() {
     let slippery = BikeParams {
         tyre_friction: 0.4,
-        ..street_bike()
+        ..common::street_bike()
     };
     let (fall, what) = lean_hard(slippery, 40.0, 30.0).expect_err("on μ = 0.4 30° falls");
     assert_eq!(fall, Some(Fall::LowSide), "{what}");
     assert!(what.starts_with("low-side"), "{what}");
-    let lean = lean_hard(street_bike(), 40.0, 30.0).expect("on its own tyres 30° holds");
+    let lean = lean_hard(common::street_bike(), 40.0, 30.0).expect("on its own tyres 30° holds");
     assert!((lean - 30.0).abs() < 1.0, "held {lean:.1}°");
 }
 
@@ -70,7 +60,7 @@ fn a_strong_hand_at_the_bar_holds_45_degrees_at_60_kmh() {
         max_lean: 45f64.to_radians(),
         tyre_friction_follows_wheel: true,
         max_steer_torque: 100.0,
-        ..street_bike()
+        ..common::street_bike()
     };
     let lean = lean_hard(bike.clone(), 60.0, 45.0).expect("with 100 N·m 45° holds");
     assert!((lean - 45.0).abs() < 1.0, "held {lean:.1}°");

@@ -11,6 +11,7 @@ mod common;
 
 mod air_control;
 mod anytime;
+mod camber_feet;
 mod contact_patch;
 mod deep_lean;
 mod falling_off;

@@ -3,29 +3,17 @@
 //! is pulled, the rear tyre stays on the road, no step of it speeds the bike up, and it
 //! ends standing; with the weight forward the same trigger still lifts a stoppie.
 
-use std::path::Path;
-
 use crate::common;
 
-use cpbp_core::bike::{
-    index, read_bike_file, BikeParams, Controls, DriveInput, RiderPosition, UPPER,
-};
+use cpbp_core::bike::{index, Controls, DriveInput, RiderPosition, UPPER};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::SimulationConfig;
 
-fn street_bike() -> BikeParams {
-    let file = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../scenes/bike/bikes/street_390.tres"
-    );
-    read_bike_file(Path::new(file)).unwrap().params
-}
-
 /// A `kind` ride of the street bike at `kmh`, planners at N = 5 waiting for every plan.
 fn street_ride(kind: ControllerKind, kmh: f64) -> Ride {
     let sim = common::flat_ride_with(SimulationConfig {
-        bike: street_bike(),
+        bike: common::street_bike(),
         ..SimulationConfig::default()
     });
     let mut ride = Ride::new(sim, kind);

@@ -4,7 +4,6 @@ use std::os::raw::c_void;
 use std::sync::Arc;
 
 use super::{GeomId, World};
-use crate::feet::{Foot, FootSurface};
 use crate::shared_data::{HeightFieldData, TriMeshData};
 use crate::tyre::Tyre;
 use crate::{ffi, ode_quat, BodyId, DQuat, DVec3};
@@ -62,54 +61,6 @@ impl World {
         if let Some(tyre) = index.checked_sub(1).and_then(|i| self.tyres.get_mut(i)) {
             tyre.friction_follows_wheel = on;
         }
-    }
-
-    /// Adds a foot: a sphere of `radius` on `body`, standing on the terrain as `surface`
-    /// says (`FootSurface`), up (not colliding) until `set_foot_down`.
-    pub fn add_foot(&mut self, radius: f64, body: BodyId, surface: FootSurface) -> GeomId {
-        let geom = self.add_sphere(radius, Some(body));
-        let id = self.geoms[geom.0];
-        // SAFETY: the geom belongs to this world.
-        unsafe { ffi::dGeomDisable(id) };
-        self.feet.push(Foot {
-            geom: id,
-            surface,
-            touching: false,
-        });
-        geom
-    }
-
-    /// Puts a foot down (it collides with the terrain from the next step) or lifts it.
-    /// Panics if `foot` is not a foot of this world.
-    pub fn set_foot_down(&mut self, foot: GeomId, down: bool) {
-        let id = self.foot(foot).geom;
-        // SAFETY: the geom belongs to this world.
-        unsafe {
-            if down {
-                ffi::dGeomEnable(id);
-            } else {
-                ffi::dGeomDisable(id);
-            }
-        }
-    }
-
-    /// Whether a foot is down (see `set_foot_down`).
-    pub fn is_foot_down(&self, foot: GeomId) -> bool {
-        // SAFETY: the geom belongs to this world.
-        unsafe { ffi::dGeomIsEnabled(self.foot(foot).geom) != 0 }
-    }
-
-    /// Whether a foot stood on the terrain in the last step.
-    pub fn foot_touches_ground(&self, foot: GeomId) -> bool {
-        self.foot(foot).touching
-    }
-
-    fn foot(&self, foot: GeomId) -> &Foot {
-        let id = self.geoms[foot.0];
-        self.feet
-            .iter()
-            .find(|f| f.geom == id)
-            .expect("add_foot made this geom")
     }
 
     /// Adds a capsule geom along its local z axis (cylinder length without the caps).

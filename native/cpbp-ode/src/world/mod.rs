@@ -1,5 +1,6 @@
 //! One ODE world with its collision space and contact joints, owned as a unit.
 
+mod feet;
 mod geoms;
 mod gyroscopic;
 
@@ -265,12 +266,15 @@ impl World {
         let motors = (0..self.joints.len())
             .map(|j| self.motor_state(crate::JointId(j)))
             .collect();
+        let (feet_down, feet_extension) = self.feet_state();
         WorldState {
             bodies,
             motors,
             random_seed: self.random_seed,
             touching_static: self.touching_static.clone(),
             feet_touching: self.feet.iter().map(|f| f.touching).collect(),
+            feet_down,
+            feet_extension,
             ground_normals: self.ground_normals.clone(),
         }
     }
@@ -282,7 +286,8 @@ impl World {
             || state.motors.len() != self.joints.len()
             || state.touching_static.len() != self.bodies.len()
             || state.ground_normals.len() != self.bodies.len()
-            || state.feet_touching.len() != self.feet.len()
+            || [state.feet_touching.len(), state.feet_down.len()] != [self.feet.len(); 2]
+            || state.feet_extension.len() != self.feet.len()
         {
             return Err(StateMismatch {
                 expected_bodies: self.bodies.len(),
@@ -309,9 +314,11 @@ impl World {
         self.touching_static.copy_from_slice(&state.touching_static);
         self.ground_normals.copy_from_slice(&state.ground_normals);
         self.ground_points.iter_mut().for_each(|p| *p = None);
-        for (foot, &touching) in self.feet.iter_mut().zip(&state.feet_touching) {
-            foot.touching = touching;
-        }
+        self.restore_feet(
+            &state.feet_touching,
+            &state.feet_down,
+            &state.feet_extension,
+        );
         Ok(())
     }
 

@@ -113,6 +113,11 @@ impl Bike {
                 let foot = builder.world.add_foot(feet.radius, frame, feet.surface);
                 let offset = at - frame_rest;
                 builder.world.set_geom_offset(foot, offset, DQuat::IDENTITY);
+                if feet.reaching() {
+                    builder
+                        .world
+                        .set_foot_leg(foot, offset, super::legs::LEG_DIRECTION);
+                }
                 foot
             })
         });

@@ -50,6 +50,7 @@ impl Bike {
         watch.started(world);
         for _ in 0..substeps {
             self.modulate_front_brake(world, controls, held, up, dt);
+            self.move_legs(world, up, dt);
             world.step(dt);
             if let Some(reason) = self.explosion(world) {
                 return Err(Exploded(reason));

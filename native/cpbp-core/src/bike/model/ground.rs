@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use super::{Bike, Part};
+use super::{legs, Bike, Part};
 use crate::bike::controls::{index, Controls, ForceClass};
 use crate::bike::drive::throttle_open;
 use crate::bike::manual::POSE_GAIN;
@@ -155,13 +155,16 @@ impl Bike {
     /// throttle opens (`Feet`); a rider who fell off has no feet on the bike. Returns
     /// whether they are down.
     pub(super) fn place_feet(&self, world: &mut World, controls: &Controls, up: DVec3) -> bool {
-        let (Some(feet), Some(geoms)) = (&self.params.feet, &self.feet) else {
+        let (Some(feet), Some(geoms)) = (&self.params.feet, self.feet) else {
             return false;
         };
+        if feet.reaching() {
+            return self.place_reaching_feet(world, controls, up, feet, geoms);
+        }
         let down = self.rider_is_on(world)
             && feet.down_at(self.forward_speed(world, up), throttle_open(controls));
         for foot in geoms {
-            world.set_foot_down(*foot, down);
+            world.set_foot_down(foot, down);
         }
         down
     }
@@ -205,7 +208,7 @@ impl Bike {
             .iter()
             .zip(geoms)
             .map(|(at, &geom)| FootState {
-                on_frame: *at - frame_rest,
+                on_frame: *at + legs::LEG_DIRECTION * world.foot_extension(geom) - frame_rest,
                 down: world.is_foot_down(geom),
                 on_ground: world.foot_touches_ground(geom),
             })

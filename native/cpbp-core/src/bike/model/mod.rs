@@ -7,6 +7,7 @@ mod control_period;
 mod drive;
 mod falling_off;
 mod ground;
+mod legs;
 mod rider;
 
 pub use control_period::{Exploded, PeriodWatch};

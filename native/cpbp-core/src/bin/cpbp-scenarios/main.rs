@@ -21,6 +21,7 @@
 
 mod args;
 mod brakes;
+mod cambers;
 mod logs;
 mod stops;
 
@@ -45,6 +46,7 @@ fn scenario_names() -> Vec<&'static str> {
         .into_iter()
         .chain(stops::SCENARIOS)
         .chain(brakes::SCENARIOS)
+        .chain(cambers::SCENARIOS)
         .chain([logs::SCENARIO])
         .collect()
 }
@@ -144,6 +146,8 @@ fn main() {
                         stops::ride(scenario, rider)
                     } else if brakes::SCENARIOS.contains(&scenario) {
                         brakes::ride(scenario, rider)
+                    } else if cambers::SCENARIOS.contains(&scenario) {
+                        cambers::ride(scenario, rider)
                     } else if scenario == logs::SCENARIO {
                         logs::ride(rider)
                     } else {
@@ -321,11 +325,17 @@ pub(crate) fn new_ride(rider: Rider, kmh: f64, slope: f64) -> Ride {
         return ride_on(rider, kmh, Terrain::flat(), spawn);
     }
     let rotation = heading * DQuat::from_rotation_z(slope);
-    let normal = rotation * DVec3::Y;
+    new_ride_on_plane(rider, kmh, rotation, rotation)
+}
+
+/// A ride on a plane through the origin turned by `plane` from level, the bike spawned on
+/// it turned by `bike`.
+pub(crate) fn new_ride_on_plane(rider: Rider, kmh: f64, plane: DQuat, bike: DQuat) -> Ride {
+    let normal = plane * DVec3::Y;
     let ground = TerrainPiece::ground_through_origin("slope", normal);
     let spawn = Placement {
         position: normal * 0.02,
-        rotation,
+        rotation: bike,
     };
     let terrain = Terrain::new(vec![ground]).expect("a plane is valid terrain");
     ride_on(rider, kmh, terrain, spawn)
