@@ -58,7 +58,8 @@ def _parser() -> argparse.ArgumentParser:
                     "(a turn, a long hard turn at speed (carve), a slalom, lean reversals, a push, walking "
                     "pace; hard stops, slopes and hill "
                     "starts: stop10, stop25, stop40, brake-turn, slope5, slope10, slope15, "
-                    "downhill15; across slopes: camber5/8/10-left/right, slope10-across45; full "
+                    "downhill15; across slopes: camber5/8/10-left/right, slope10-across45; deep "
+                    "bends: bend45-h0/h22/h45, lowside-wet; full "
                     "brakes: brake60, brake90, brake-bend; the test level's "
                     "logs: logs), paired by seed. Rows are "
                     "appended to OUT/scenarios.csv as each ride ends; rerunning resumes.")

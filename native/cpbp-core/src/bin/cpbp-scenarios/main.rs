@@ -20,6 +20,7 @@
 //! the network in `--model` (the bike's own by default, `models/policy-<bike>`).
 
 mod args;
+mod bends;
 mod brakes;
 mod cambers;
 mod logs;
@@ -47,6 +48,7 @@ fn scenario_names() -> Vec<&'static str> {
         .chain(stops::SCENARIOS)
         .chain(brakes::SCENARIOS)
         .chain(cambers::SCENARIOS)
+        .chain(bends::SCENARIOS)
         .chain([logs::SCENARIO])
         .collect()
 }
@@ -148,6 +150,8 @@ fn main() {
                         brakes::ride(scenario, rider)
                     } else if cambers::SCENARIOS.contains(&scenario) {
                         cambers::ride(scenario, rider)
+                    } else if bends::SCENARIOS.contains(&scenario) {
+                        bends::ride(scenario, rider)
                     } else if scenario == logs::SCENARIO {
                         logs::ride(rider)
                     } else {
@@ -348,6 +352,22 @@ pub(crate) fn heading_of(seed: u64) -> DQuat {
 
 /// A ride from `spawn` on `terrain`, as `new_ride` sets it up.
 pub(crate) fn ride_on(rider: Rider, kmh: f64, terrain: Terrain, spawn: Placement) -> Ride {
+    ride_bike_on(rider, kmh, terrain, spawn, ridden_bike())
+}
+
+/// The bike every ride rides (`--bike`; the reference bike without it).
+pub(crate) fn ridden_bike() -> BikeParams {
+    BIKE.get().cloned().unwrap_or_default()
+}
+
+/// `ride_on` with another bike than the one ridden (the same on a wet road, say).
+pub(crate) fn ride_bike_on(
+    rider: Rider,
+    kmh: f64,
+    terrain: Terrain,
+    spawn: Placement,
+    bike: BikeParams,
+) -> Ride {
     let Rider {
         kind,
         n,
@@ -356,7 +376,7 @@ pub(crate) fn ride_on(rider: Rider, kmh: f64, terrain: Terrain, spawn: Placement
     } = rider;
     let config = SimulationConfig {
         physics,
-        bike: BIKE.get().cloned().unwrap_or_default(),
+        bike,
         ..SimulationConfig::default()
     };
     let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);
