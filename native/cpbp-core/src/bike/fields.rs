@@ -119,6 +119,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "swingarm_mass", "kg", 1.0, 20.0, 0.5, SAME, swingarm_mass },
     field! { "steer_limit_deg", "°", 10.0, 60.0, 1.0, DEG, steer_limit },
     field! { "max_steer_torque", "N·m", 20.0, 200.0, 1.0, SAME, max_steer_torque },
+    field! { "arcade_tuned_kmh", "km/h", 0.0, 100.0, 1.0, KMH, arcade_tuned_speed },
     field! { "tyre_friction", "", 0.3, 1.5, 0.05, SAME, tyre_friction },
     field! { "tyre_friction_follows_wheel", "", 0.0, 1.0, 1.0, ON_OFF, flag tyre_friction_follows_wheel },
     field! { "max_lean_deg", "°", 15.0, 60.0, 0.5, DEG, max_lean },

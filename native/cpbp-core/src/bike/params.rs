@@ -64,6 +64,10 @@ pub struct BikeParams {
     /// the lean creeps past the tyres' grip; with 80 it holds 45° within 0.5°, with 100
     /// exactly (issue 68).
     pub max_steer_torque: f64,
+    /// The speed (m/s) the arcade controller's gains hold at; faster they shrink with the
+    /// square of the speed (`ArcadeGains::at_speed`); 0 keeps them at every speed, as on
+    /// the reference bike, whose thesis tuned them at 25 km/h.
+    pub arcade_tuned_speed: f64,
     /// Coulomb friction coefficient of tyres on the ground.
     pub tyre_friction: f64,
     /// Whether the tyres' friction acts along and across each wheel, so grip is the same
@@ -106,6 +110,7 @@ impl Default for BikeParams {
             rider_brace: 0.0,
             steer_limit: 35f64.to_radians(),
             max_steer_torque: 60.0,
+            arcade_tuned_speed: 0.0,
             tyre_friction: 1.0,
             tyre_friction_follows_wheel: false,
             max_lean: 30f64.to_radians(),

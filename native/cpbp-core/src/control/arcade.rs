@@ -59,6 +59,29 @@ impl Default for ArcadeGains {
 }
 
 impl ArcadeGains {
+    /// The gains at forward speed `speed` (m/s) on a bike whose gains hold up to
+    /// `tuned_speed` (`BikeParams::arcade_tuned_speed`; 0: at every speed). Eq. 4.8 asks
+    /// for a rate of steer, and the lean's response to a rate of steer grows with the
+    /// speed: in the linearised bicycle (Åström, Klein & Lennartsson 2005, eq. 2) the bar
+    /// turning at δ̇ leans the bike with a torque of m a h v δ̇ / w (a the weight's
+    /// distance ahead of the rear contact, h its height, w the wheelbase), so K_p and K_d
+    /// shrink as v₀/v to keep the loop's gain as tuned. Kept at every speed with the
+    /// rider's bar strength at 100 N·m, the loop rang at 90 km/h (the bar swinging
+    /// ±0.5° at 35°/s) and a full brake from there fell in 30 of 30; shrunk as (v₀/v)²,
+    /// too weak to catch the brake's first dive (a high-side).
+    pub fn at_speed(&self, speed: f64, tuned_speed: f64) -> Self {
+        let share = if tuned_speed > 0.0 && speed.abs() > tuned_speed {
+            tuned_speed / speed.abs()
+        } else {
+            return *self;
+        };
+        Self {
+            kp: self.kp * share,
+            kd: self.kd * share,
+            ..*self
+        }
+    }
+
     /// The prediction horizon p (s) at forward speed `speed` (m/s).
     pub fn prediction_at(&self, speed: f64) -> f64 {
         let (slow, fast) = self.prediction_speeds;
@@ -147,6 +170,7 @@ impl ArcadeController {
         let previous_lean = lean - bike.lean_rate(world, up) * dt;
         let previous_error = self.previous.map_or(lean - desired_lean, |(_, e)| e);
         let speed = bike.forward_speed(world, up);
+        let gains = self.gains.at_speed(speed, bike.params().arcade_tuned_speed);
         let (omega, error) = eq_4_8(
             lean,
             previous_lean,
@@ -154,7 +178,7 @@ impl ArcadeController {
             previous_error,
             dt,
             self.gains.prediction_at(speed),
-            &self.gains,
+            &gains,
         );
         self.previous = Some((lean, error));
         let (_, front_grounded) = bike.wheel_contacts(world);
@@ -186,6 +210,16 @@ mod tests {
         let (omega, error) = eq_4_8(0.10, 0.08, 0.0, 0.15, 1.0 / 30.0, 0.2, &gains);
         assert!((error - 0.22).abs() < 1e-12);
         assert!((omega - 2.62).abs() < 1e-9, "{omega}");
+    }
+
+    #[test]
+    fn the_gains_shrink_as_the_speed_grows_past_the_tuned_speed() {
+        let g = ArcadeGains::default();
+        assert_eq!(g.at_speed(30.0, 0.0), g, "0 keeps the gains at every speed");
+        assert_eq!(g.at_speed(5.0, 25.0 / 3.6), g);
+        let at_50 = g.at_speed(50.0 / 3.6, 25.0 / 3.6);
+        assert!((at_50.kp - g.kp / 2.0).abs() < 1e-12 && (at_50.kd - g.kd / 2.0).abs() < 1e-12);
+        assert_eq!(at_50.prediction, g.prediction);
     }
 
     #[test]

@@ -11,6 +11,7 @@ mod common;
 
 mod air_control;
 mod anytime;
+mod arcade_gains;
 mod camber_feet;
 mod contact_patch;
 mod deep_lean;
