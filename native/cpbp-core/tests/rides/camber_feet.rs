@@ -9,22 +9,23 @@ use std::sync::Arc;
 
 use crate::common;
 
-use cpbp_core::bike::{field, BikeParams, Placement};
+use cpbp_core::bike::{field, BikeParams, Feet, Placement};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DMat3, DQuat, DVec3};
 
-/// The street bike with legs that reach `reach` m (0: stiff), the sole built at the peg.
+/// The street bike with legs that reach `reach` m, the sole built at the peg; with 0,
+/// the stiff legs and soles every bike had before.
 fn street_bike_reaching(reach: f64) -> BikeParams {
     let mut bike = common::street_bike();
+    if reach == 0.0 {
+        bike.feet = Some(Feet::default());
+        return bike;
+    }
     for (name, value) in [("feet/y", 0.25), ("feet/reach", reach)] {
         field(name).unwrap().apply(&mut bike, value).unwrap();
-    }
-    if reach == 0.0 {
-        // Stiff legs: the soles where the street bike builds them.
-        bike.feet = common::street_bike().feet;
     }
     bike
 }
