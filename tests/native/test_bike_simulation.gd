@@ -360,3 +360,14 @@ func test_an_on_off_bike_field_is_a_checkbox_and_builds_either_way() -> void:
 	_level.add_child(_bike)
 	await wait_physics_frames(2)
 	assert_true(_bike.is_running(), "a bike with the field on builds")
+
+
+func test_the_turn_asks_for_no_more_lean_than_the_bike_holds() -> void:
+	_bike = BikeSimulation.new()
+	assert_almost_eq(_bike.get_max_lean(), deg_to_rad(30.0), 1e-9, "the reference's, unbuilt")
+	var description := BikeDescription.new()
+	description.set(&"max_lean_deg", 45.0)
+	_bike.bike = description
+	_level.add_child(_bike)
+	await wait_physics_frames(2)
+	assert_almost_eq(_bike.get_max_lean(), deg_to_rad(45.0), 1e-9, "the bike's own limit")

@@ -33,6 +33,17 @@ impl BikeSimulation {
         TurnIntent::default().max_curvature
     }
 
+    /// The deepest lean (rad) the turn command asks for on this bike, its `max_lean_deg`
+    /// (the reference bike's before the ride is built): a full stick asks for no more at
+    /// any speed.
+    #[func]
+    fn get_max_lean(&self) -> f64 {
+        self.sim().map_or_else(
+            || TurnIntent::default().max_lean,
+            |sim| sim.config().bike.max_lean,
+        )
+    }
+
     /// The rider position asked for, as `set_rider_position` took it: x to the right, y
     /// forward (the right stick's axes, forward up).
     #[func]
