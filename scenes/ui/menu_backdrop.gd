@@ -16,6 +16,10 @@ var _viewport := SubViewport.new()
 
 
 func _ready() -> void:
+	# Without the native module a level cannot even load (its scripts name the module's
+	# classes): the start menu says what is missing over an empty backdrop.
+	if not NativeModule.is_loaded():
+		return
 	stretch = true
 	_viewport.own_world_3d = true
 	_viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
