@@ -49,6 +49,16 @@ cp -r tools/windows-*.sh tools/template-common.sh tools/ode-patches tools/window
 # The project's native code, without its Linux build products; Windows' own are kept.
 mkdir -p "$build/native"
 tar -C native --exclude=./target -cf - . | tar -C "$build/native" -xf -
+# And the project files it includes from outside native/ (include_str!: the reference
+# bike's file, the test level's log field), at the same paths relative to it.
+grep -rlE --include='*.rs' --exclude-dir=target 'include_(str|bytes)!\(' native \
+  | while read -r source; do
+      grep -oE 'include_(str|bytes)!\("[^"]+"\)' "$source" | sed -E 's/.*\("([^"]+)"\)/\1/' \
+        | while read -r included; do
+            file=$(realpath --relative-to=. "$(dirname "$source")/$included")
+            case $file in native/*) ;; *) install -D -m 644 "$file" "$build/$file" ;; esac
+          done
+    done
 
 skip_template=
 if [ -f "$template" ]; then skip_template=1; else

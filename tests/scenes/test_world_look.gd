@@ -68,20 +68,22 @@ func test_the_levels_surfaces_are_textured() -> void:
 		assert_true(standard.uv1_world_triplanar, "%s is laid in world metres" % path)
 
 
-func test_a_ramp_piece_is_concrete_in_its_own_colour() -> void:
+func test_the_ramp_and_bank_pieces_are_concrete_in_their_own_colour() -> void:
 	Graphics.apply("medium")
-	var ramp := RampPiece.new()
-	ramp.colour = Color(0.8, 0.3, 0.2)
-	add_child(ramp)
-	var mesh := (ramp.find_children("*", "MeshInstance3D", false, false)[0] as MeshInstance3D).mesh
-	var material := mesh.surface_get_material(0) as StandardMaterial3D
-	assert_not_null(material.albedo_texture, "textured")
-	assert_true(material.vertex_color_use_as_albedo, "coloured by its vertices")
-	var colours: PackedColorArray = mesh.surface_get_arrays(0)[Mesh.ARRAY_COLOR]
-	var stored := Vector4(colours[0].r, colours[0].g, colours[0].b, colours[0].a)
-	# Vertex colours are kept in 8 bits a channel.
-	assert_almost_eq(stored, Vector4(0.8, 0.3, 0.2, 1.0), Vector4.ONE / 255.0, "its colour")
-	ramp.free()
+	for piece: StaticBody3D in [RampPiece.new(), BankPiece.new()]:
+		piece.set(&"colour", Color(0.8, 0.3, 0.2))
+		add_child(piece)
+		var shown := piece.find_children("*", "MeshInstance3D", false, false)[0] as MeshInstance3D
+		var material := shown.mesh.surface_get_material(0) as StandardMaterial3D
+		var name := str((piece.get_script() as Script).get_global_name())
+		assert_not_null(material.albedo_texture, "%s textured" % name)
+		assert_true(material.vertex_color_use_as_albedo, "%s coloured by its vertices" % name)
+		var colours: PackedColorArray = shown.mesh.surface_get_arrays(0)[Mesh.ARRAY_COLOR]
+		var stored := Vector4(colours[0].r, colours[0].g, colours[0].b, colours[0].a)
+		# Vertex colours are kept in 8 bits a channel.
+		var colour := Vector4(0.8, 0.3, 0.2, 1.0)
+		assert_almost_eq(stored, colour, Vector4.ONE / 255.0, "%s in its colour" % name)
+		piece.free()
 
 
 ## A shader surface (the ground, the skate park's slabs): each of its textures is given,
