@@ -1,6 +1,6 @@
 @tool
 class_name BankPiece
-extends StaticBody3D
+extends ConcretePiece
 ## A stretch of road banked sideways, a camber to stop on and pull away from: along this
 ## node's −z from its origin it twists up from the ground over `twist_length`, falls
 ## `bank_deg` towards −x (its left edge stays on the ground, its right edge rises) for
@@ -9,8 +9,6 @@ extends StaticBody3D
 ## to the right. The right edge is a wall as high as the bank lifts it. Builds its own
 ## mesh and a matching collision mesh (the bank's twist is not convex).
 
-## Every piece's concrete, shared with RampPiece (so the graphics quality reaches it).
-const CONCRETE: StandardMaterial3D = preload("res://scenes/levels/materials/piece.tres")
 ## Mesh stations along the road (m): close enough that a wheel meets the twist as a
 ## smooth surface rather than as facets.
 const STATION_SPACING := 0.25
@@ -37,18 +35,6 @@ const STRIPS_ACROSS := 4
 	set(value):
 		bank_length = value
 		_build()
-## Colour of the surface, a tint of its concrete.
-@export var colour := Color(0.6, 0.55, 0.48):
-	set(value):
-		colour = value
-		_build()
-
-var _shape: CollisionShape3D
-var _mesh: MeshInstance3D
-
-
-func _ready() -> void:
-	_build()
 
 
 ## The bank (°) at `distance` m along the piece: eased in and out of each twist
@@ -66,22 +52,7 @@ func height_at(across: float, distance: float) -> float:
 	return from_left_edge * tan(deg_to_rad(bank_at(distance)))
 
 
-func _build() -> void:
-	if not is_inside_tree():
-		return
-	if _shape == null:
-		_shape = CollisionShape3D.new()
-		_shape.name = "Shape"
-		add_child(_shape)
-		_mesh = MeshInstance3D.new()
-		_mesh.name = "Mesh"
-		add_child(_mesh)
-	var mesh := _road_mesh()
-	_mesh.mesh = mesh
-	_shape.shape = mesh.create_trimesh_shape()
-
-
-func _road_mesh() -> ArrayMesh:
+func _piece_mesh() -> ArrayMesh:
 	var length := 2.0 * twist_length + bank_length
 	var stations := maxi(ceili(length / STATION_SPACING), 1)
 	var tool := SurfaceTool.new()

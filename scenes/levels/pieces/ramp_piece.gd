@@ -1,14 +1,10 @@
 @tool
 class_name RampPiece
-extends StaticBody3D
+extends ConcretePiece
 ## A solid prism for ramps, hills, tables, drops and steps: it rises over `up_length`
 ## to `height`, stays level for `top_length` and comes down over `down_length` (along this
 ## node's −z, starting at its origin). A length of 0 makes that face vertical: a step to
 ## climb or a drop to ride off. Builds its own convex collision shape and mesh.
-
-## Every piece's concrete, one material shared (so the graphics quality reaches them
-## all); each piece's colour is its vertices'.
-const CONCRETE: StandardMaterial3D = preload("res://scenes/levels/materials/piece.tres")
 
 ## Width (m), centred on the origin.
 @export_range(0.5, 40.0, 0.1, "suffix:m") var width := 4.0:
@@ -35,30 +31,14 @@ const CONCRETE: StandardMaterial3D = preload("res://scenes/levels/materials/piec
 	set(value):
 		down_length = value
 		_build()
-## Colour of the surface, a tint of its concrete.
-@export var colour := Color(0.6, 0.55, 0.48):
-	set(value):
-		colour = value
-		_build()
-
-var _shape: CollisionShape3D
-var _mesh: MeshInstance3D
 
 
-func _ready() -> void:
-	_build()
+func _piece_mesh() -> ArrayMesh:
+	return _prism_mesh(_profile())
 
 
-func _build() -> void:
-	if not is_inside_tree():
-		return
-	if _shape == null:
-		_shape = CollisionShape3D.new()
-		_shape.name = "Shape"
-		add_child(_shape)
-		_mesh = MeshInstance3D.new()
-		_mesh.name = "Mesh"
-		add_child(_mesh)
+## The prism as a convex hull: its profile at both sides.
+func _piece_shape(_mesh_drawn: ArrayMesh) -> Shape3D:
 	var profile := _profile()
 	var points := PackedVector3Array()
 	for side: float in [-width / 2.0, width / 2.0]:
@@ -66,8 +46,7 @@ func _build() -> void:
 			points.append(Vector3(side, p.y, -p.x))
 	var convex := ConvexPolygonShape3D.new()
 	convex.points = points
-	_shape.shape = convex
-	_mesh.mesh = _prism_mesh(profile)
+	return convex
 
 
 ## The side profile as (distance forward, height), anticlockwise from the rear bottom,
