@@ -47,8 +47,14 @@ pub struct Feet {
     pub reach: f64,
     /// The lean (rad) from upright, against gravity, a reaching leg holds the bike at.
     pub prop_lean: f64,
-    /// How fast (m/s) a reaching leg stretches or shortens.
+    /// How fast (m/s) a reaching leg stretches or shortens while its foot is off the
+    /// road: reaching for it.
     pub leg_speed: f64,
+    /// With its foot on the road, a reaching leg closes the distance to the length that
+    /// props the bike at this time constant (s): it pushes the bike up (or lets it down)
+    /// ever slower as the bike nears the lean it props, so that the bike's roll is spent
+    /// there rather than carrying it over upright onto the other foot.
+    pub push_time: f64,
     /// Pulling away, a reaching leg's foot stays down, a prop, below this forward speed
     /// (m/s), with the throttle open.
     pub prop_until: f64,
@@ -65,9 +71,11 @@ impl Default for Feet {
     /// asphalt). Down below 0.8 m/s (about 3 km/h), where steering no longer
     /// balances. The bar goes straight in about half a second (6/s: a 95 % return in
     /// 0.5 s). The legs do not reach (`reach` 0); where they do, the bike stands 2.5° from
-    /// upright on one, the leg moves at 1 m/s (a tenth of a second for the 10 cm a
-    /// camber asks), and the foot props the bike to 1.4 m/s (5 km/h, a walk), where
-    /// steering balances again.
+    /// upright on one, the leg reaches at 1 m/s (a tenth of a second for the 10 cm a
+    /// camber asks) and pushes with a time constant of a second (put down at rest leaned
+    /// 3.5–8° onto a foot the bike settles within 2° of its prop; at 0.5 s or at a
+    /// constant 0.1 m/s it rocked from foot to foot), and the foot props the bike to
+    /// 1.4 m/s (5 km/h, a walk), where steering balances again.
     fn default() -> Self {
         Self {
             right_foot: DVec3::new(-0.05, 0.045, 0.40),
@@ -82,6 +90,7 @@ impl Default for Feet {
             reach: 0.0,
             prop_lean: 2.5f64.to_radians(),
             leg_speed: 1.0,
+            push_time: 1.0,
             prop_until: 1.4,
         }
     }

@@ -173,6 +173,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "feet/reach", "m", 0.0, 0.6, 0.005, SAME, feet / reach },
     field! { "feet/prop_lean_deg", "°", 0.5, 15.0, 0.5, DEG, feet / prop_lean },
     field! { "feet/leg_speed", "m/s", 0.1, 5.0, 0.1, SAME, feet / leg_speed },
+    field! { "feet/push_time", "s", 0.05, 5.0, 0.05, SAME, feet / push_time },
     field! { "feet/prop_until", "m/s", 0.0, 5.0, 0.05, SAME, feet / prop_until },
 ];
 

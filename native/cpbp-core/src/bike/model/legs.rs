@@ -19,6 +19,12 @@ const RIGHT: usize = 1;
 /// The way the leg stretches, in the frame's own axes: down.
 pub(super) const LEG_DIRECTION: DVec3 = DVec3::NEG_Y;
 
+/// How far (m) past the road a leg reaching for it stretches: a sole laid exactly on the
+/// road makes no contact, and one kept there as the bike fell towards it drew back ahead
+/// of the road all the way down (a fall on a camber). A centimetre is a load of 800 N on
+/// the street bike's foot.
+const INTO_THE_ROAD: f64 = 0.01;
+
 impl Bike {
     /// Puts down the foot a rider puts down (or keeps the one down) and lifts the other,
     /// or lifts both when riding (`Feet::reaching`). Returns whether the rider stands on
@@ -50,8 +56,14 @@ impl Bike {
     }
 
     /// Moves a reaching leg that is down towards the length that leans the bike
-    /// `Feet::prop_lean` onto it, at most `Feet::leg_speed` over `dt` seconds. Nothing on
-    /// a bike whose legs do not reach.
+    /// `Feet::prop_lean` onto it: reaching for the road at `Feet::leg_speed` (over `dt`
+    /// seconds) no further than the road where the bike leans now, then, its foot on the
+    /// road, pushing the bike up (or letting it down) ever slower as it nears that
+    /// length (`Feet::push_time`). A leg that reached at once for the propping length
+    /// drove its sole into the road when the bike leaned past it, and one that pushed at
+    /// full speed left the bike rolling as it passed the propping lean: either threw the
+    /// bike over upright onto the other foot and back, for seconds after a full brake.
+    /// Nothing on a bike whose legs do not reach.
     pub(super) fn move_legs(&self, world: &mut World, up: DVec3, dt: f64) {
         let (Some(feet), Some(geoms)) = (&self.params.feet, self.feet) else {
             return;
@@ -60,14 +72,25 @@ impl Bike {
             return;
         }
         for (side, foot) in geoms.into_iter().enumerate() {
-            if world.is_foot_down(foot) {
-                let now = world.foot_extension(foot);
-                let step = feet.leg_speed * dt;
-                let wanted = self
-                    .leg_to_prop(world, up, feet, side)
-                    .clamp(0.0, feet.reach);
-                world.set_foot_extension(foot, now + (wanted - now).clamp(-step, step));
+            if !world.is_foot_down(foot) {
+                continue;
             }
+            let propping = self.leg_to_lean(world, up, feet, side, feet.prop_lean);
+            let now = world.foot_extension(foot);
+            let standing = world.foot_touches_ground(foot);
+            let wanted = if standing {
+                propping
+            } else {
+                let toward = if side == RIGHT { 1.0 } else { -1.0 } * self.lean(world, up);
+                let touching = self.leg_to_lean(world, up, feet, side, toward);
+                propping.min(touching + INTO_THE_ROAD)
+            }
+            .clamp(0.0, feet.reach);
+            let mut step = feet.leg_speed * dt;
+            if standing {
+                step = step.min((wanted - now).abs() * dt / feet.push_time);
+            }
+            world.set_foot_extension(foot, now + (wanted - now).clamp(-step, step));
         }
     }
 
@@ -96,12 +119,12 @@ impl Bike {
     }
 
     /// The leg's stretch (m) that puts `side`'s sole on the road with the bike leaned
-    /// `Feet::prop_lean` from upright towards it: the bike rolled, as a rigid body, about
-    /// the line through its tyres' contacts from its lean now to that one, on the plane of
+    /// `toward` (rad) from upright towards it: the bike rolled, as a rigid body, about the
+    /// line through its tyres' contacts from its lean now to that one, on the plane of
     /// the road under its wheels.
-    fn leg_to_prop(&self, world: &World, up: DVec3, feet: &Feet, side: usize) -> f64 {
+    fn leg_to_lean(&self, world: &World, up: DVec3, feet: &Feet, side: usize, toward: f64) -> f64 {
         let sign = if side == RIGHT { 1.0 } else { -1.0 };
-        let roll = feet.prop_lean - sign * self.lean(world, up);
+        let roll = toward - sign * self.lean(world, up);
         let (rear, front) = self.tyre_contacts(world, up);
         let heading = self.heading(world, up);
         let along = (front - rear).normalize_or(heading);
