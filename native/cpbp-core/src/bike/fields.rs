@@ -99,8 +99,8 @@ macro_rules! field {
     // A bool of the model, read and written as 1 or 0 (`ON_OFF`).
     (@get flag $field:ident) => { |b: &BikeParams| Some(if b.$field { 1.0 } else { 0.0 }) };
     (@set flag $field:ident) => { |b: &mut BikeParams, v| b.$field = v != 0.0 };
-    (@get $field:ident) => { |b: &BikeParams| Some(b.$field) };
-    (@set $field:ident) => { |b: &mut BikeParams, v| b.$field = v };
+    (@get $($field:ident).+) => { |b: &BikeParams| Some(b.$($field).+) };
+    (@set $($field:ident).+) => { |b: &mut BikeParams, v| b.$($field).+ = v };
 }
 
 /// Every field, in the order the inspector shows them. Degrees convert exactly as the
@@ -123,6 +123,13 @@ pub const FIELDS: &[BikeField] = &[
     field! { "tyre_friction", "", 0.3, 1.5, 0.05, SAME, tyre_friction },
     field! { "tyre_friction_follows_wheel", "", 0.0, 1.0, 1.0, ON_OFF, flag tyre_friction_follows_wheel },
     field! { "max_lean_deg", "°", 15.0, 60.0, 0.5, DEG, max_lean },
+    field! { "posture/footpeg_x", "m", -0.6, 0.4, 0.005, SAME, posture.footpeg.x },
+    field! { "posture/footpeg_y", "m", 0.2, 0.7, 0.005, SAME, posture.footpeg.y },
+    field! { "posture/hip_x", "m", -0.7, 0.3, 0.005, SAME, posture.hip.x },
+    field! { "posture/hip_y", "m", 0.6, 1.2, 0.005, SAME, posture.hip.y },
+    field! { "posture/torso_lean_deg", "°", -10.0, 60.0, 0.5, DEG, posture.torso_lean },
+    field! { "posture/grip_height", "m", 0.7, 1.4, 0.005, SAME, posture.grip_height },
+    field! { "posture/grip_behind_axis", "m", -0.1, 0.3, 0.005, SAME, posture.grip_behind_axis },
     field! { "rider/lower_leg_mass", "kg", 2.0, 30.0, 0.05, SAME, [0] },
     field! { "rider/upper_leg_mass", "kg", 4.0, 40.0, 0.05, SAME, [1] },
     field! { "rider/torso_mass", "kg", 15.0, 100.0, 0.05, SAME, [2] },
@@ -201,8 +208,9 @@ impl BikeParams {
     }
 
     /// Whether the fields make a bike the core can build: the tyre's crown within the
-    /// wheel, the steering axis between the wheels, the front brake's (unless both are 0)
-    /// and the anti-wheelie's thresholds in order.
+    /// wheel, the steering axis between the wheels, the rider's legs and arms reaching
+    /// its footpegs and grips, the front brake's (unless both are 0) and the
+    /// anti-wheelie's thresholds in order.
     pub fn check(&self) -> Result<(), String> {
         if self.tyre_crown >= self.wheel_radius {
             return Err("tyre_crown must be smaller than wheel_radius".into());
@@ -216,6 +224,7 @@ impl BikeParams {
                 self.wheel_radius
             ));
         }
+        super::layout::Layout::check_posture(self)?;
         if let Some(brake) = &self.front_brake {
             let window_off = brake.full_above == 0.0 && brake.none_below == 0.0;
             if brake.none_below >= brake.full_above && !window_off {

@@ -5,6 +5,7 @@
 use glam::DVec3;
 
 use super::params::BikeParams;
+use super::posture::bends;
 
 /// Joint centres and key points of the built model.
 #[derive(Clone, Debug)]
@@ -34,11 +35,6 @@ pub struct Layout {
     pub head_top: DVec3,
 }
 
-/// Rider posture on a naked road bike: seat and footpeg heights of that class, torso
-/// leaning 20° forward.
-const FOOTPEG: DVec3 = DVec3::new(-0.10, 0.38, 0.0);
-const HIP: DVec3 = DVec3::new(-0.25, 0.85, 0.0);
-const TORSO_LEAN: f64 = 0.349; // 20°
 /// Segment lengths for a 1.75 m rider (Winter 2009): thigh, shank, hip–shoulder,
 /// hip–head top, upper arm, forearm to grip centre.
 const THIGH: f64 = 0.43;
@@ -47,10 +43,6 @@ const HIP_TO_SHOULDER: f64 = 0.52;
 const HIP_TO_HEAD_TOP: f64 = 0.78;
 const UPPER_ARM: f64 = 0.33;
 const FOREARM: f64 = 0.36;
-/// Height of the handlebar grips above the ground, and how far behind the steering
-/// axis they sit.
-const GRIP_HEIGHT: f64 = 1.05;
-const GRIP_BEHIND_AXIS: f64 = 0.06;
 /// Length of the fork's lower legs from the axle, and how far up from the axle the
 /// stanchions end inside them (m): room for the 130 mm travel with the bushings apart.
 const FORK_LOWER_LENGTH: f64 = 0.42;
@@ -66,29 +58,54 @@ impl Layout {
         let rear_axle = DVec3::new(-half, r, 0.0);
         let front_axle = DVec3::new(half, r, 0.0);
         let steer_axis = DVec3::new(-params.rake.sin(), params.rake.cos(), 0.0);
-        // The steering axis meets the ground `trail` ahead of the front contact point.
-        let axis_on_ground = DVec3::new(half + params.trail, 0.0, 0.0);
-        let at_height = |h: f64| axis_on_ground + steer_axis * (h / steer_axis.y);
-        let grip = at_height(GRIP_HEIGHT) - DVec3::X * GRIP_BEHIND_AXIS;
-        let shoulder = HIP + DVec3::new(TORSO_LEAN.sin(), TORSO_LEAN.cos(), 0.0) * HIP_TO_SHOULDER;
+        let at_height = steering_axis_at(params);
+        let posture = &params.posture;
+        let (shoulder, grip) = shoulder_and_grip(params);
+        let (footpeg, hip, torso_lean) = (posture.footpeg, posture.hip, posture.torso_lean);
         Self {
             rear_axle,
             front_axle,
             steer_axis,
             steer_anchor: at_height(0.85),
-            fork_top: at_height(GRIP_HEIGHT - 0.03),
+            fork_top: at_height(posture.grip_height - 0.03),
             stanchion_bottom: front_axle + steer_axis * STANCHION_OVERLAP,
             fork_lower_top: front_axle + steer_axis * FORK_LOWER_LENGTH,
             swingarm_pivot: rear_axle + SWINGARM_PIVOT_FROM_AXLE,
-            ankle: FOOTPEG,
-            knee: bend_point(HIP, FOOTPEG, THIGH, SHANK, true),
-            hip: HIP,
+            ankle: footpeg,
+            knee: bend_point(hip, footpeg, THIGH, SHANK, true),
+            hip,
             shoulder,
             elbow: bend_point(shoulder, grip, UPPER_ARM, FOREARM, false),
             grip,
-            head_top: HIP + DVec3::new(TORSO_LEAN.sin(), TORSO_LEAN.cos(), 0.0) * HIP_TO_HEAD_TOP,
+            head_top: hip + DVec3::new(torso_lean.sin(), torso_lean.cos(), 0.0) * HIP_TO_HEAD_TOP,
         }
     }
+
+    /// Whether the rider's legs and arms reach the bike's footpegs and grips
+    /// (`Posture::check`): otherwise why, naming the fields.
+    pub fn check_posture(params: &BikeParams) -> Result<(), String> {
+        let reach = shoulder_and_grip(params);
+        params
+            .posture
+            .check((THIGH, SHANK), (UPPER_ARM, FOREARM), reach)
+    }
+}
+
+/// The point of the steering axis `h` above the ground: it meets the ground `trail`
+/// ahead of the front contact point.
+fn steering_axis_at(params: &BikeParams) -> impl Fn(f64) -> DVec3 {
+    let steer_axis = DVec3::new(-params.rake.sin(), params.rake.cos(), 0.0);
+    let axis_on_ground = DVec3::new(params.wheelbase / 2.0 + params.trail, 0.0, 0.0);
+    move |h: f64| axis_on_ground + steer_axis * (h / steer_axis.y)
+}
+
+/// The rider's shoulder (the torso leaned from the hip) and the grips.
+fn shoulder_and_grip(params: &BikeParams) -> (DVec3, DVec3) {
+    let posture = &params.posture;
+    let lean = posture.torso_lean;
+    let shoulder = posture.hip + DVec3::new(lean.sin(), lean.cos(), 0.0) * HIP_TO_SHOULDER;
+    let grip = steering_axis_at(params)(posture.grip_height) - DVec3::X * posture.grip_behind_axis;
+    (shoulder, grip)
 }
 
 /// The joint between two segments of lengths `la` (from `a`) and `lb` (to `b`) in the
@@ -96,8 +113,8 @@ impl Layout {
 fn bend_point(a: DVec3, b: DVec3, la: f64, lb: f64, forward_up: bool) -> DVec3 {
     let d = (b - a).length();
     assert!(
-        d < la + lb && d > (la - lb).abs(),
-        "segments cannot reach: posture is inconsistent"
+        bends(d, la, lb),
+        "segments cannot reach: BikeParams::check refuses this posture"
     );
     let along = (la * la - lb * lb + d * d) / (2.0 * d);
     let height = (la * la - along * along).sqrt();

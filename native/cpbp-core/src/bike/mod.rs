@@ -14,6 +14,7 @@ mod layout;
 mod manual;
 mod model;
 mod params;
+mod posture;
 mod rider_position;
 mod suspension;
 mod wheelie_control;
@@ -34,6 +35,7 @@ pub use layout::Layout;
 pub use manual::{manual_controls, POSE_GAIN};
 pub use model::{Bike, Exploded, FootState, Part, PartShape, PeriodWatch, Placement, Shape, PARTS};
 pub use params::{BikeParams, GRAVITY};
+pub use posture::Posture;
 pub use rider_position::{
     rider_position_cost, RiderPosition, BACK_POSE, COM_REACH_FORWARD, COM_REACH_RIGHT,
     FORWARD_POSE, RIDER_JOINTS, RIGHT_POSE,

@@ -21,6 +21,7 @@
 
 use super::feet::Feet;
 use super::front_brake::FrontBrake;
+use super::posture::Posture;
 use super::suspension::Suspension;
 use super::wheelie_control::WheelieControl;
 
@@ -52,6 +53,8 @@ pub struct BikeParams {
     pub swingarm_mass: f64,
     /// Rider segments: lower leg, upper leg, torso with head, upper arm, lower arm (kg).
     pub rider_masses: [f64; 5],
+    /// Where the rider sits: footpeg, seat, torso, grips (`Posture`).
+    pub posture: Posture,
     /// How hard the rider braces the arms fore and aft while braking: the share
     /// of the arms' full strength reached at the full brake (`Bike::braced_arms`; 0: the
     /// arms as the physics model has them, the reference bike's).
@@ -107,6 +110,7 @@ impl Default for BikeParams {
             frame_mass: 108.0,
             swingarm_mass: 6.0,
             rider_masses: [9.15, 15.0, 43.35, 4.2, 3.3],
+            posture: Posture::default(),
             rider_brace: 0.0,
             steer_limit: 35f64.to_radians(),
             max_steer_torque: 60.0,

@@ -1,4 +1,6 @@
 use super::*;
+use crate::bike::layout::Layout;
+use glam::DVec3;
 
 #[test]
 fn the_reference_bike_is_within_every_range_and_its_numbers_rebuild_it_bit_for_bit() {
@@ -86,4 +88,59 @@ fn the_brake_window_may_be_switched_off_but_not_reversed() {
     assert!(!bike.front_brake.unwrap().has_window());
     let why = BikeParams::from_fields([("front_brake/full_above", 0.01)], true).unwrap_err();
     assert!(why.contains("none_below must be below"), "{why}");
+}
+
+#[test]
+fn a_posture_the_rider_cannot_reach_is_refused_naming_its_fields() {
+    // Pegs a metre below the seat: the leg (0.86 m) does not reach them.
+    let why = BikeParams::from_fields([("posture/footpeg_y", 0.2), ("posture/hip_y", 1.2)], true)
+        .unwrap_err();
+    assert!(
+        why.contains("posture/footpeg_*") && why.contains("leg"),
+        "{why}"
+    );
+    // Grips high above and far behind the seat's shoulder: the arm cannot bend to them.
+    let why = BikeParams::from_fields(
+        [
+            ("posture/grip_height", 0.7),
+            ("posture/hip_y", 1.2),
+            ("posture/torso_lean_deg", -10.0),
+        ],
+        true,
+    )
+    .unwrap_err();
+    assert!(
+        why.contains("posture/grip_height") && why.contains("arm"),
+        "{why}"
+    );
+}
+
+#[test]
+fn a_taller_posture_builds_a_rider_whose_segments_keep_their_lengths() {
+    // A dirt bike's: pegs 5 cm and seat 10 cm higher, the torso more upright, a taller bar.
+    let taller = [
+        ("posture/footpeg_y", 0.43),
+        ("posture/hip_y", 0.95),
+        ("posture/torso_lean_deg", 10.0),
+        ("posture/grip_height", 1.15),
+    ];
+    let bike = BikeParams::from_fields(taller, true).unwrap();
+    let (layout, reference) = (Layout::new(&bike), Layout::new(&BikeParams::default()));
+    assert_eq!(layout.hip.y, 0.95);
+    assert!(layout.head_top.y > reference.head_top.y + 0.1);
+    let limb = |a: DVec3, b: DVec3| (a - b).length();
+    let pairs = |l: &Layout| {
+        [
+            limb(l.hip, l.knee),
+            limb(l.knee, l.ankle),
+            limb(l.shoulder, l.elbow),
+            limb(l.elbow, l.grip),
+        ]
+    };
+    for (taller, reference) in pairs(&layout).into_iter().zip(pairs(&reference)) {
+        assert!(
+            (taller - reference).abs() < 1e-9,
+            "{taller} against {reference}"
+        );
+    }
 }
