@@ -16,6 +16,16 @@ use crate::ode::{GeomId, World};
 const LEFT: usize = 0;
 const RIGHT: usize = 1;
 
+/// 1 for the right foot, -1 for the left: a lean (positive to the right) times this is
+/// the lean towards that foot.
+fn rightward(side: usize) -> f64 {
+    if side == RIGHT {
+        1.0
+    } else {
+        -1.0
+    }
+}
+
 /// The way the leg stretches, in the frame's own axes: down.
 pub(super) const LEG_DIRECTION: DVec3 = DVec3::NEG_Y;
 
@@ -81,7 +91,7 @@ impl Bike {
             let wanted = if standing {
                 propping
             } else {
-                let toward = if side == RIGHT { 1.0 } else { -1.0 } * self.lean(world, up);
+                let toward = rightward(side) * self.lean(world, up);
                 let touching = self.leg_to_lean(world, up, feet, side, toward);
                 propping.min(touching + INTO_THE_ROAD)
             }
@@ -104,7 +114,7 @@ impl Bike {
     fn foot_to_stand_on(&self, world: &World, up: DVec3, feet: &Feet, down: [bool; 2]) -> usize {
         let lean = self.lean(world, up);
         if let Some(side) = down.iter().position(|&d| d) {
-            let toward = if side == RIGHT { lean } else { -lean };
+            let toward = rightward(side) * lean;
             return if toward < -feet.prop_lean {
                 1 - side
             } else {
@@ -123,7 +133,7 @@ impl Bike {
     /// line through its tyres' contacts from its lean now to that one, on the plane of
     /// the road under its wheels.
     fn leg_to_lean(&self, world: &World, up: DVec3, feet: &Feet, side: usize, toward: f64) -> f64 {
-        let sign = if side == RIGHT { 1.0 } else { -1.0 };
+        let sign = rightward(side);
         let roll = toward - sign * self.lean(world, up);
         let (rear, front) = self.tyre_contacts(world, up);
         let heading = self.heading(world, up);
