@@ -7,6 +7,7 @@ mod bike_file;
 mod controls;
 mod crash;
 mod drive;
+mod engine;
 mod feet;
 mod fields;
 mod front_brake;
@@ -28,6 +29,7 @@ pub use controls::{
 };
 pub use crash::{Crash, CrashCause, CrashMonitor, Fall};
 pub use drive::{DriveInput, DEFAULT_MAX_SPEED_KMH, TOP_SPEED_KMH};
+pub use engine::RearWheelDrive;
 pub use feet::Feet;
 pub use fields::{field, BikeField, FIELDS};
 pub use front_brake::{FrontBrake, OverFrontTyre};

@@ -19,6 +19,7 @@
 //! carry the mass of both sides: legs 15.0 kg (thighs) and 9.15 kg (shanks and feet),
 //! arms 4.2 kg (upper) and 3.3 kg (forearms and hands); torso with head 43.35 kg.
 
+use super::engine::RearWheelDrive;
 use super::feet::Feet;
 use super::front_brake::FrontBrake;
 use super::posture::Posture;
@@ -83,6 +84,9 @@ pub struct BikeParams {
     /// in the mid-plane, still holds long circles (it overshoots deeper leans and falls:
     /// 45° within seconds, 35° at 20 km/h).
     pub max_lean: f64,
+    /// The drive and brake at the rear wheel (`RearWheelDrive`): the engine's torque and
+    /// power, the rear brake's torque.
+    pub rear_drive: RearWheelDrive,
     /// Fork and rear suspension; `None` builds the thesis's rigid frame and fork.
     pub suspension: Option<Suspension>,
     /// The drive's anti-wheelie, which reads the fork: only on a sprung bike.
@@ -118,6 +122,7 @@ impl Default for BikeParams {
             tyre_friction: 1.0,
             tyre_friction_follows_wheel: false,
             max_lean: 30f64.to_radians(),
+            rear_drive: RearWheelDrive::default(),
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),
             feet: Some(Feet::default()),

@@ -15,6 +15,7 @@ mod arcade_gains;
 mod camber_feet;
 mod contact_patch;
 mod deep_lean;
+mod engine;
 mod falling_off;
 mod feet;
 mod front_brake;

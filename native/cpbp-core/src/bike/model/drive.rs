@@ -4,15 +4,12 @@
 use glam::DVec3;
 
 use super::{Bike, Part};
-use crate::bike::controls::{index, Controls, ForceClass, MAX_TORQUE};
+use crate::bike::controls::{index, Controls, ForceClass};
 use crate::bike::drive::{brake_level, drives};
 use crate::bike::front_brake::{FrontBrake, OverFrontTyre};
 use crate::bike::params::GRAVITY;
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
-
-/// The rear wheel's full torque (N·m), which a wheelie hold commands directly.
-const MAX_TORQUE_REAR: f64 = MAX_TORQUE[ForceClass::RearWheel as usize];
 
 impl Bike {
     /// Sets the rear wheel's motor from the controls' target and force tuning; driving,
@@ -38,7 +35,8 @@ impl Bike {
                 } else {
                     0.0
                 };
-                let torque = MAX_TORQUE_REAR * held.air.abs() * control.air_share;
+                let torque =
+                    self.rear_torque(world, held.air > 0.0) * held.air.abs() * control.air_share;
                 world.set_motor(self.rear_axle, 0, target, torque);
             }
             Some(control) if driving && lift > 0.0 => {
@@ -55,7 +53,8 @@ impl Bike {
                 } else {
                     (0.0, -share)
                 };
-                world.set_motor(self.rear_axle, 0, target, MAX_TORQUE_REAR * share);
+                let full = self.rear_torque(world, target > 0.0);
+                world.set_motor(self.rear_axle, 0, target, full * share);
             }
             control => {
                 // Driving (not braking, which holds the wheel still), the anti-wheelie
@@ -82,13 +81,21 @@ impl Bike {
                     }
                     _ => c[index::REAR_WHEEL],
                 };
-                world.set_motor(
-                    self.rear_axle,
-                    0,
-                    target,
-                    controls.max_torque(ForceClass::RearWheel) * drive_share,
-                );
+                let force = c[index::FORCE + ForceClass::RearWheel as usize];
+                let full = self.rear_torque(world, driving);
+                world.set_motor(self.rear_axle, 0, target, full * force * drive_share);
             }
+        }
+    }
+
+    /// The most torque (N·m) on the rear wheel now: the drive's (`driving`, less above
+    /// the speed its power limit starts at) or the rear brake's.
+    fn rear_torque(&self, world: &World, driving: bool) -> f64 {
+        let drive = &self.params.rear_drive;
+        if driving {
+            drive.drive_torque(world.hinge_rate(self.rear_axle))
+        } else {
+            drive.brake_torque
         }
     }
 
