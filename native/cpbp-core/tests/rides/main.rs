@@ -16,6 +16,7 @@ mod camber_feet;
 mod contact_patch;
 mod deep_lean;
 mod engine;
+mod every_bike;
 mod falling_off;
 mod feet;
 mod front_brake;
