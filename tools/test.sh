@@ -134,7 +134,18 @@ screenshots() {
          --hold=brake:0.6@100- --hold=camera_left:0.5@150-175 \
     && tools/screenshot.sh $game build/screenshots/ghost-race.png 190 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 \
-         "--copy=res://build/ghosts/track.ghost>user://test-ghosts/track.ghost"
+         "--copy=res://build/ghosts/track.ghost>user://test-ghosts/track.ghost" \
+    && bike_gallery
+}
+
+# Each bike a player chooses, leaning into the track's first bend (the README's gallery).
+bike_gallery() {
+  local bike
+  for bike in street_390 dirt_125 sport_600; do
+    tools/screenshot.sh res://scenes/game/game.tscn build/screenshots/bike-$bike.png 200 \
+      --set=level_path=res://scenes/levels/track/track.tscn --setting=bike=$bike \
+      --hold=throttle:0.7 --hold=steer_right:0.4 --tap=cycle_camera@5 || return 1
+  done
 }
 
 # Screenshots of the menus, levels, cameras, a full brake's tyre marks, a crash's sparks,

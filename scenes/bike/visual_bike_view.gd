@@ -62,9 +62,10 @@ func _ready() -> void:
 	var bike: BikeDescription = _simulation.bike if _simulation.bike else BikeDescription.new()
 	_paint = bike.paint
 	_build_wheels()
-	_build_bodywork(bike)
+	var bodywork := BikeBodywork.worn_by(bike)
+	_build_bodywork(bodywork)
 	_build_swingarm()
-	_build_fork()
+	_build_fork(bodywork)
 	_rider = RiderFigure.new()
 	_rider.name = "Rider"
 	_rider.ghost = ghost
@@ -188,8 +189,7 @@ func _build_wheels() -> void:
 
 ## The bodywork on the frame (engine, tank, seat, tail, frame rails, exhaust), from the
 ## bike's description, fitted to this bike's size.
-func _build_bodywork(bike: BikeDescription) -> void:
-	var bodywork := BikeBodywork.worn_by(bike)
+func _build_bodywork(bodywork: BikeBodywork) -> void:
 	var points := _frame.key_points()
 	for piece: BodyworkPiece in bodywork.pieces:
 		var sides: Array[float] = [1.0]
@@ -282,8 +282,9 @@ func _build_chain(pivot: Vector3, axle: Vector3) -> void:
 
 
 ## The fork: stanchions on the steered part slide into the lower legs, which carry the
-## axle and the mudguard, so the fork visibly compresses.
-func _build_fork() -> void:
+## axle and the mudguard, so the fork visibly compresses; up front what the bodywork puts
+## there (`BikeBodywork.fork_front`, `high_mudguard`).
+func _build_fork(bodywork: BikeBodywork) -> void:
 	var axle := _frame.bike_of(_frame.rest_of(BikeSimulation.FRONT_WHEEL).origin)
 	var lower_top: Vector3 = _frame.capsule_ends(FORK_LOWER, BIKE_DOWN)[1]
 	var stanchions := _frame.capsule_ends(FORK, BIKE_DOWN)
@@ -311,18 +312,29 @@ func _build_fork() -> void:
 			"rubber"
 		)
 	_box(FORK, top + Vector3(0.0, -0.02, 0.0), Vector3(0.08, 0.05, 0.24), 0.0, "frame")
-	var lamp := SphereMesh.new()
-	lamp.radius = 0.085
-	lamp.height = 0.15
-	_add(
-		FORK,
-		lamp,
-		"lamp",
-		Transform3D(_frame.basis(), _frame.world_of(top + Vector3(0.14, -0.12, 0.0)))
-	)
-	# The mudguard a few centimetres above the tyre, whatever its size.
-	var mudguard := axle + Vector3(0.0, _simulation.get_wheel_radius() + 0.05, 0.0)
-	_box(FORK_LOWER, mudguard, Vector3(0.3, 0.03, 0.14), 0.0, "paint")
+	match bodywork.fork_front:
+		"lamp":
+			var lamp := SphereMesh.new()
+			lamp.radius = 0.085
+			lamp.height = 0.15
+			_add(
+				FORK,
+				lamp,
+				"lamp",
+				Transform3D(_frame.basis(), _frame.world_of(top + Vector3(0.14, -0.12, 0.0)))
+			)
+		"number_board":
+			# Leaning back with the fork, ahead of the clamps and the bar.
+			_box(FORK, top + Vector3(0.17, -0.16, 0.0), Vector3(0.02, 0.24, 0.26), 0.4, "plate")
+	var radius := _simulation.get_wheel_radius()
+	if bodywork.high_mudguard:
+		# On the bottom clamp, clear of the tyre by the travel: a blade reaching forward.
+		var clamp := axle + Vector3(0.03, radius + 0.13, 0.0)
+		_box(FORK, clamp, Vector3(0.5, 0.03, 0.13), -0.1, "paint")
+	else:
+		# The mudguard a few centimetres above the tyre, whatever its size.
+		var mudguard := axle + Vector3(0.0, radius + 0.05, 0.0)
+		_box(FORK_LOWER, mudguard, Vector3(0.3, 0.03, 0.14), 0.0, "paint")
 
 
 ## A capsule (rounded rod) from `a` to `b` (bike frame), `widen` times wider sideways.

@@ -3,22 +3,23 @@ extends Node3D
 ## One ride on one level: builds the level and the bike at its first spawn point, applies
 ## the player's settings, runs the level's rules and handles the game buttons (respawn,
 ## lift, spawn points, controller, trajectories, pause). The level comes from the
-## settings unless `level_path` names one; the bike is the game's street bike unless
-## `bike_path` names another (the thesis's reference bike, street_350.tres, rides the
-## experiment and the tools).
+## settings unless `level_path` names one, and so is the bike (`Bikes`) unless `bike_path`
+## names a file (the thesis's reference bike, street_350.tres, rides the experiment and
+## the tools). Best laps and ghosts are kept per bike.
 
 const BIKE := preload("res://scenes/bike/bike.tscn")
 const REPLAY := preload("res://scenes/replay/replay.tscn")
 const START_MENU := "res://scenes/ui/start_menu.tscn"
-## The game's own bike: the street bike with real brakes (docs/bike-model.md).
-const STREET_BIKE := "res://scenes/bike/bikes/street_390.tres"
 ## Seconds a result stays on screen before an automatic level starts the next attempt.
 const RESULT_PAUSE := 2.5
 
 ## Level scene to ride; empty: the one chosen in the settings.
 @export_file("*.tscn") var level_path := ""
-## Bike to ride (a BikeDescription file); empty: the reference bike.
-@export_file("*.tres") var bike_path := STREET_BIKE
+## Bike to ride (a BikeDescription file); empty: the one chosen in the settings.
+@export_file("*.tres") var bike_path := ""
+
+## The bike ridden, by its file's name (its key in `Bikes` for a bike players choose).
+var bike_key := ""
 
 var level: Level
 var bike: BikeSimulation
@@ -43,6 +44,20 @@ var _crash_cause := ""
 @onready var _camera: FollowCamera = $Camera
 @onready var _hud: Hud = $Hud
 @onready var _pause_menu: PauseMenu = $PauseMenu
+
+
+## The chosen bike's file: the settings' choice, or, where that cannot be built (its
+## error names the bike and the field), the first bike that can.
+static func _chosen_bike_path() -> String:
+	var chosen := str(Settings.get_value(&"bike"))
+	if Bikes.description(chosen) != null:
+		return Bikes.path_of(chosen)
+	var rideable := Bikes.rideable()
+	if rideable.is_empty():
+		push_error("Game: no bike can be built; riding the reference bike")
+		return ""
+	push_error("Game: %s cannot be ridden; riding %s" % [chosen, rideable[0]])
+	return Bikes.path_of(rideable[0])
 
 
 ## The bike described at `path`, or none (the reference bike) with an error saying why.
@@ -73,8 +88,13 @@ func _ready() -> void:
 	bike = BIKE.instantiate() as BikeSimulation
 	bike.terrain_root = ^"../Level"
 	bike.wait_for_throttle = true
-	if not bike_path.is_empty():
-		bike.bike = _bike_description(bike_path)
+	var bike_file := bike_path if not bike_path.is_empty() else _chosen_bike_path()
+	if not bike_file.is_empty():
+		bike.bike = _bike_description(bike_file)
+	bike_key = bike_file.get_file().get_basename()
+	if level is Track:
+		var track := level as Track
+		track.record_key = Bikes.record_key(track.record_key, bike_key)
 	if not spawns.is_empty():
 		bike.transform = spawns[0].spawn_transform()
 	add_child(bike)
@@ -103,6 +123,7 @@ func _ready() -> void:
 	replay.setup(bike)
 	replay.closed.connect(_on_replay_closed)
 	_pause_menu.quit_requested.connect(quit_to_menu)
+	_pause_menu.show_bike(bike_summary())
 	level.attach(bike)
 	level.announced.connect(_hud.announce)
 	if level is Track:
@@ -206,6 +227,18 @@ func cycle_spawn(step: int) -> void:
 ## Index of the spawn point in use.
 func spawn_index() -> int:
 	return _spawn_index
+
+
+## Name of the bike ridden, for people.
+func bike_name() -> String:
+	return bike.bike.name if bike.bike != null else "Street 350"
+
+
+## The bike ridden and its main figures, as the pause menu shows them.
+func bike_summary() -> String:
+	if bike.bike == null:
+		return bike_name()
+	return "%s   ·   %s" % [bike_name(), Bikes.figures_text(bike.bike)]
 
 
 ## Name of the controller in use.

@@ -99,7 +99,8 @@ func _process(delta: float) -> void:
 		status += "   ·   %d/%d reached the goal" % [_game.successes, _game.attempts]
 	else:
 		status += "   ·   falls %d" % _game.falls
-	_status.text = status
+	# The bike on a line of its own below: the line above is full on a track.
+	_status.text = "%s\n%s" % [status, _game.bike_name()]
 	_hint.text = _hint_text(bike)
 
 

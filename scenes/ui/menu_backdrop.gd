@@ -1,16 +1,23 @@
 class_name MenuBackdrop
 extends SubViewportContainer
 ## The start menu's backdrop: the level the player last chose, in the game's own light
-## (the shared outdoor environment and sun), seen from beside its start. Drawn once into
-## its own viewport and then shown as a still, so the menu costs no 3D drawing per frame
-## (a frame of the level is about 0.15 s on a software renderer).
+## (the shared outdoor environment and sun), seen from beside its start, with the chosen
+## bike standing there. Drawn once into its own viewport and then shown as a still, so the
+## menu costs no 3D drawing per frame (a frame of the level is about 0.15 s on a software
+## renderer).
 
 const ENVIRONMENT := preload("res://scenes/world/outdoor_environment.tres")
 const SUN := preload("res://scenes/world/sun.tscn")
 ## Where the camera stands relative to the level's first spawn point, in the spawn's frame
-## (x right, y up, z behind), and how far ahead of the spawn it looks (m).
-const CAMERA_FROM_SPAWN := Vector3(3.0, 4.0, 3.0)
-const LOOK_AHEAD := 18.0
+## (x right, y up, z behind), and the point it looks at: behind the bike standing at the
+## start and to its left, looking up the level past it, so the level ahead fills the view
+## and the bike stands in the lower right, clear of the menus.
+const CAMERA_FROM_SPAWN := Vector3(-2.2, 1.7, 4.8)
+const LOOK_AT := Vector3(-4.2, 2.4, -14.0)
+const BIKE := preload("res://scenes/bike/bike.tscn")
+## Physics frames the bike stands at the start before it is drawn: its drawing is built
+## from the bike as it stands.
+const BIKE_SETTLE_FRAMES := 2
 
 var _viewport := SubViewport.new()
 
@@ -29,18 +36,26 @@ func _ready() -> void:
 	_viewport.add_child(environment)
 	_viewport.add_child(SUN.instantiate())
 	show_level(str(Settings.get_value(&"level")))
+	show_bike(str(Settings.get_value(&"bike")))
 	resized.connect(func() -> void: _viewport.render_target_update_mode = SubViewport.UPDATE_ONCE)
+
+
+var _level: Level
+var _bike_key := ""
+var _bike: BikeSimulation
 
 
 ## Shows level `key` (the first level for an unknown key), drawn once.
 func show_level(key: String) -> void:
 	for old: Node in _viewport.get_children():
-		if old is Level or old is Camera3D:
+		if old is Level or old is Camera3D or old is BikeSimulation:
 			old.queue_free()
+	_bike = null
 	var path := Levels.path_of(key)
 	if path.is_empty():
 		path = Levels.ALL.values()[0]
 	var level := (load(path) as PackedScene).instantiate() as Level
+	_level = level
 	_viewport.add_child(level)
 	var spawns := level.spawn_points()
 	var start := spawns[0].spawn_transform() if not spawns.is_empty() else Transform3D()
@@ -48,6 +63,42 @@ func show_level(key: String) -> void:
 	camera.fov = 60.0
 	_viewport.add_child(camera)
 	camera.global_position = start * CAMERA_FROM_SPAWN
-	camera.look_at(start * Vector3(0.0, 0.5, -LOOK_AHEAD), Vector3.UP)
+	camera.look_at(start * LOOK_AT, Vector3.UP)
 	camera.current = true
 	_viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
+	if not _bike_key.is_empty():
+		show_bike(_bike_key)
+
+
+## Stands bike `key` (a `Bikes` key; none for one that cannot be built) at the level's
+## start, drawn once it has settled; its engine stays silent and its simulation stops then.
+func show_bike(key: String) -> void:
+	_bike_key = key
+	if _bike != null:
+		_bike.queue_free()
+		_bike = null
+	var description := Bikes.description(key)
+	if description == null or _level == null:
+		_viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
+		return
+	var bike := BIKE.instantiate() as BikeSimulation
+	bike.get_node(^"Sound").free()
+	bike.bike = description
+	bike.wait_for_throttle = true
+	var spawns := _level.spawn_points()
+	if not spawns.is_empty():
+		bike.transform = spawns[0].spawn_transform()
+	bike.terrain_root = NodePath("../" + _level.name)
+	_bike = bike
+	_viewport.add_child(bike)
+	for i in BIKE_SETTLE_FRAMES:
+		await get_tree().physics_frame
+	if _bike != bike:
+		return
+	bike.process_mode = Node.PROCESS_MODE_DISABLED
+	_viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
+
+
+## The bike standing in the backdrop (null before one is shown or when none can be).
+func bike() -> BikeSimulation:
+	return _bike

@@ -1,7 +1,7 @@
 class_name PauseMenu
 extends CanvasLayer
-## The pause menu (Back / Esc): stops the simulation and offers resume, the replay of the
-## last run, every player setting the schema puts in a menu (`SettingControls`), the
+## The pause menu (Back / Esc): stops the simulation, says which bike is ridden (the start
+## menu chooses it) and offers resume, the replay of the last run, every player setting the schema puts in a menu (`SettingControls`), the
 ## trajectory count, restart and quit; lists the controls. Every change is saved in the
 ## settings at once.
 ## Works with a gamepad alone (d-pad/stick to move, A to choose, B or Back to resume).
@@ -52,6 +52,11 @@ func _ready() -> void:
 			if not _syncing:
 				Settings.choose_trajectories(i)
 	)
+
+
+## Shows which bike is ridden: `text` names it and its main figures.
+func show_bike(text: String) -> void:
+	%Bike.text = text
 
 
 ## The menu's control of setting `key` (null if it has none).

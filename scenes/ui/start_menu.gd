@@ -1,7 +1,8 @@
 extends Control
 ## The start menu: pick a level (that starts the ride; the backdrop shows the one in
-## focus), the controller, the trajectory count and the auto-accelerate speed; shows the
-## track's best lap and what native module runs underneath. Works with a gamepad alone
+## focus), the bike (the backdrop stands it at the start; its main figures below it), the
+## controller, the trajectory count and the auto-accelerate speed; shows the track's best
+## lap on that bike and what native module runs underneath. Works with a gamepad alone
 ## (d-pad/stick to move, A to choose).
 ## `--native-info` prints the native module and exits (smoke tests, bug reports).
 
@@ -13,6 +14,8 @@ const GAME := "res://scenes/game/game.tscn"
 @onready var _version_label: Label = %VersionLabel
 @onready var _status_label: Label = %StatusLabel
 @onready var _levels: VBoxContainer = %Levels
+@onready var _bike: OptionButton = %Bike
+@onready var _bike_figures: Label = %BikeFigures
 @onready var _controller: OptionButton = %Controller
 @onready var _trajectories: OptionButton = %Trajectories
 @onready var _auto_speed: OptionButton = %AutoSpeed
@@ -54,6 +57,7 @@ func _build_choices() -> void:
 		# The backdrop shows the level the focus is on.
 		button.focus_entered.connect(func() -> void: _backdrop.show_level(key))
 		_levels.add_child(button)
+	_build_bike_choice()
 	for name in NativeModule.controller_names():
 		_controller.add_item(NativeModule.controller_label(name))
 	_controller.selected = maxi(
@@ -75,7 +79,37 @@ func _build_choices() -> void:
 		func(i: int) -> void:
 			Settings.set_value(&"auto_speed_kmh", Settings.offered(&"auto_speed_kmh")[i])
 	)
-	_best_lap.text = "Best lap on the track: %s" % Level.format_time(Settings.best_lap("track"))
+	_show_best_lap()
+
+
+## The bikes that can be ridden (one that cannot is left out, its error naming the bike
+## and the field), the chosen one selected.
+func _build_bike_choice() -> void:
+	var keys := Bikes.rideable()
+	for key: String in keys:
+		_bike.add_item(Bikes.description(key).name)
+	var chosen := keys.find(str(Settings.get_value(&"bike")))
+	_bike.selected = maxi(chosen, 0)
+	if chosen < 0 and not keys.is_empty():
+		Settings.set_value(&"bike", keys[0])
+	_show_bike_figures()
+	_bike.item_selected.connect(
+		func(i: int) -> void:
+			Settings.set_value(&"bike", keys[i])
+			_show_bike_figures()
+			_show_best_lap()
+			_backdrop.show_bike(keys[i])
+	)
+
+
+func _show_bike_figures() -> void:
+	var bike := Bikes.description(str(Settings.get_value(&"bike")))
+	_bike_figures.text = Bikes.figures_text(bike) if bike != null else ""
+
+
+func _show_best_lap() -> void:
+	var key := Bikes.record_key("track", str(Settings.get_value(&"bike")))
+	_best_lap.text = "Best lap on the track: %s" % Level.format_time(Settings.best_lap(key))
 
 
 ## `--native-info`: print what native module is loaded and exit; non-zero when it is missing

@@ -91,6 +91,31 @@ func test_a_smaller_bike_wears_the_bodywork_fitted_to_it_in_its_own_paint() -> v
 	)
 
 
+func test_each_bike_a_player_chooses_wears_its_own_bodywork_and_fork_front() -> void:
+	var fronts := {}
+	var bodyworks := {}
+	for key: String in Bikes.keys():
+		var view := await _drawn(Bikes.path_of(key))
+		var bodywork := BikeBodywork.worn_by(_game.bike.bike)
+		assert_eq(bodywork.problem(), "", "%s's bodywork fits" % key)
+		bodyworks[bodywork.resource_path] = key
+		var lamps := _pieces(view, "lamp", "SphereMesh").size()
+		var boards := _pieces(view, "plate", "BoxMesh").filter(
+			func(p: MeshInstance3D) -> bool:
+				return _game.bike.get_body_transform(BikeSimulation.FRONT_WHEEL).origin.distance_to(
+					p.global_position
+				) < 0.8
+		).size()
+		fronts[key] = [lamps, boards]
+		_game.queue_free()
+		_game = null
+		await wait_frames(1)
+	assert_eq(bodyworks.size(), 3, "three bodyworks: %s" % bodyworks)
+	assert_eq(fronts.street_390, [1, 0], "a round headlamp")
+	assert_eq(fronts.dirt_125, [0, 1], "a number board")
+	assert_eq(fronts.sport_600, [0, 0], "the fairing's lamps")
+
+
 func test_bodywork_that_cannot_be_worn_draws_the_standard_bodywork_with_an_error() -> void:
 	var bike := BikeDescription.new()
 	bike.bodywork = Resource.new()

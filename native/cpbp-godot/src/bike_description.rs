@@ -118,6 +118,42 @@ fn field_variant(i: usize, number: f64) -> Variant {
     }
 }
 
+#[godot_api]
+impl BikeDescription {
+    /// Why this bike cannot be built (a number out of its field's range, or a geometry
+    /// the core refuses), naming the bike and the field; empty when it can.
+    #[func]
+    fn problem(&self) -> GString {
+        match self.params() {
+            Ok(_) => GString::new(),
+            Err(why) => GString::from(&format!("{}: {why}", self.name)),
+        }
+    }
+
+    /// The figures a menu quotes, as the core builds the bike (empty when it cannot):
+    /// `mass_kg` (the bike without its rider), `power_kw` (at the rear wheel; 0 for no
+    /// limit), `max_lean_deg`, `wheelbase_m`, `front_travel_mm`, `rear_travel_mm` (0 on a
+    /// rigid bike), `tyre_friction`.
+    #[func]
+    fn figures(&self) -> VarDictionary {
+        let Ok(bike) = self.params() else {
+            return VarDictionary::new();
+        };
+        let travel = |pick: fn(&cpbp_core::bike::Suspension) -> f64| {
+            bike.suspension.as_ref().map_or(0.0, |s| pick(s) * 1000.0)
+        };
+        vdict! {
+            "mass_kg" => bike.bike_mass(),
+            "power_kw" => bike.rear_drive.max_power_kw,
+            "max_lean_deg" => bike.max_lean.to_degrees(),
+            "wheelbase_m" => bike.wheelbase,
+            "front_travel_mm" => travel(|s| s.front_travel),
+            "rear_travel_mm" => travel(|s| s.rear_travel),
+            "tyre_friction" => bike.tyre_friction,
+        }
+    }
+}
+
 impl BikeDescription {
     /// The bike's name, for people.
     pub fn name(&self) -> GString {

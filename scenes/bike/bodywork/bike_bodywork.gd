@@ -24,6 +24,14 @@ const STANDARD := "res://scenes/bike/bodywork/naked.tres"
 @export var seat := Vector3.ZERO
 @export var pieces: Array[BodyworkPiece] = []
 
+@export_group("On the fork")
+## What the fork carries up front: a round headlamp (a road bike's), a number board (a
+## dirt bike's) or nothing (a fairing on the frame carries the lamps).
+@export_enum("lamp", "number_board", "none") var fork_front := "lamp"
+## The front mudguard: just above the tyre (a road bike's), or high under the fork's
+## bottom clamp, clear of mud and the long travel (a dirt bike's).
+@export var high_mudguard := false
+
 
 ## The bodywork `bike` (a BikeDescription) names, or the standard one (with an error
 ## saying why) when it names none, or something that is not bodywork, or bodywork whose key

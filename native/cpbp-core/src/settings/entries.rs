@@ -214,6 +214,19 @@ pub const LEVEL: Setting = Setting {
     player: true,
     ..BASE
 };
+pub const BIKE: Setting = Setting {
+    name: "bike",
+    label: "Bike",
+    description: "The bike you ride.",
+    // The bikes a player chooses from, by their files' names in scenes/bike/bikes/ (the
+    // thesis's street_350 there is the research's reference, not a choice); the start
+    // menu offers them in this order.
+    default: D::Text("street_390"),
+    choices: &["street_390", "dirt_125", "sport_600"],
+    owner: Owner::Game,
+    player: true,
+    ..BASE
+};
 pub const CAMERA: Setting = Setting {
     name: "camera",
     label: "Camera",
@@ -306,6 +319,7 @@ pub const ENTRIES: &[Setting] = &[
     MASTER_VOLUME,
     ENGINE_VOLUME,
     LEVEL,
+    BIKE,
     CAMERA,
     TRAJECTORIES,
     AUTO_TRAJECTORIES,

@@ -10,6 +10,7 @@ use crate::common;
 use cpbp_core::bike::{read_bike_file, BikeFile, DriveInput, REFERENCE_BIKE};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::settings::BIKE;
 use cpbp_core::simulation::SimulationConfig;
 
 /// The game's bike files, by file name.
@@ -42,6 +43,16 @@ fn the_game_ships_a_reference_and_three_bikes_to_choose_each_named_once() {
         "two bikes share a name: {names:?}"
     );
     assert_eq!(names, ["Dirt 125", "Sport 600", "Street 350", "Street 390"]);
+    // The bike setting offers every file but the reference's, and nothing else.
+    let mut files: Vec<String> = bikes
+        .iter()
+        .filter_map(|(path, _)| path.file_stem()?.to_str().map(str::to_owned))
+        .filter(|stem| stem != REFERENCE_BIKE)
+        .collect();
+    let mut offered: Vec<String> = BIKE.choices.iter().map(|c| c.to_string()).collect();
+    files.sort();
+    offered.sort();
+    assert_eq!(offered, files);
 }
 
 fn lean_deg(ride: &Ride) -> f64 {
