@@ -2,7 +2,6 @@ extends TestCase
 ## The levels are rideable as designed, shown by a bot that rides them through the
 ## player's own input actions (BotRider: throttle, brake and turn, as a gamepad would).
 
-const GAME := preload("res://scenes/game/game.tscn")
 const TRACK := "res://scenes/levels/track/track.tscn"
 const SKATE_PARK := "res://scenes/levels/skate_park/skate_park.tscn"
 
@@ -81,7 +80,7 @@ func _climb_the_steps(controller: String, kmh: float) -> void:
 	await _start(SKATE_PARK, controller)
 	_game.cycle_spawn(2)
 	await wait_physics_frames(2)
-	_follow(_straight(Vector3(-12, 0, 8), Vector3(-12, 0, -24)), kmh)
+	_follow(BotStart.straight(Vector3(-12, 0, 8), Vector3(-12, 0, -24)), kmh)
 	var rear_on_high_step := 0.0
 	while _game.bike.get_center_of_mass().z > -18.0 and _game.level.elapsed < 20.0:
 		await wait_physics_frames(1)
@@ -106,7 +105,7 @@ func test_a_wheelie_lifts_the_bike_onto_the_skate_parks_platform() -> void:
 	await _start(SKATE_PARK, "combined")
 	_game.cycle_spawn(4)
 	await wait_physics_frames(2)
-	_follow(_straight(Vector3(-24, 0, 10), Vector3(-24, 0, -14)), 10.0)
+	_follow(BotStart.straight(Vector3(-24, 0, 10), Vector3(-24, 0, -14)), 10.0)
 	var rear_on_platform := 0.0
 	var highest_pitch := 0.0
 	while _game.bike.get_center_of_mass().z > -9.0 and _game.level.elapsed < 15.0:
@@ -131,7 +130,7 @@ func test_a_stop_on_a_foot_for_30_s_and_a_pull_away() -> void:
 	# Up the middle at 8 km/h, the brake to a stop, 30 s standing, and off again: the
 	# bike stands on the rider's foot, drawn down, and the feet come up riding off.
 	await _start(SKATE_PARK, "combined")
-	var path := _straight(Vector3(0, 0, 14), Vector3(0, 0, -28))
+	var path := BotStart.straight(Vector3(0, 0, 14), Vector3(0, 0, -28))
 	_follow(path, 8.0)
 	await wait_physics_frames(120)
 	_bot.speed_kmh = 0.0
@@ -169,7 +168,7 @@ func test_full_throttle_then_the_full_brake_on_the_tracks_straight() -> void:
 	# straight, then the full brake 16 m on: the bike stops before the kicker and stands
 	# on a foot (ABS and a loaded rear; before issue 33 every controller fell here).
 	await _start(TRACK, "combined")
-	_follow(_straight(Vector3(0, 0, 6), Vector3(0, 0, -40)), 40.0)
+	_follow(BotStart.straight(Vector3(0, 0, 6), Vector3(0, 0, -40)), 40.0)
 	var fastest := 0.0
 	while _game.bike.get_center_of_mass().z > -10.0 and _game.level.elapsed < 10.0:
 		await wait_physics_frames(1)
@@ -211,7 +210,7 @@ func test_a_stop_and_a_hill_start_on_the_tracks_long_hill() -> void:
 	await _start(TRACK, "combined")
 	_game.cycle_spawn(2)
 	await wait_physics_frames(2)
-	_follow(_straight(Vector3(-40, 0, -95), Vector3(-40, 0, 30)), 20.0)
+	_follow(BotStart.straight(Vector3(-40, 0, -95), Vector3(-40, 0, 30)), 20.0)
 	while _game.bike.get_center_of_mass().z < -13.0 and _game.level.elapsed < 25.0:
 		await wait_physics_frames(1)
 	_bot.speed_kmh = 0.0
@@ -273,15 +272,6 @@ func _follow(path: Path3D, kmh: float) -> void:
 	_bot.speed_kmh = kmh
 
 
-## A straight Path3D from `from` to `to`.
-static func _straight(from: Vector3, to: Vector3) -> Path3D:
-	var path := Path3D.new()
-	path.curve = Curve3D.new()
-	path.curve.add_point(from)
-	path.curve.add_point(to)
-	return path
-
-
 ## A lap of the track at `kmh` with `controller`: no fall, over the hills and the table,
 ## and the lap counted and printed (docs/results-history.md quotes it).
 func _ride_a_lap(controller: String, kmh: float) -> void:
@@ -311,14 +301,6 @@ func _ride_a_lap(controller: String, kmh: float) -> void:
 
 
 func _start(level_path: String, controller: String) -> void:
-	Settings.set_value(&"controller", controller)
-	_game = GAME.instantiate()
-	_game.level_path = level_path
-	add_child(_game)
-	# Before the first step: a ride that waits for every plan repeats exactly.
-	_game.bike.wait_for_every_plan = true
-	await wait_physics_frames(2)
-	_bot = BotRider.new()
-	_bot.bike = _game.bike
-	_bot.path = _game.level.get_node_or_null("Lap")
-	add_child(_bot)
+	var started: Array = await BotStart.start(self, level_path, controller)
+	_game = started[0]
+	_bot = started[1]

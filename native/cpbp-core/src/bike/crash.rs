@@ -23,6 +23,8 @@ impl CrashCause {
                     Part::Torso => "the rider's head or body",
                     Part::UpperLeg | Part::LowerLeg => "the rider's leg",
                     Part::UpperArm | Part::LowerArm => "the rider's arm",
+                    Part::Fork | Part::ForkLower => "the fork",
+                    Part::Swingarm => "the swingarm",
                     _ => "the bike",
                 };
                 format!("{what} hit the ground")
