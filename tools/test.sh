@@ -149,7 +149,7 @@ bike_gallery() {
 }
 
 # Screenshots of the menus, levels, cameras, a full brake's tyre marks, a crash's sparks,
-# dust on the track's gravel, replay and ghost race under Xvfb, failing on a blank
+# dust on the track's gravel, replay, ghost race and each bike under Xvfb, failing on a blank
 # picture (the ghost race races the lap the bot rode in the GDScript suites).
 step "screenshots (Xvfb)"   screenshots
 # The engine recorded by Godot's movie writer sounds at its firing frequency, rising with

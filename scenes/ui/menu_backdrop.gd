@@ -20,6 +20,9 @@ const BIKE := preload("res://scenes/bike/bike.tscn")
 const BIKE_SETTLE_FRAMES := 2
 
 var _viewport := SubViewport.new()
+var _level: Level
+var _bike_key := ""
+var _bike: BikeSimulation
 
 
 func _ready() -> void:
@@ -38,11 +41,6 @@ func _ready() -> void:
 	show_level(str(Settings.get_value(&"level")))
 	show_bike(str(Settings.get_value(&"bike")))
 	resized.connect(func() -> void: _viewport.render_target_update_mode = SubViewport.UPDATE_ONCE)
-
-
-var _level: Level
-var _bike_key := ""
-var _bike: BikeSimulation
 
 
 ## Shows level `key` (the first level for an unknown key), drawn once.

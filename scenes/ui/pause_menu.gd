@@ -1,9 +1,9 @@
 class_name PauseMenu
 extends CanvasLayer
 ## The pause menu (Back / Esc): stops the simulation, says which bike is ridden (the start
-## menu chooses it) and offers resume, the replay of the last run, every player setting the schema puts in a menu (`SettingControls`), the
-## trajectory count, restart and quit; lists the controls. Every change is saved in the
-## settings at once.
+## menu chooses it) and offers resume, the replay of the last run, every player setting the
+## schema puts in a menu (`SettingControls`), the trajectory count, restart and quit; lists
+## the controls. Every change is saved in the settings at once.
 ## Works with a gamepad alone (d-pad/stick to move, A to choose, B or Back to resume).
 
 ## The player asked to start the attempt again, to watch the last run, or to leave for

@@ -33,11 +33,16 @@ func test_the_bikes_are_the_settings_choices_and_each_can_be_built() -> void:
 		names.append(bike.name)
 		assert_eq(bike.problem(), "", "%s builds" % key)
 	assert_eq(names, ["Street 390", "Dirt 125", "Sport 600"] as Array[String])
-	assert_eq(Bikes.figures_text(Bikes.description("dirt_125")), "94 kg · 26.7 kW · 38.5° lean · 315 mm travel")
+	assert_eq(
+		Bikes.figures_text(Bikes.description("dirt_125")),
+		"94 kg · 26.7 kW · 38.5° lean · 315 mm travel"
+	)
 
 
 func test_a_bike_that_cannot_be_built_is_refused_naming_the_bike_and_the_field() -> void:
-	var broken := (load(Bikes.path_of("sport_600")) as BikeDescription).duplicate() as BikeDescription
+	var broken := (
+		(load(Bikes.path_of("sport_600")) as BikeDescription).duplicate() as BikeDescription
+	)
 	broken.set(&"engine/max_power_kw", 900.0)
 	assert_has(broken.problem(), "Sport 600")
 	assert_has(broken.problem(), "engine/max_power_kw")

@@ -11,6 +11,8 @@ const OTHER_BIKES: Array[String] = ["dirt_125", "sport_600"]
 
 var _game: Game
 var _bot: BotRider
+## How the last fall happened (the crash's cause), for the failure's message.
+var _crash := ""
 
 
 func before_each() -> void:
@@ -31,9 +33,6 @@ func _leave() -> void:
 		_game.queue_free()
 		_game = null
 	await wait_frames(1)
-
-
-var _crash := ""
 
 
 func _ride(level: String, controller: String, bike: String) -> void:

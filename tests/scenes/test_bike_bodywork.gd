@@ -100,12 +100,10 @@ func test_each_bike_a_player_chooses_wears_its_own_bodywork_and_fork_front() -> 
 		assert_eq(bodywork.problem(), "", "%s's bodywork fits" % key)
 		bodyworks[bodywork.resource_path] = key
 		var lamps := _pieces(view, "lamp", "SphereMesh").size()
-		var boards := _pieces(view, "plate", "BoxMesh").filter(
-			func(p: MeshInstance3D) -> bool:
-				return _game.bike.get_body_transform(BikeSimulation.FRONT_WHEEL).origin.distance_to(
-					p.global_position
-				) < 0.8
-		).size()
+		var wheel := _game.bike.get_body_transform(BikeSimulation.FRONT_WHEEL).origin
+		var boards := 0
+		for plate in _pieces(view, "plate", "BoxMesh"):
+			boards += int(plate.global_position.distance_to(wheel) < 0.8)
 		fronts[key] = [lamps, boards]
 		_game.queue_free()
 		_game = null
