@@ -317,12 +317,8 @@ func _build_fork(bodywork: BikeBodywork) -> void:
 			var lamp := SphereMesh.new()
 			lamp.radius = 0.085
 			lamp.height = 0.15
-			_add(
-				FORK,
-				lamp,
-				"lamp",
-				Transform3D(_frame.basis(), _frame.world_of(top + Vector3(0.14, -0.12, 0.0)))
-			)
+			var at := _frame.world_of(top + Vector3(0.14, -0.12, 0.0))
+			_add(FORK, lamp, "lamp", Transform3D(_frame.basis(), at))
 		"number_board":
 			# Leaning back with the fork, ahead of the clamps and the bar.
 			_box(FORK, top + Vector3(0.17, -0.16, 0.0), Vector3(0.02, 0.24, 0.26), 0.4, "plate")

@@ -122,6 +122,18 @@ pub fn ask_lean(ride: &mut Ride, lean: f64) {
     });
 }
 
+/// Pulls the brake all the way, throttle shut, from the next step on; the rest of what the
+/// ride asks (lean, top speed) stays.
+pub fn full_brake(ride: &mut Ride) {
+    let mut intent = *ride.intent();
+    intent.drive = DriveInput {
+        throttle: 0.0,
+        brake: 1.0,
+        max_speed: intent.drive.max_speed,
+    };
+    ride.set_intent(intent);
+}
+
 /// Rides `seconds` asking for `lean` (rad).
 pub fn ride(ride: &mut Ride, seconds: f64, lean: f64) {
     ask_lean(ride, lean);

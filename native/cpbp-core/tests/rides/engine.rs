@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use cpbp_core::bike::{BikeParams, DriveInput, GRAVITY};
+use cpbp_core::bike::{BikeParams, GRAVITY};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::SimulationConfig;
@@ -88,13 +88,7 @@ fn rear_brake_stop(brake_torque: f64) -> f64 {
     common::ride(&mut ride, 6.0, 0.0);
     let dt = ride.sim().config().control_dt;
     let start = speed(&ride);
-    let mut intent = *ride.intent();
-    intent.drive = DriveInput {
-        throttle: 0.0,
-        brake: 1.0,
-        max_speed: intent.drive.max_speed,
-    };
-    ride.set_intent(intent);
+    common::full_brake(&mut ride);
     let (mut distance, mut last) = (0.0, start);
     while last > 0.05 {
         ride.step();

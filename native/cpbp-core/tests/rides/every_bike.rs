@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use crate::common;
 
-use cpbp_core::bike::{read_bike_file, BikeFile, DriveInput, REFERENCE_BIKE};
+use cpbp_core::bike::{read_bike_file, BikeFile, REFERENCE_BIKE};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::settings::BIKE;
@@ -117,13 +117,7 @@ fn stand_ride_bend_and_stop(bike: &BikeFile, kind: ControllerKind) {
     common::ask_lean(&mut ride, 0.0);
     ride_for(&mut ride, 3.0, &name, "standing up out of the bend");
 
-    let mut intent = *ride.intent();
-    intent.drive = DriveInput {
-        throttle: 0.0,
-        brake: 1.0,
-        max_speed: intent.drive.max_speed,
-    };
-    ride.set_intent(intent);
+    common::full_brake(&mut ride);
     ride_for(&mut ride, 6.0, &name, "braking to a stand");
     let (stopped, stood) = (speed_kmh(&ride), lean_deg(&ride));
     println!("{name}: stood {standing:.1}°, cruised {cruising:.1} km/h, held {held:.1}° in the bend, stopped at {stopped:.2} km/h on a foot at {stood:.1}°");

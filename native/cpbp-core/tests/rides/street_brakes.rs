@@ -41,13 +41,7 @@ fn full_brake(ride: &mut Ride) -> Stop {
     let dt = ride.sim().config().control_dt;
     let g = ride.sim().config().gravity.length();
     let start = speed(ride);
-    let mut brake = *ride.intent();
-    brake.drive = DriveInput {
-        throttle: 0.0,
-        brake: 1.0,
-        max_speed: brake.drive.max_speed,
-    };
-    ride.set_intent(brake);
+    common::full_brake(ride);
     let (mut distance, mut last) = (0.0, start);
     let mut stop = Stop {
         mean_g: 0.0,
