@@ -23,6 +23,7 @@ var _viewport := SubViewport.new()
 var _level: Level
 var _bike_key := ""
 var _bike: BikeSimulation
+var _bike_settle_frames_left := 0
 
 
 func _ready() -> void:
@@ -31,6 +32,8 @@ func _ready() -> void:
 	if not NativeModule.is_loaded():
 		return
 	stretch = true
+	# After the bike's own step, so it stands BIKE_SETTLE_FRAMES steps before it stops.
+	process_physics_priority = 1
 	_viewport.own_world_3d = true
 	_viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
 	add_child(_viewport)
@@ -89,12 +92,18 @@ func show_bike(key: String) -> void:
 	bike.terrain_root = NodePath("../" + _level.name)
 	_bike = bike
 	_viewport.add_child(bike)
-	for i in BIKE_SETTLE_FRAMES:
-		await get_tree().physics_frame
-	if _bike != bike:
+	_bike_settle_frames_left = BIKE_SETTLE_FRAMES
+
+
+# Counted here rather than awaited in show_bike: a coroutine still waiting for a physics
+# frame when the menu goes would hold the bike's description to the end (a leak at exit).
+func _physics_process(_delta: float) -> void:
+	if _bike == null or _bike_settle_frames_left <= 0:
 		return
-	bike.process_mode = Node.PROCESS_MODE_DISABLED
-	_viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
+	_bike_settle_frames_left -= 1
+	if _bike_settle_frames_left == 0:
+		_bike.process_mode = Node.PROCESS_MODE_DISABLED
+		_viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
 
 
 ## The bike standing in the backdrop (null before one is shown or when none can be).
