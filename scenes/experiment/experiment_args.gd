@@ -6,6 +6,8 @@ extends RefCounted
 var speed := 15.0
 var controller := "combined"
 var physics := "classic"
+## The bike file ridden (a res:// path); empty: the reference bike.
+var bike := ""
 var trajectories: Array[int] = [5]
 var base_seed := 1000
 var first := 0
@@ -39,6 +41,10 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 						)
 					)
 				args.physics = value
+			"bike":
+				if not ResourceLoader.exists(value, "BikeDescription"):
+					args._fail("--bike must name a bike file, not '%s'" % value)
+				args.bike = value
 			"trajectories":
 				args.trajectories.clear()
 				var limits := BikeSimulation.trajectory_limits()

@@ -8,7 +8,7 @@ extends Node
 ##
 ## Arguments (after `--`): --speed=KMH --controller=NAME (a name of the controller registry)
 ## --trajectories=N[,N...] --seed=BASE --first=I --count=K --threads=T [--timing --steps=S]
-## [--physics=classic|exact] [--warm-up=CONTROLLER] [--platform]
+## [--physics=classic|exact] [--bike=res://FILE] [--warm-up=CONTROLLER] [--platform]
 ## Attempt i uses bump seed BASE + i and a planner seed drawn from it, so every controller
 ## meets the same bumps at attempt i and a rerun of an attempt repeats it exactly.
 ## Before any attempt it prints one `PLATFORM {json}` line (NativeModule.platform()), what
@@ -58,6 +58,14 @@ func _build(args: ExperimentArgs) -> bool:
 		printerr("experiment worker: the test level has unusable shapes: ", problems)
 		return false
 	_bike = BIKE.instantiate()
+	if not args.bike.is_empty():
+		var description := load(args.bike) as BikeDescription
+		if description == null or not description.problem().is_empty():
+			var why := "not a bike" if description == null else description.problem()
+			printerr("experiment worker: --bike=%s cannot be ridden: %s" % [args.bike, why])
+			_bike.free()
+			return false
+		_bike.bike = description
 	_bike.terrain_root = NodePath("../%s" % _level.name)
 	_bike.transform = _level.spawn_points()[0].spawn_transform()
 	_bike.controller = args.controller

@@ -46,6 +46,19 @@ func test_the_platform_and_a_warm_up_ride_can_be_asked_for() -> void:
 	assert_eq(args.warm_up, "arcade")
 
 
+func test_a_bike_file_is_ridden_and_anything_else_refused() -> void:
+	var dirt := "res://scenes/bike/bikes/dirt_125.tres"
+	var args := ExperimentArgs.parse(PackedStringArray(["--bike=" + dirt]))
+	assert_eq(args.error, "")
+	assert_eq(args.bike, dirt)
+	assert_eq(ExperimentArgs.parse(PackedStringArray()).bike, "", "the reference bike")
+	for wrong: String in ["res://scenes/bike/bikes/moped_50.tres", "res://project.godot"]:
+		assert_has(
+			ExperimentArgs.parse(PackedStringArray(["--bike=" + wrong])).error,
+			"--bike must name a bike file"
+		)
+
+
 func test_bad_values_are_explained() -> void:
 	var cases := {
 		"--speed=fast": "--speed needs a number",

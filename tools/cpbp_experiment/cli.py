@@ -15,10 +15,10 @@ from .configs import (THESIS_CONTROLLERS, THESIS_PLANNERS, THESIS_SPEEDS, TIMING
                       display_order, parse_attempts, parse_controllers, parse_counts,
                       parse_speeds, protocol_tries)
 from .fingerprint import FingerprintError, PlatformStore, fingerprint, identity, refusal
-from .results import Attempt, ResultsError, ResultsFile, check_seed
+from .results import Attempt, ResultsError, ResultsFile, check_bike, check_seed
 from .progress import Progress
-from .runner import (PROJECT_ROOT, Platform, WorkerError, cpu_description, measure_planning,
-                     plan_blocks, run_blocks, worker_platform)
+from .runner import (PROJECT_ROOT, Bike, Platform, WorkerError, cpu_description,
+                     measure_planning, plan_blocks, run_blocks, worker_platform)
 from .verify import choose, parse_rows, verify
 
 WORKER_LOG = "workers.log"
@@ -38,6 +38,7 @@ def main(argv: list[str] | None = None) -> int:
     args.chosen_configs = set(args.planned) if named else None
     out = Path(args.out)
     try:
+        args.bike = Bike.of_file(args.bike) if args.bike else Bike.reference()
         if args.command in ("timing", "all") and (args.command == "timing" or
                                                   not (out / TIMING).exists()):
             timing(args, out)
@@ -120,6 +121,10 @@ def _parser() -> argparse.ArgumentParser:
                         "tcp://host:8786), 'local' for one started here with --jobs "
                         "workers, or nothing for Dask's own DASK_SCHEDULER_ADDRESS "
                         "(docs/experiment.md, \"On several machines\")")
+    parser.add_argument("--bike", default=None, metavar="FILE",
+                        help="a bike file in the project to ride (default: the reference "
+                        "bike, scenes/bike/bikes/street_350.tres); keep its rows in an --out "
+                        "of their own")
     parser.add_argument("--allow-mixed", action="store_true",
                         help="append to results made on another platform (the report "
                         "notes the mix)")
@@ -143,22 +148,25 @@ def _whole(low: int, high: int):
     return parse
 
 
-def current_platform(out: Path, record: bool = True) -> tuple[Platform, dict]:
-    """This machine's platform, as a worker and the checkout describe it; `record` adds it
-    to OUT/platforms.json for the rows about to be written."""
+def current_platform(out: Path, record: bool = True,
+                     bike: Bike | None = None) -> tuple[Platform, dict]:
+    """This machine's platform, as a worker and the checkout describe it, riding `bike`
+    (the reference without one); `record` adds it to OUT/platforms.json for the rows
+    about to be written."""
     worker = worker_platform(out / WORKER_LOG)
     description = fingerprint(PROJECT_ROOT, worker)
     name = PlatformStore(out / PLATFORMS).add(description) if record else identity(description)
-    return Platform(name, worker, description), description
+    return Platform(name, worker, description, bike or Bike.reference()), description
 
 
 def run(args: argparse.Namespace, out: Path) -> None:
     results = ResultsFile(out / RESULTS)
     saved = results.load()
     check_seed(saved, args.seed, results.path)
+    check_bike(saved, args.bike.name, results.path)
     store = PlatformStore(out / PLATFORMS)
     known = store.load()
-    platform, description = current_platform(out)
+    platform, description = current_platform(out, bike=args.bike)
     mix = refusal({a.platform for a in saved}, description, known, results.path)
     if mix and not args.allow_mixed:
         raise ResultsError(mix)
@@ -224,7 +232,8 @@ def check_rows(args: argparse.Namespace, out: Path) -> int:
     chosen = choose(saved, args.rows, args.attempts, args.chosen_configs)
     if not chosen:
         raise ResultsError("no saved row matches the rows asked for")
-    platform, description = current_platform(out, record=False)
+    check_bike(chosen, args.bike.name, out / RESULTS)
+    platform, description = current_platform(out, record=False, bike=args.bike)
     mix = refusal({a.platform for a in chosen}, description, PlatformStore(out / PLATFORMS)
                   .load(), out / RESULTS)
     if mix:
@@ -264,12 +273,13 @@ def compare_with(args: argparse.Namespace, out: Path) -> int:
 
 
 def timing(args: argparse.Namespace, out: Path) -> None:
-    print(f"experiment: timing the planners on {cpu_description()} (nothing else should run)",
+    print(f"experiment: timing the planners on {args.bike.name} on {cpu_description()} "
+          "(nothing else should run)",
           file=sys.stderr, flush=True)
     rows = []
     for kind in THESIS_PLANNERS:
         for row in measure_planning(kind, args.counts, args.steps, 15, args.seed,
-                                    out / WORKER_LOG, TIMING_PHYSICS):
+                                    out / WORKER_LOG, TIMING_PHYSICS, args.bike.resource):
             rows.append(row)
     report.write_timing(rows, out / TIMING)
     (out / "machine.txt").write_text(f"{cpu_description()}, measured {date.today()}\n")

@@ -148,7 +148,8 @@ class ClusterRun:
                         f"the node's {theirs.get(key, '?')}" for key in COMPARED
                         if self.platform.description.get(key) != theirs.get(key)))
             return
-        attempt = attempt_of(payload, block, self.platform.identity)
+        attempt = attempt_of(payload, block, self.platform.identity,
+                             self.platform.bike.name)
         if attempt.key in self.done:
             # A task ran again after its worker was lost: the row is saved already.
             self.repeated += 1
@@ -173,7 +174,8 @@ def run_blocks_on_cluster(blocks: list[Block], results: ResultsFile, progress: P
     run = ClusterRun(results, progress, platform, done,
                      {f"b{i}": block for i, block in enumerate(blocks)})
     # Higher priority runs first: the blocks in the order plan_blocks gave them.
-    futures = [client.submit(ride_block, block_arguments(block, base_seed, threads),
+    bike = platform.bike.resource
+    futures = [client.submit(ride_block, block_arguments(block, base_seed, threads, bike),
                              block.count, queue_name, f"b{i}", key=f"{queue_name}-b{i}", pure=False,
                              priority=len(blocks) - i)
                for i, block in enumerate(blocks)]

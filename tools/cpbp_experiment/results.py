@@ -32,8 +32,12 @@ LEGACY_FIELDS = (
 # the fingerprint in platforms.json it was made on.
 PLATFORM_FIELDS = LEGACY_FIELDS + ("planner_seed", "late_plans", "platform")
 # `physics` is the physics model the row was ridden in (earlier files: all classic).
-FIELDS = PLATFORM_FIELDS + ("physics",)
-OUTDATED_LAYOUTS = (LEGACY_FIELDS, PLATFORM_FIELDS)
+PHYSICS_FIELDS = PLATFORM_FIELDS + ("physics",)
+# `bike` is the name of the bike file ridden (earlier files: all the reference bike's).
+FIELDS = PHYSICS_FIELDS + ("bike",)
+OUTDATED_LAYOUTS = (LEGACY_FIELDS, PLATFORM_FIELDS, PHYSICS_FIELDS)
+# The thesis's bike, which a run rides unless given another (scenes/bike/bikes/).
+REFERENCE_BIKE = "street_350"
 OUTCOMES = ("goal", "fell", "timeout")
 
 
@@ -56,6 +60,7 @@ class Attempt:
     planner_seed: int | None = None
     late_plans: int | None = None
     platform: str = UNRECORDED
+    bike: str = REFERENCE_BIKE
 
     @property
     def key(self) -> tuple[Config, int]:
@@ -79,6 +84,7 @@ class Attempt:
             "" if self.late_plans is None else str(self.late_plans),
             self.platform,
             c.controller.physics,
+            self.bike,
         ]
 
     def outcome_fields(self) -> list[str]:
@@ -106,6 +112,7 @@ class Attempt:
             planner_seed=int(row["planner_seed"]) if row.get("planner_seed") else None,
             late_plans=int(row["late_plans"]) if row.get("late_plans") else None,
             platform=row.get("platform") or UNRECORDED,
+            bike=row.get("bike") or REFERENCE_BIKE,
         )
 
 
@@ -151,8 +158,8 @@ class ResultsFile:
 
     def upgrade(self, attempts: list[Attempt]) -> None:
         """Rewrites a file of an earlier layout in today's columns (a row's platform
-        unrecorded if it had none, its physics classic), via a temporary file renamed over
-        it, so a kill leaves the old file or the new one."""
+        unrecorded if it had none, its physics classic, its bike the reference), via a
+        temporary file renamed over it, so a kill leaves the old file or the new one."""
         buffer = io.StringIO()
         writer = csv.writer(buffer, lineterminator="\n")
         writer.writerow(FIELDS)
@@ -191,3 +198,14 @@ def check_seed(attempts: list[Attempt], base_seed: int, path: Path) -> None:
                 f"{path} was made with --seed {attempt.seed - attempt.attempt}, not "
                 f"{base_seed}: rerun with that seed to resume, or choose another --out"
             )
+
+
+def check_bike(attempts: list[Attempt], bike: str, path: Path) -> None:
+    """One bike per results file: a table pairs attempts by configuration and seed, and
+    two bikes' attempts are not the same attempt."""
+    others = sorted({a.bike for a in attempts} - {bike})
+    if others:
+        raise ResultsError(
+            f"{path} has rows ridden on {', '.join(others)}, not {bike}: keep each bike's "
+            "rows in an --out of their own (rerun with that bike to resume)"
+        )

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from .configs import Config
 from .progress import Progress
-from .results import Attempt, ResultsFile
+from .results import REFERENCE_BIKE, Attempt, ResultsFile
 
 PROJECT_ROOT = Path(__file__).resolve().parents[2]
 WORKER_SCENE = "res://scenes/experiment/experiment_worker.tscn"
@@ -135,7 +135,9 @@ def start_worker(arguments: list[str], log: Path,
         )
 
 
-def block_arguments(block: Block, base_seed: int, threads: int) -> list[str]:
+def block_arguments(block: Block, base_seed: int, threads: int, bike: str = "") -> list[str]:
+    """A worker's arguments for `block`; `bike` is the ridden bike file's res:// path
+    (empty: the reference bike)."""
     controller = block.config.controller
     return [
         f"--speed={block.config.speed_kmh}",
@@ -146,7 +148,7 @@ def block_arguments(block: Block, base_seed: int, threads: int) -> list[str]:
         f"--count={block.count}",
         f"--threads={threads}",
         f"--physics={controller.physics}",
-    ]
+    ] + ([f"--bike={bike}"] if bike else [])
 
 
 def worker_platform(log: Path) -> dict:
@@ -161,6 +163,31 @@ def worker_platform(log: Path) -> dict:
 
 
 @dataclass(frozen=True)
+class Bike:
+    """The bike a run rides: its name (the file's, as rows and tables give it) and the
+    res:// path a worker loads (empty for the reference bike, the workers' own)."""
+
+    name: str
+    resource: str = ""
+
+    @staticmethod
+    def reference() -> "Bike":
+        return Bike(REFERENCE_BIKE)
+
+    @staticmethod
+    def of_file(path: str) -> "Bike":
+        """The bike in file `path`, which must lie in the project (workers load it as a
+        res:// path); raises ValueError saying why not."""
+        file = Path(path).resolve()
+        if not file.is_file():
+            raise ValueError(f"--bike {path}: no such bike file")
+        if not file.is_relative_to(PROJECT_ROOT):
+            raise ValueError(f"--bike {path}: the file must lie in the project "
+                             f"({PROJECT_ROOT}), where the workers load it from")
+        return Bike(file.stem, "res://" + file.relative_to(PROJECT_ROOT).as_posix())
+
+
+@dataclass(frozen=True)
 class Platform:
     """The run's platform: its identity for the rows, what every worker must report, and
     the whole fingerprint (to say what differs on a cluster node that is not the same)."""
@@ -168,6 +195,9 @@ class Platform:
     identity: str
     worker: dict
     description: dict = field(default_factory=dict)
+    # The bike every row rides (`Bike`): not a property of the machine, but carried with
+    # it to every worker a run starts.
+    bike: Bike = field(default_factory=Bike.reference)
 
 
 def run_blocks(
@@ -205,7 +235,8 @@ def run_blocks(
         while pending or running:
             while pending and len(running) < jobs and failure is None:
                 block = pending.pop(0)
-                process = start_worker(block_arguments(block, base_seed, threads), log)
+                process = start_worker(
+                    block_arguments(block, base_seed, threads, platform.bike.resource), log)
                 running[next_id] = (process, block)
                 reported[next_id] = 0
                 heard[next_id] = time.monotonic()
@@ -237,7 +268,7 @@ def run_blocks(
                     f"a worker reported another platform than the run's: {text[9:].strip()}")
             elif text.startswith("TRY "):
                 reported[worker_id] += 1
-                attempt = attempt_of(text[4:], block, platform.identity)
+                attempt = attempt_of(text[4:], block, platform.identity, platform.bike.name)
                 results.append(attempt)
                 progress.record(attempt)
                 progress.report(attempt, force=not pending and len(running) == 1)
@@ -259,7 +290,7 @@ def _silent_worker(running, heard, log: Path) -> WorkerError | None:
     return None
 
 
-def attempt_of(payload: str, block: Block, platform: str) -> Attempt:
+def attempt_of(payload: str, block: Block, platform: str, bike: str = REFERENCE_BIKE) -> Attempt:
     data = json.loads(payload)
     controller = block.config.controller
     ok = (
@@ -284,6 +315,7 @@ def attempt_of(payload: str, block: Block, platform: str) -> Attempt:
         planner_seed=int(data["planner_seed"]),
         late_plans=int(data["late_plans"]),
         platform=platform,
+        bike=bike,
     )
 
 
@@ -295,8 +327,9 @@ def log_tail(log: Path, lines: int = 8) -> str:
 
 
 def measure_planning(controller_kind: str, counts: list[int], steps: int, speed: int,
-                     seed: int, log: Path, physics: str) -> list[dict]:
-    """The planning-time study: one worker, every core for the planner, as in the game."""
+                     seed: int, log: Path, physics: str, bike: str = "") -> list[dict]:
+    """The planning-time study: one worker, every core for the planner, as in the game;
+    `bike` as `block_arguments` takes it."""
     arguments = [
         "--timing",
         f"--physics={physics}",
@@ -306,7 +339,7 @@ def measure_planning(controller_kind: str, counts: list[int], steps: int, speed:
         f"--speed={speed}",
         f"--seed={seed}",
         "--threads=0",
-    ]
+    ] + ([f"--bike={bike}"] if bike else [])
     process = start_worker(arguments, log)
     rows = []
     for text in process.stdout:

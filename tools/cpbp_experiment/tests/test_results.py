@@ -1,11 +1,13 @@
 import tempfile
 import unittest
+from dataclasses import replace
 from pathlib import Path
 
 from cpbp_experiment.configs import Config, Controller
 from cpbp_experiment.fingerprint import UNRECORDED
-from cpbp_experiment.results import (FIELDS, LEGACY_FIELDS, PLATFORM_FIELDS, Attempt,
-                                     ResultsError, ResultsFile, check_seed)
+from cpbp_experiment.results import (FIELDS, LEGACY_FIELDS, PHYSICS_FIELDS, PLATFORM_FIELDS,
+                                     REFERENCE_BIKE, Attempt, ResultsError, ResultsFile,
+                                     check_bike, check_seed)
 
 
 def attempt(index: int, controller: str = "combined-5", speed: int = 15, seed: int = 1000,
@@ -79,7 +81,27 @@ class ResultsFileTest(unittest.TestCase):
         exact = attempt(0, "combined-5:exact")
         self.results.append(exact)
         self.assertEqual(self.results.load(), [earlier, exact], "the same attempt, two physics")
-        self.assertTrue(self.path.read_text().endswith(",exact\n"))
+        self.assertTrue(self.path.read_text().endswith(f",exact,{REFERENCE_BIKE}\n"))
+
+    def test_a_file_from_before_the_bike_column_reads_as_the_reference_bike_and_upgrades(self):
+        earlier = attempt(0, "combined-5:exact")
+        self.path.write_text(",".join(PHYSICS_FIELDS) + "\n" + ",".join(earlier.row()[:15])
+                             + "\n")
+        loaded = self.results.load()
+        self.assertTrue(self.results.legacy)
+        self.assertEqual([a.bike for a in loaded], [REFERENCE_BIKE])
+        self.results.upgrade(loaded)
+        self.assertEqual(self.results.load(), [earlier])
+        self.assertTrue(self.path.read_text().endswith(f",exact,{REFERENCE_BIKE}\n"))
+
+    def test_a_bikes_rows_read_back_with_it_and_another_bike_is_refused(self):
+        dirt = replace(attempt(0), bike="dirt_125")
+        self.results.append(dirt)
+        loaded = self.results.load()
+        self.assertEqual(loaded[0].bike, "dirt_125")
+        check_bike(loaded, "dirt_125", self.path)
+        with self.assertRaisesRegex(ResultsError, "ridden on dirt_125, not street_350"):
+            check_bike(loaded, REFERENCE_BIKE, self.path)
 
     def test_another_csv_is_refused(self):
         self.path.write_text("name,score\nada,3\n")

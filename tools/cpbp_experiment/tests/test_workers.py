@@ -83,3 +83,21 @@ class RunBlocksTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class BikeTest(unittest.TestCase):
+    def test_a_bike_file_in_the_project_rides_by_its_res_path_and_name(self):
+        bike = runner.Bike.of_file(str(runner.PROJECT_ROOT / "scenes/bike/bikes/dirt_125.tres"))
+        self.assertEqual(bike, runner.Bike("dirt_125", "res://scenes/bike/bikes/dirt_125.tres"))
+        arguments = runner.block_arguments(Block(CONFIG, 0, 10), 1000, 1, bike.resource)
+        self.assertEqual(arguments[-1], "--bike=res://scenes/bike/bikes/dirt_125.tres")
+        self.assertFalse(any(a.startswith("--bike") for a in
+                             runner.block_arguments(Block(CONFIG, 0, 10), 1000, 1)),
+                         "the reference bike is the workers' own")
+
+    def test_a_missing_file_or_one_outside_the_project_is_refused(self):
+        with self.assertRaisesRegex(ValueError, "no such bike file"):
+            runner.Bike.of_file("scenes/bike/bikes/moped_50.tres")
+        with tempfile.NamedTemporaryFile(suffix=".tres") as outside:
+            with self.assertRaisesRegex(ValueError, "must lie in the project"):
+                runner.Bike.of_file(outside.name)
