@@ -8,6 +8,8 @@ var controller := "combined"
 var physics := "classic"
 ## The bike file ridden (a res:// path); empty: the reference bike.
 var bike := ""
+## The learned controllers' network (a res:// model file); empty: the bike's own.
+var model := ""
 var trajectories: Array[int] = [5]
 var base_seed := 1000
 var first := 0
@@ -45,6 +47,10 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 				if not ResourceLoader.exists(value, "BikeDescription"):
 					args._fail("--bike must name a bike file, not '%s'" % value)
 				args.bike = value
+			"model":
+				if not FileAccess.file_exists(value) or not value.ends_with(".safetensors"):
+					args._fail("--model must name a .safetensors model file, not '%s'" % value)
+				args.model = value
 			"trajectories":
 				args.trajectories.clear()
 				var limits := BikeSimulation.trajectory_limits()

@@ -8,7 +8,8 @@ extends Node
 ##
 ## Arguments (after `--`): --speed=KMH --controller=NAME (a name of the controller registry)
 ## --trajectories=N[,N...] --seed=BASE --first=I --count=K --threads=T [--timing --steps=S]
-## [--physics=classic|exact] [--bike=res://FILE] [--warm-up=CONTROLLER] [--platform]
+## [--physics=classic|exact] [--bike=res://FILE] [--model=res://FILE] [--warm-up=CONTROLLER]
+## [--platform]
 ## Attempt i uses bump seed BASE + i and a planner seed drawn from it, so every controller
 ## meets the same bumps at attempt i and a rerun of an attempt repeats it exactly.
 ## Before any attempt it prints one `PLATFORM {json}` line (NativeModule.platform()), what
@@ -66,6 +67,7 @@ func _build(args: ExperimentArgs) -> bool:
 			_bike.free()
 			return false
 		_bike.bike = description
+	_bike.policy_model = args.model
 	_bike.terrain_root = NodePath("../%s" % _level.name)
 	_bike.transform = _level.spawn_points()[0].spawn_transform()
 	_bike.controller = args.controller

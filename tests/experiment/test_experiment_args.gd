@@ -59,6 +59,19 @@ func test_a_bike_file_is_ridden_and_anything_else_refused() -> void:
 		)
 
 
+func test_another_bikes_network_can_be_ridden() -> void:
+	var street := "res://models/policy-street_390.safetensors"
+	var args := ExperimentArgs.parse(PackedStringArray(["--model=" + street]))
+	assert_eq(args.error, "")
+	assert_eq(args.model, street)
+	assert_eq(ExperimentArgs.parse(PackedStringArray()).model, "", "the bike's own")
+	for wrong: String in ["res://models/policy-moped_50.safetensors", "res://project.godot"]:
+		assert_has(
+			ExperimentArgs.parse(PackedStringArray(["--model=" + wrong])).error,
+			"--model must name a .safetensors model file"
+		)
+
+
 func test_bad_values_are_explained() -> void:
 	var cases := {
 		"--speed=fast": "--speed needs a number",

@@ -38,7 +38,7 @@ def main(argv: list[str] | None = None) -> int:
     args.chosen_configs = set(args.planned) if named else None
     out = Path(args.out)
     try:
-        args.bike = Bike.of_file(args.bike) if args.bike else Bike.reference()
+        args.bike = Bike.of_file(args.bike, args.model)
         if args.command in ("timing", "all") and (args.command == "timing" or
                                                   not (out / TIMING).exists()):
             timing(args, out)
@@ -125,6 +125,10 @@ def _parser() -> argparse.ArgumentParser:
                         help="a bike file in the project to ride (default: the reference "
                         "bike, scenes/bike/bikes/street_350.tres); keep its rows in an --out "
                         "of their own")
+    parser.add_argument("--model", default=None, metavar="FILE",
+                        help="the learned controllers' network, a model file in the project "
+                        "(default: the bike's own, models/policy-<bike>.safetensors): ride a "
+                        "bike with another bike's network")
     parser.add_argument("--allow-mixed", action="store_true",
                         help="append to results made on another platform (the report "
                         "notes the mix)")
@@ -163,7 +167,7 @@ def run(args: argparse.Namespace, out: Path) -> None:
     results = ResultsFile(out / RESULTS)
     saved = results.load()
     check_seed(saved, args.seed, results.path)
-    check_bike(saved, args.bike.name, results.path)
+    check_bike(saved, args.bike.label, results.path)
     store = PlatformStore(out / PLATFORMS)
     known = store.load()
     platform, description = current_platform(out, bike=args.bike)
@@ -232,7 +236,7 @@ def check_rows(args: argparse.Namespace, out: Path) -> int:
     chosen = choose(saved, args.rows, args.attempts, args.chosen_configs)
     if not chosen:
         raise ResultsError("no saved row matches the rows asked for")
-    check_bike(chosen, args.bike.name, out / RESULTS)
+    check_bike(chosen, args.bike.label, out / RESULTS)
     platform, description = current_platform(out, record=False, bike=args.bike)
     mix = refusal({a.platform for a in chosen}, description, PlatformStore(out / PLATFORMS)
                   .load(), out / RESULTS)
@@ -273,13 +277,13 @@ def compare_with(args: argparse.Namespace, out: Path) -> int:
 
 
 def timing(args: argparse.Namespace, out: Path) -> None:
-    print(f"experiment: timing the planners on {args.bike.name} on {cpu_description()} "
+    print(f"experiment: timing the planners on {args.bike.label} on {cpu_description()} "
           "(nothing else should run)",
           file=sys.stderr, flush=True)
     rows = []
     for kind in THESIS_PLANNERS:
         for row in measure_planning(kind, args.counts, args.steps, 15, args.seed,
-                                    out / WORKER_LOG, TIMING_PHYSICS, args.bike.resource):
+                                    out / WORKER_LOG, TIMING_PHYSICS, args.bike):
             rows.append(row)
     report.write_timing(rows, out / TIMING)
     (out / "machine.txt").write_text(f"{cpu_description()}, measured {date.today()}\n")

@@ -149,7 +149,7 @@ class ClusterRun:
                         if self.platform.description.get(key) != theirs.get(key)))
             return
         attempt = attempt_of(payload, block, self.platform.identity,
-                             self.platform.bike.name)
+                             self.platform.bike.label)
         if attempt.key in self.done:
             # A task ran again after its worker was lost: the row is saved already.
             self.repeated += 1
@@ -174,7 +174,7 @@ def run_blocks_on_cluster(blocks: list[Block], results: ResultsFile, progress: P
     run = ClusterRun(results, progress, platform, done,
                      {f"b{i}": block for i, block in enumerate(blocks)})
     # Higher priority runs first: the blocks in the order plan_blocks gave them.
-    bike = platform.bike.resource
+    bike = platform.bike
     futures = [client.submit(ride_block, block_arguments(block, base_seed, threads, bike),
                              block.count, queue_name, f"b{i}", key=f"{queue_name}-b{i}", pure=False,
                              priority=len(blocks) - i)

@@ -13,7 +13,7 @@ import subprocess
 import sys
 import threading
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from .configs import Config
@@ -135,9 +135,9 @@ def start_worker(arguments: list[str], log: Path,
         )
 
 
-def block_arguments(block: Block, base_seed: int, threads: int, bike: str = "") -> list[str]:
-    """A worker's arguments for `block`; `bike` is the ridden bike file's res:// path
-    (empty: the reference bike)."""
+def block_arguments(block: Block, base_seed: int, threads: int,
+                    bike: Bike | None = None) -> list[str]:
+    """A worker's arguments for `block`, riding `bike` (None: the reference)."""
     controller = block.config.controller
     return [
         f"--speed={block.config.speed_kmh}",
@@ -148,7 +148,7 @@ def block_arguments(block: Block, base_seed: int, threads: int, bike: str = "") 
         f"--count={block.count}",
         f"--threads={threads}",
         f"--physics={controller.physics}",
-    ] + ([f"--bike={bike}"] if bike else [])
+    ] + (bike.arguments() if bike else [])
 
 
 def worker_platform(log: Path) -> dict:
@@ -164,27 +164,55 @@ def worker_platform(log: Path) -> dict:
 
 @dataclass(frozen=True)
 class Bike:
-    """The bike a run rides: its name (the file's, as rows and tables give it) and the
-    res:// path a worker loads (empty for the reference bike, the workers' own)."""
+    """The bike a run rides: its name (the file's), the res:// path a worker loads (empty
+    for the reference bike, the workers' own) and the learned controllers' network when
+    it is not the bike's own (`--model`: how far another bike's network carries)."""
 
     name: str
     resource: str = ""
+    model: str = ""
 
     @staticmethod
     def reference() -> "Bike":
         return Bike(REFERENCE_BIKE)
 
     @staticmethod
-    def of_file(path: str) -> "Bike":
-        """The bike in file `path`, which must lie in the project (workers load it as a
-        res:// path); raises ValueError saying why not."""
-        file = Path(path).resolve()
-        if not file.is_file():
-            raise ValueError(f"--bike {path}: no such bike file")
-        if not file.is_relative_to(PROJECT_ROOT):
-            raise ValueError(f"--bike {path}: the file must lie in the project "
-                             f"({PROJECT_ROOT}), where the workers load it from")
-        return Bike(file.stem, "res://" + file.relative_to(PROJECT_ROOT).as_posix())
+    def of_file(path: str | None, model: str | None = None) -> "Bike":
+        """The bike in file `path` (None: the reference), its network the one in file
+        `model` (None: its own); both must lie in the project, where the workers load
+        them from as res:// paths. Raises ValueError saying what is wrong."""
+        bike = Bike(Path(path).stem, _resource("--bike", path, "bike file")) if path \
+            else Bike.reference()
+        if model:
+            bike = replace(bike, model=_resource("--model", model, "model file"))
+        return bike
+
+    @property
+    def label(self) -> str:
+        """What rows and reports call it: the name, with "+" and the network's bike when
+        the network is another's (pit_bike+street_390)."""
+        if not self.model:
+            return self.name
+        return f"{self.name}+{Path(self.model).stem.removeprefix(MODEL_PREFIX)}"
+
+    def arguments(self) -> list[str]:
+        """A worker's arguments for riding it."""
+        return ([f"--bike={self.resource}"] if self.resource else []) + \
+            ([f"--model={self.model}"] if self.model else [])
+
+
+# Model files are named policy-<bike>.safetensors (models/).
+MODEL_PREFIX = "policy-"
+
+
+def _resource(option: str, path: str, what: str) -> str:
+    file = Path(path).resolve()
+    if not file.is_file():
+        raise ValueError(f"{option} {path}: no such {what}")
+    if not file.is_relative_to(PROJECT_ROOT):
+        raise ValueError(f"{option} {path}: the file must lie in the project "
+                         f"({PROJECT_ROOT}), where the workers load it from")
+    return "res://" + file.relative_to(PROJECT_ROOT).as_posix()
 
 
 @dataclass(frozen=True)
@@ -236,7 +264,7 @@ def run_blocks(
             while pending and len(running) < jobs and failure is None:
                 block = pending.pop(0)
                 process = start_worker(
-                    block_arguments(block, base_seed, threads, platform.bike.resource), log)
+                    block_arguments(block, base_seed, threads, platform.bike), log)
                 running[next_id] = (process, block)
                 reported[next_id] = 0
                 heard[next_id] = time.monotonic()
@@ -268,7 +296,7 @@ def run_blocks(
                     f"a worker reported another platform than the run's: {text[9:].strip()}")
             elif text.startswith("TRY "):
                 reported[worker_id] += 1
-                attempt = attempt_of(text[4:], block, platform.identity, platform.bike.name)
+                attempt = attempt_of(text[4:], block, platform.identity, platform.bike.label)
                 results.append(attempt)
                 progress.record(attempt)
                 progress.report(attempt, force=not pending and len(running) == 1)
@@ -327,7 +355,7 @@ def log_tail(log: Path, lines: int = 8) -> str:
 
 
 def measure_planning(controller_kind: str, counts: list[int], steps: int, speed: int,
-                     seed: int, log: Path, physics: str, bike: str = "") -> list[dict]:
+                     seed: int, log: Path, physics: str, bike: Bike | None = None) -> list[dict]:
     """The planning-time study: one worker, every core for the planner, as in the game;
     `bike` as `block_arguments` takes it."""
     arguments = [
@@ -339,7 +367,7 @@ def measure_planning(controller_kind: str, counts: list[int], steps: int, speed:
         f"--speed={speed}",
         f"--seed={seed}",
         "--threads=0",
-    ] + ([f"--bike={bike}"] if bike else [])
+    ] + (bike.arguments() if bike else [])
     process = start_worker(arguments, log)
     rows = []
     for text in process.stdout:

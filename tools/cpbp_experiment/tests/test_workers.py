@@ -89,15 +89,28 @@ class BikeTest(unittest.TestCase):
     def test_a_bike_file_in_the_project_rides_by_its_res_path_and_name(self):
         bike = runner.Bike.of_file(str(runner.PROJECT_ROOT / "scenes/bike/bikes/dirt_125.tres"))
         self.assertEqual(bike, runner.Bike("dirt_125", "res://scenes/bike/bikes/dirt_125.tres"))
-        arguments = runner.block_arguments(Block(CONFIG, 0, 10), 1000, 1, bike.resource)
+        self.assertEqual(bike.label, "dirt_125")
+        arguments = runner.block_arguments(Block(CONFIG, 0, 10), 1000, 1, bike)
         self.assertEqual(arguments[-1], "--bike=res://scenes/bike/bikes/dirt_125.tres")
+        reference = runner.Bike.of_file(None)
+        self.assertEqual(reference.label, "street_350")
         self.assertFalse(any(a.startswith("--bike") for a in
-                             runner.block_arguments(Block(CONFIG, 0, 10), 1000, 1)),
+                             runner.block_arguments(Block(CONFIG, 0, 10), 1000, 1, reference)),
                          "the reference bike is the workers' own")
+
+    def test_another_bikes_network_is_passed_and_named_in_the_label(self):
+        root = runner.PROJECT_ROOT
+        bike = runner.Bike.of_file(str(root / "tests/fixtures/bikes/pit_bike.tres"),
+                                   str(root / "models/policy-street_390.safetensors"))
+        self.assertEqual(bike.label, "pit_bike+street_390")
+        self.assertEqual(bike.arguments(), ["--bike=res://tests/fixtures/bikes/pit_bike.tres",
+                                            "--model=res://models/policy-street_390.safetensors"])
 
     def test_a_missing_file_or_one_outside_the_project_is_refused(self):
         with self.assertRaisesRegex(ValueError, "no such bike file"):
             runner.Bike.of_file("scenes/bike/bikes/moped_50.tres")
+        with self.assertRaisesRegex(ValueError, "--model .*: no such model file"):
+            runner.Bike.of_file(None, "models/policy-moped_50.safetensors")
         with tempfile.NamedTemporaryFile(suffix=".tres") as outside:
             with self.assertRaisesRegex(ValueError, "must lie in the project"):
                 runner.Bike.of_file(outside.name)

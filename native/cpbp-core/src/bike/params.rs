@@ -68,8 +68,8 @@ pub struct BikeParams {
     /// the lean creeps past the tyres' grip; with 80 it holds 45° within 0.5°, with 100
     /// exactly (issue 68).
     pub max_steer_torque: f64,
-    /// The speed (m/s) the arcade controller's gains hold at; faster they shrink with the
-    /// square of the speed (`ArcadeGains::at_speed`); 0 keeps them at every speed, as on
+    /// The speed (m/s) the arcade controller's gains hold at; faster they shrink in
+    /// proportion to it (`ArcadeGains::at_speed`); 0 keeps them at every speed, as on
     /// the reference bike, whose thesis tuned them at 25 km/h.
     pub arcade_tuned_speed: f64,
     /// Coulomb friction coefficient of tyres on the ground.
