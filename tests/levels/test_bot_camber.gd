@@ -5,7 +5,6 @@ extends TestCase
 ## legs that reach the road, the bike stood about 9° downhill on its downhill foot and
 ## fell pulling away.
 
-const GAME := preload("res://scenes/game/game.tscn")
 const SKATE_PARK := "res://scenes/levels/skate_park/skate_park.tscn"
 ## The camber's centre line runs along x at z = 24; fully banked from x = -4 to 4.
 const LINE_Z := 24.0
@@ -41,27 +40,20 @@ func test_arcade_stops_on_the_camber_falling_right_and_rides_off() -> void:
 ## the road falling to the left; 1: back the other way, falling to the right), the brake
 ## in the middle of the bank, 3 s standing, and off again at 10 km/h.
 func _stop_and_ride_off(controller: String, direction: float) -> void:
-	Settings.set_value(&"controller", controller)
-	_game = GAME.instantiate()
-	_game.level_path = SKATE_PARK
-	add_child(_game)
-	# Before the first step: a ride that waits for every plan repeats exactly.
-	_game.bike.wait_for_every_plan = true
-	await wait_physics_frames(2)
+	# The skate park has no lap: the bot idles until it is given the camber's line.
+	var started: Array = await BotStart.start(self, SKATE_PARK, controller)
+	_game = started[0]
+	_bot = started[1]
 	var camber := _game.level.get_node(^"Camber") as BankPiece
 	assert_not_null(camber, "the skate park has its camber")
 	_game.bike.reset_to(_spawn(direction))
 	await wait_physics_frames(2)
-	_bot = BotRider.new()
-	_bot.bike = _game.bike
-	var path := Path3D.new()
-	path.curve = Curve3D.new()
-	path.curve.add_point(Vector3(-24.0 * direction, 0, LINE_Z))
-	path.curve.add_point(Vector3(24.0 * direction, 0, LINE_Z))
+	var path := BotStart.straight(
+		Vector3(-24.0 * direction, 0, LINE_Z), Vector3(24.0 * direction, 0, LINE_Z)
+	)
 	add_child(path)
 	_bot.path = path
 	_bot.speed_kmh = 10.0
-	add_child(_bot)
 	while _game.bike.get_center_of_mass().x * direction < -BRAKE_X:
 		await wait_physics_frames(1)
 		if _game.bike.is_crashed() or _game.level.elapsed > 20.0:
