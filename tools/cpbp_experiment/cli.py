@@ -11,13 +11,14 @@ from pathlib import Path
 from . import report
 from .document import PLATFORMS, RESULTS, TIMING, write_report
 from .compare import compare
+from .bikes import Bike
 from .configs import (THESIS_CONTROLLERS, THESIS_PLANNERS, THESIS_SPEEDS, TIMING_COUNTS, Config,
                       display_order, parse_attempts, parse_controllers, parse_counts,
                       parse_speeds, protocol_tries)
 from .fingerprint import FingerprintError, PlatformStore, fingerprint, identity, refusal
 from .results import Attempt, ResultsError, ResultsFile, check_bike, check_seed
 from .progress import Progress
-from .runner import (PROJECT_ROOT, Bike, Platform, WorkerError, cpu_description,
+from .runner import (PROJECT_ROOT, Platform, WorkerError, cpu_description,
                      measure_planning, plan_blocks, run_blocks, worker_platform)
 from .verify import choose, parse_rows, verify
 
@@ -38,7 +39,7 @@ def main(argv: list[str] | None = None) -> int:
     args.chosen_configs = set(args.planned) if named else None
     out = Path(args.out)
     try:
-        args.bike = Bike.of_file(args.bike, args.model)
+        args.bike = Bike.of_file(PROJECT_ROOT, args.bike, args.model)
         if args.command in ("timing", "all") and (args.command == "timing" or
                                                   not (out / TIMING).exists()):
             timing(args, out)

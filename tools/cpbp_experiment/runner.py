@@ -13,9 +13,10 @@ import subprocess
 import sys
 import threading
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 
+from .bikes import Bike
 from .configs import Config
 from .progress import Progress
 from .results import REFERENCE_BIKE, Attempt, ResultsFile
@@ -160,59 +161,6 @@ def worker_platform(log: Path) -> dict:
             return json.loads(text[9:])
     raise WorkerError(f"a worker did not describe its platform (exit code "
                       f"{process.returncode}); see {log}:\n{log_tail(log)}")
-
-
-@dataclass(frozen=True)
-class Bike:
-    """The bike a run rides: its name (the file's), the res:// path a worker loads (empty
-    for the reference bike, the workers' own) and the learned controllers' network when
-    it is not the bike's own (`--model`: how far another bike's network carries)."""
-
-    name: str
-    resource: str = ""
-    model: str = ""
-
-    @staticmethod
-    def reference() -> "Bike":
-        return Bike(REFERENCE_BIKE)
-
-    @staticmethod
-    def of_file(path: str | None, model: str | None = None) -> "Bike":
-        """The bike in file `path` (None: the reference), its network the one in file
-        `model` (None: its own); both must lie in the project, where the workers load
-        them from as res:// paths. Raises ValueError saying what is wrong."""
-        bike = Bike(Path(path).stem, _resource("--bike", path, "bike file")) if path \
-            else Bike.reference()
-        if model:
-            bike = replace(bike, model=_resource("--model", model, "model file"))
-        return bike
-
-    @property
-    def label(self) -> str:
-        """What rows and reports call it: the name, with "+" and the network's bike when
-        the network is another's (pit_bike+street_390)."""
-        if not self.model:
-            return self.name
-        return f"{self.name}+{Path(self.model).stem.removeprefix(MODEL_PREFIX)}"
-
-    def arguments(self) -> list[str]:
-        """A worker's arguments for riding it."""
-        return ([f"--bike={self.resource}"] if self.resource else []) + \
-            ([f"--model={self.model}"] if self.model else [])
-
-
-# Model files are named policy-<bike>.safetensors (models/).
-MODEL_PREFIX = "policy-"
-
-
-def _resource(option: str, path: str, what: str) -> str:
-    file = Path(path).resolve()
-    if not file.is_file():
-        raise ValueError(f"{option} {path}: no such {what}")
-    if not file.is_relative_to(PROJECT_ROOT):
-        raise ValueError(f"{option} {path}: the file must lie in the project "
-                         f"({PROJECT_ROOT}), where the workers load it from")
-    return "res://" + file.relative_to(PROJECT_ROOT).as_posix()
 
 
 @dataclass(frozen=True)

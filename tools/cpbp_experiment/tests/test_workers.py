@@ -6,6 +6,7 @@ from pathlib import Path
 from unittest import mock
 
 from cpbp_experiment import runner
+from cpbp_experiment.bikes import Bike
 from cpbp_experiment.configs import Config, Controller
 from cpbp_experiment.results import ResultsFile
 from cpbp_experiment.progress import Progress
@@ -14,6 +15,7 @@ from cpbp_experiment.runner import Block, Platform, WorkerError, run_blocks
 CONFIG = Config(15, Controller("combined", 5))
 WORKER_PLATFORM = {"c_library": "glibc 2.43", "math_path": "fma"}
 PLATFORM = Platform("abc123", WORKER_PLATFORM)
+ROOT = runner.PROJECT_ROOT
 
 
 def fake_worker(script: str):
@@ -87,30 +89,29 @@ if __name__ == "__main__":
 
 class BikeTest(unittest.TestCase):
     def test_a_bike_file_in_the_project_rides_by_its_res_path_and_name(self):
-        bike = runner.Bike.of_file(str(runner.PROJECT_ROOT / "scenes/bike/bikes/dirt_125.tres"))
-        self.assertEqual(bike, runner.Bike("dirt_125", "res://scenes/bike/bikes/dirt_125.tres"))
+        bike = Bike.of_file(ROOT, str(ROOT / "scenes/bike/bikes/dirt_125.tres"))
+        self.assertEqual(bike, Bike("dirt_125", "res://scenes/bike/bikes/dirt_125.tres"))
         self.assertEqual(bike.label, "dirt_125")
         arguments = runner.block_arguments(Block(CONFIG, 0, 10), 1000, 1, bike)
         self.assertEqual(arguments[-1], "--bike=res://scenes/bike/bikes/dirt_125.tres")
-        reference = runner.Bike.of_file(None)
+        reference = Bike.of_file(ROOT, None)
         self.assertEqual(reference.label, "street_350")
         self.assertFalse(any(a.startswith("--bike") for a in
                              runner.block_arguments(Block(CONFIG, 0, 10), 1000, 1, reference)),
                          "the reference bike is the workers' own")
 
     def test_another_bikes_network_is_passed_and_named_in_the_label(self):
-        root = runner.PROJECT_ROOT
-        bike = runner.Bike.of_file(str(root / "tests/fixtures/bikes/pit_bike.tres"),
-                                   str(root / "models/policy-street_390.safetensors"))
+        bike = Bike.of_file(ROOT, str(ROOT / "tests/fixtures/bikes/pit_bike.tres"),
+                                   str(ROOT / "models/policy-street_390.safetensors"))
         self.assertEqual(bike.label, "pit_bike+street_390")
         self.assertEqual(bike.arguments(), ["--bike=res://tests/fixtures/bikes/pit_bike.tres",
                                             "--model=res://models/policy-street_390.safetensors"])
 
     def test_a_missing_file_or_one_outside_the_project_is_refused(self):
         with self.assertRaisesRegex(ValueError, "no such bike file"):
-            runner.Bike.of_file("scenes/bike/bikes/moped_50.tres")
+            Bike.of_file(ROOT, "scenes/bike/bikes/moped_50.tres")
         with self.assertRaisesRegex(ValueError, "--model .*: no such model file"):
-            runner.Bike.of_file(None, "models/policy-moped_50.safetensors")
+            Bike.of_file(ROOT, None, "models/policy-moped_50.safetensors")
         with tempfile.NamedTemporaryFile(suffix=".tres") as outside:
             with self.assertRaisesRegex(ValueError, "must lie in the project"):
-                runner.Bike.of_file(outside.name)
+                Bike.of_file(ROOT, outside.name)
