@@ -72,6 +72,13 @@ static func platform() -> Dictionary:
 	return description
 
 
+## True when the game was started with `--native-info` (smoke tests, bug reports): the start
+## menu prints `describe()` and `platform()` and quits, and nothing else is built (a level
+## built only to be torn down makes the release template report spurious signal errors).
+static func info_requested() -> bool:
+	return OS.get_cmdline_user_args().has("--native-info")
+
+
 ## One line for title screens and bug reports.
 static func describe() -> String:
 	if not is_loaded():

@@ -27,16 +27,18 @@ var _bike_settle_frames_left := 0
 
 
 func _ready() -> void:
+	# In the tree from the start, so it is freed with the menu even when left empty.
+	add_child(_viewport)
 	# Without the native module a level cannot even load (its scripts name the module's
-	# classes): the start menu says what is missing over an empty backdrop.
-	if not NativeModule.is_loaded():
+	# classes): the start menu says what is missing over an empty backdrop. Asked only for
+	# the module's description, the menu quits at once and needs no level.
+	if not NativeModule.is_loaded() or NativeModule.info_requested():
 		return
 	stretch = true
 	# After the bike's own step, so it stands BIKE_SETTLE_FRAMES steps before it stops.
 	process_physics_priority = 1
 	_viewport.own_world_3d = true
 	_viewport.render_target_update_mode = SubViewport.UPDATE_ONCE
-	add_child(_viewport)
 	var environment := WorldEnvironment.new()
 	environment.environment = ENVIRONMENT
 	_viewport.add_child(environment)

@@ -56,7 +56,7 @@ func _ready() -> void:
 
 ## Shows which bike is ridden: `text` names it and its main figures.
 func show_bike(text: String) -> void:
-	%Bike.text = text
+	%BikeSummary.text = text
 
 
 ## The menu's control of setting `key` (null if it has none).

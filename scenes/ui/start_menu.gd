@@ -24,7 +24,7 @@ const GAME := "res://scenes/game/game.tscn"
 
 
 func _ready() -> void:
-	if OS.get_cmdline_user_args().has("--native-info"):
+	if NativeModule.info_requested():
 		_print_native_info_and_quit()
 		return
 	_version_label.text = NativeModule.describe()

@@ -81,7 +81,7 @@ func test_the_game_rides_the_chosen_bike_names_it_and_keeps_its_records_apart() 
 	assert_eq(game.bike_key, "sport_600")
 	assert_eq(game.bike.bike.name, "Sport 600")
 	assert_has((game.get_node("Hud/%Status") as Label).text, "Sport 600", "the HUD names it")
-	assert_has((game.get_node("PauseMenu/%Bike") as Label).text, "Sport 600 ")
+	assert_has((game.get_node("PauseMenu/%BikeSummary") as Label).text, "Sport 600 ")
 	var track := game.level as Track
 	assert_eq(track.record_key, "track@sport_600")
 	assert_eq(Settings.ghost_path(track.record_key).get_file(), "track@sport_600.ghost")

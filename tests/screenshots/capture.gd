@@ -123,14 +123,16 @@ func _pace(began_usec: int) -> int:
 	return Time.get_ticks_usec()
 
 
-## Calls `node:method:argument` on the node of that name under `root`.
+## Calls `node:method:argument` on the node of that name under `root` that has the method
+## (a menu's label may share a name with the node meant, as the pause menu's did the bike's).
 func _call(root: Node, spec: String) -> void:
 	var parts := spec.split(":", true, 2)
-	var target := root.find_child(parts[0], true, false) if parts.size() == 3 else null
-	if target == null or not target.has_method(parts[1]):
-		push_error("--call=%s: no such node and method under the scene" % spec)
-		return
-	target.call(parts[1], parts[2])
+	var named := root.find_children(parts[0], "", true, false) if parts.size() == 3 else []
+	for target: Node in named:
+		if target.has_method(parts[1]):
+			target.call(parts[1], parts[2])
+			return
+	push_error("--call=%s: no such node and method under the scene" % spec)
 
 
 ## Presses `spec`'s action (`action[:strength][@from-to]`) at its first frame and lets go
