@@ -15,11 +15,15 @@ use crate::{median, rolling_bike, time_per_call};
 /// The planning horizon in control steps (1.2 s).
 const HORIZON: usize = 36;
 
+/// The deep bend's speed (km/h): where the street bike leans to its 45° (issue 68).
+const BEND_KMH: f64 = 60.0;
+
 /// Candidate rollout physics against the master's in `model`: the cost of one planning
 /// step (averaged over the horizon) and how far the master's controls replayed open loop
 /// drift from its ride after 0.5 s and 1.2 s (worst lean error and centre-of-mass
-/// distance over replays started every 1/3 s), on flat ground (straight, then a 15° turn) and over the bump field, with
-/// the arcade controller at 15 km/h.
+/// distance over replays started every 1/3 s), with the arcade controller: at 15 km/h on
+/// flat ground (straight, then a 15° turn) and over the bump field, and in a deep bend
+/// (up to 60 km/h, then the bike's deepest lean, the turn-in among the replays).
 pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
     let flat = rolling_bike(Arc::new(Terrain::flat()), model);
     let master = RolloutPhysics::of(&flat);
@@ -31,8 +35,15 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
         master.stepping
     );
     println!(
-        "{:<40} {:>10} {:>28} {:>28}",
-        "physics", "cost", "flat: @0.5 s, @1.2 s", "bumps: @0.5 s, @1.2 s"
+        "{:<40} {:>10} {:>28} {:>28} {:>28}",
+        "physics",
+        "cost",
+        "flat: @0.5 s, @1.2 s",
+        "bumps: @0.5 s, @1.2 s",
+        format!(
+            "bend {BEND_KMH} km/h {:.0}°: @0.5 s, @1.2 s",
+            flat.config().bike.max_lean.to_degrees()
+        )
     );
     let record = |sim: Simulation, turn: bool| {
         let mut ride = Ride::new(sim, ControllerKind::ARCADE);
@@ -52,9 +63,24 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
         recording.extend(Recording::ride(&mut ride, 120));
         (ride, recording)
     };
+    let deep_bend = |sim: Simulation| {
+        let mut ride = Ride::new(sim, ControllerKind::ARCADE);
+        ride.set_intent(Intent::cruise(BEND_KMH));
+        // Up to speed (about 7 s from 15 km/h), then the 6 s bend recorded.
+        (0..270).for_each(|_| {
+            ride.step();
+        });
+        ride.set_intent(Intent {
+            lean: Some(ride.sim().config().bike.max_lean),
+            ..Intent::cruise(BEND_KMH)
+        });
+        let recording = Recording::ride(&mut ride, 180);
+        (ride, recording)
+    };
     let rides = [
         record(flat.replica(), true),
         record(rolling_bike(bumps.clone(), model), false),
+        deep_bend(flat.replica()),
     ];
     // One planning step on average over the horizon (lead steps included).
     let cost = |physics: RolloutPhysics| {
@@ -81,6 +107,11 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
         lead_steps,
         lead_substeps: 2,
     };
+    let finer_lead = |substeps| RolloutStepping {
+        substeps,
+        lead_steps: 12,
+        lead_substeps: 4,
+    };
     let candidates: Vec<(Solver, RolloutStepping)> = match model {
         PhysicsModel::Classic => vec![
             uniform(Solver::QuickStep, 4),
@@ -97,6 +128,9 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
             (Solver::Direct, lead(12)),
             (Solver::Direct, lead(6)),
             uniform(Solver::Direct, 1),
+            // Finer lead steps, for the deep bend.
+            (Solver::Direct, finer_lead(1)),
+            (Solver::Direct, finer_lead(2)),
         ],
     };
     for (solver, stepping) in candidates {
@@ -125,8 +159,8 @@ pub fn rollout_fidelity(model: PhysicsModel, bumps: &Arc<Terrain>) {
         let label = format!("{solver:?}, {stepping}{chosen}");
         let ratio = cost(physics) / reference;
         println!(
-            "{label:<40} {ratio:>9.2}x {:>22} {:>22}",
-            drift[0], drift[1]
+            "{label:<40} {ratio:>9.2}x {:>28} {:>28} {:>28}",
+            drift[0], drift[1], drift[2]
         );
     }
 }

@@ -3,7 +3,8 @@
 //! `cpbp-bench planning` prints only the game physics' planning table, for comparing two
 //! builds run alternately; `cpbp-bench learned` only the learned controller's cost;
 //! `cpbp-bench auto-n` only the automatic N under load; `cpbp-bench planners` only the
-//! planners side by side, with their diagnostics.
+//! planners side by side, with their diagnostics; `cpbp-bench fidelity` only the rollout
+//! fidelity tables.
 //! `--bike FILE` (`make bench BIKE=FILE`) measures another bike than the reference.
 
 mod auto_n;
@@ -78,6 +79,11 @@ fn main() {
         }
         Some("auto-n") => return auto_n::under_load(),
         Some("planners") => return planners_side_by_side(),
+        Some("fidelity") => {
+            return PhysicsModel::ALL
+                .into_iter()
+                .for_each(|model| fidelity::rollout_fidelity(model, &bump_field()))
+        }
         _ => {}
     }
     println!("{:<58} {:>14}", "figure", "value");
