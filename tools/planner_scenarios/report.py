@@ -45,6 +45,12 @@ BRAKE_MEASURES = (("distance_m", "distance (m)"), ("peak_g", "peak 0.1 s (g)"),
                   ("rear_lift_mm", "rear tyre up (mm)"),
                   ("foot_lift_mm", "rear up as a foot comes down (mm)"),
                   ("rear_on_road", "steps the rear touched"))
+# What a deep bend and a stop across a slope report beside their metric: the lean held and
+# the radius ridden (against eq. 4.3's for that lean), and the lean the bike stood at.
+BEND_MEASURES = (("lean_deg", "lean held (°)"), ("radius_m", "radius ridden (m)"),
+                 ("radius_eq43_m", "eq. 4.3's radius at that lean (m)"))
+CAMBER_MEASURES = (("stood_downhill_deg", "stood, leaning downhill (°)"),
+                   ("on_a_foot", "on a foot"))
 ORDER = ("combined", "guided", "optimizer", "sampling", "mppi", "learned", "arcade")
 REFERENCE = "combined"
 
@@ -80,27 +86,40 @@ def scenario_table(rows: list[dict], scenario: str) -> str:
 
 
 def measures_table(rows: list[dict], scenario: str) -> str:
-    """What the full brakes measured beside their metric: means over the rides that
-    stayed up, and the worst ride's (for the rear: the most it rose and the least it
-    touched)."""
+    """What a scenario measured beside its metric, over the rides that stayed up: for the
+    full brakes the mean and the worst ride's (for the rear: the most it rose and the
+    least it touched), for the deep bends and the stops across slopes the mean and the
+    range."""
     groups: dict[tuple[str, int], list[dict]] = defaultdict(list)
     for row in rows:
         if row["scenario"] == scenario and not row["fell"] and row["extra"]:
             groups[(row["controller"], row["trajectories"])].append(row)
     if not groups:
         return ""
+    names = {name for group in groups.values() for r in group for name in r["extra"]}
+    measures = next((m for m in (BRAKE_MEASURES, BEND_MEASURES, CAMBER_MEASURES)
+                     if names & {name for name, _ in m}), None)
+    if measures is None:
+        return ""
     worst = {"distance_m": max, "peak_g": max, "least_step_g": min, "pitch_deg": max,
              "rear_lift_mm": max, "foot_lift_mm": max, "rear_on_road": min}
-    lines = [f"*{scenario}, beside the metric: mean (worst ride)*", "",
-             "| planner | N | " + " | ".join(title for _, title in BRAKE_MEASURES) + " |",
-             "|---|---|" + "---|" * len(BRAKE_MEASURES)]
+    braking = measures is BRAKE_MEASURES
+    spread = "mean (worst ride)" if braking else "mean (least to most)"
+    lines = [f"*{scenario}, beside the metric: {spread}*", "",
+             "| planner | N | " + " | ".join(title for _, title in measures) + " |",
+             "|---|---|" + "---|" * len(measures)]
     for (controller, n) in sorted(groups, key=lambda k: (k[1], _order(k[0]))):
         mine = groups[(controller, n)]
         cells = []
-        for name, _ in BRAKE_MEASURES:
+        for name, _ in measures:
             values = [r["extra"][name] for r in mine if name in r["extra"]]
-            cells.append(f"{sum(values) / len(values):.2f} ({worst[name](values):.2f})"
-                         if values else "–")
+            mean = sum(values) / len(values) if values else 0.0
+            if not values:
+                cells.append("–")
+            elif braking:
+                cells.append(f"{mean:.2f} ({worst[name](values):.2f})")
+            else:
+                cells.append(f"{mean:.2f} ({min(values):.2f} to {max(values):.2f})")
         lines.append(f"| {controller} | {n} | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 

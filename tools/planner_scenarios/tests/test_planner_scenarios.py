@@ -81,6 +81,22 @@ class MeasuresTest(unittest.TestCase):
         self.assertIn("0.95 (0.90)", table, "the least the rear touched is the worst")
         self.assertEqual(report.measures_table(rows, "turn"), "")
 
+    def test_a_bend_gives_the_lean_and_radii_with_their_range(self):
+        rows = [parse(line("bend45-h22", "arcade", 0, s, False, 0.1)
+                      + f",lean_deg={lean};radius_m={r};radius_eq43_m=24.5")
+                for s, (lean, r) in enumerate([(44.0, 28.0), (46.0, 29.0)])]
+        rows.append(parse(line("bend45-h22", "optimizer", 10, 0, True, 9.0)
+                          + ",lean_deg=70;radius_m=5;radius_eq43_m=3"))
+        table = report.measures_table(rows, "bend45-h22")
+        self.assertIn("mean (least to most)", table)
+        self.assertIn("| arcade | 0 | 45.00 (44.00 to 46.00) | 28.50 (28.00 to 29.00) | "
+                      "24.50 (24.50 to 24.50) |", table)
+        self.assertNotIn("optimizer", table, "a ride that fell measures nothing")
+        camber = [parse(line("camber8-left", "combined", 5, 0, False, 6.3)
+                        + ",stood_downhill_deg=2.9;on_a_foot=1")]
+        self.assertIn("| combined | 5 | 2.90 (2.90 to 2.90) | 1.00 (1.00 to 1.00) |",
+                      report.measures_table(camber, "camber8-left"))
+
 
 class ReportTest(unittest.TestCase):
     def test_the_table_pairs_each_planner_with_combined_at_its_n(self):
