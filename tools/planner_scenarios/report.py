@@ -39,6 +39,9 @@ METRICS = {
     "lowside-wet": "the deepest lean asked at 60 km/h on a wet road (μ 0.5): 1 if it fell "
                    "in a low-side",
 }
+# Scenarios whose metric is about the fall itself (what kind it was): averaged over every
+# ride, not only those that stayed up.
+FALL_METRICS = ("lowside-wet",)
 # What a full brake reports beside its metric (the rows' `extra`), with its heading.
 BRAKE_MEASURES = (("distance_m", "distance (m)"), ("peak_g", "peak 0.1 s (g)"),
                   ("least_step_g", "least step (g)"), ("pitch_deg", "nose down (°)"),
@@ -73,14 +76,16 @@ def scenario_table(rows: list[dict], scenario: str) -> str:
     ]
     for (controller, n) in sorted(groups, key=lambda k: (k[1], _order(k[0]))):
         mine = groups[(controller, n)]
-        up = {r["seed"]: r["metric"] for r in mine if not r["fell"]}
+        counted = (lambda r: True) if scenario in FALL_METRICS else (lambda r: not r["fell"])
+        up = {r["seed"]: r["metric"] for r in mine if counted(r)}
         reference = {r["seed"]: r["metric"] for r in groups.get((REFERENCE, n), [])
-                     if not r["fell"]}
+                     if counted(r)}
         difference = ("–" if controller == REFERENCE
                       else paired_difference(up, reference).text(2))
         planning = sum(r["planning_ms"] for r in mine) / len(mine)
+        every = ", every ride" if scenario in FALL_METRICS else ""
         lines.append(f"| {controller} | {n} | {len(mine)} | {sum(r['fell'] for r in mine)} | "
-                     f"{t_interval(list(up.values())).text(2)} | {difference} | "
+                     f"{t_interval(list(up.values())).text(2)}{every} | {difference} | "
                      f"{planning:.1f} ms |")
     return "\n".join(lines)
 
@@ -177,8 +182,10 @@ def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
         counts = sorted({r["trajectories"] for r in mine})
         for k, controller in enumerate(controllers):
             ns = sorted({r["trajectories"] for r in mine if r["controller"] == controller})
+            counted = scenario in FALL_METRICS
             intervals = [t_interval([r["metric"] for r in mine if r["controller"] == controller
-                                     and r["trajectories"] == n and not r["fell"]]) for n in ns]
+                                     and r["trajectories"] == n and (counted or not r["fell"])])
+                         for n in ns]
             colour, marker = styles.get(controller, ("tab:gray", "x"))
             spread = 0.08 * (k - (len(controllers) - 1) / 2)
             legend[controller] = ax.errorbar(

@@ -110,6 +110,13 @@ class ReportTest(unittest.TestCase):
         self.assertIn("| sampling | 5 | 3 | 1 | 11.00 (-1.71 to 23.71) | 6.00 (6.00 to 6.00) |",
                       table)
 
+    def test_a_low_side_is_counted_over_the_rides_that_fell(self):
+        rows = [parse(line("lowside-wet", "arcade", 0, s, True, m))
+                for s, m in enumerate([1.0, 1.0, 0.0])]
+        table = report.scenario_table(rows, "lowside-wet")
+        self.assertIn("| arcade | 0 | 3 | 3 | 0.67 (", table)
+        self.assertIn(", every ride |", table)
+
     def test_the_report_and_chart_are_written(self):
         rows = [parse(line(sc, c, n, s, False, 1.0 + s + n))
                 for sc in ("turn", "walk") for c in ("combined", "mppi") for n in (5, 10)
