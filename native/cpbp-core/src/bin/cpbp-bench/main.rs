@@ -108,6 +108,10 @@ fn main() {
         "bike + rider: one ODE step, trimesh bump field (2 048 tris)",
         format!("{:.2} µs", median(|| bike_step_cost(&bumps))),
     );
+    row(
+        "friction along the wheel ÷ world axes, one ODE step (paired)",
+        format!("{:.3}", friction_direction_cost()),
+    );
     let (snapshot, restore) = snapshot_costs(&flat);
     row("snapshot of the bike world", format!("{snapshot:.2} µs"));
     row("restore of the bike world", format!("{restore:.2} µs"));
@@ -262,13 +266,18 @@ fn bump_field() -> Arc<Terrain> {
 /// A simulation in `physics` whose bike is riding at 15 km/h with the rider holding the
 /// pose.
 fn rolling_bike(terrain: Arc<Terrain>, physics: PhysicsModel) -> Simulation {
+    rolling(terrain, physics, BIKE.get().cloned().unwrap_or_default())
+}
+
+/// `bike` rolling at 15 km/h, a second after it set off.
+fn rolling(terrain: Arc<Terrain>, physics: PhysicsModel, bike: BikeParams) -> Simulation {
     let spawn = Placement {
         position: DVec3::new(-25.0, 0.1, 0.0),
         rotation: DQuat::IDENTITY,
     };
     let config = SimulationConfig {
         physics,
-        bike: BIKE.get().cloned().unwrap_or_default(),
+        bike,
         ..SimulationConfig::default()
     };
     let mut sim = Simulation::new(config, terrain, spawn);
@@ -285,6 +294,21 @@ fn rolling_bike(terrain: Arc<Terrain>, physics: PhysicsModel) -> Simulation {
         sim.step();
     }
     sim
+}
+
+/// What friction along the wheel costs (issue 68): one ODE step of the bike in the game's
+/// physics with its tyres' friction following the wheel, over one with ODE's world axes;
+/// the two timed alternately, the median of the paired ratios.
+fn friction_direction_cost() -> f64 {
+    let bike = BIKE.get().cloned().unwrap_or_default();
+    let [along, axes] = [true, false].map(|follows| {
+        let bike = BikeParams {
+            tyre_friction_follows_wheel: follows,
+            ..bike.clone()
+        };
+        rolling(Arc::new(Terrain::flat()), PhysicsModel::default(), bike)
+    });
+    median(|| bike_step_cost(&along) / bike_step_cost(&axes))
 }
 
 fn bike_step_cost(sim: &Simulation) -> f64 {
