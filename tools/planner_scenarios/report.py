@@ -4,6 +4,7 @@ and 95 % interval over the rides that stayed up, and its paired difference from 
 
 from __future__ import annotations
 
+import textwrap
 from collections import defaultdict
 from pathlib import Path
 
@@ -195,7 +196,9 @@ def chart(rows: list[dict], scenarios: list[str], path: Path) -> None:
         ax.set_xticks(range(len(counts)), ["alone" if n == 0 else str(n) for n in counts])
         ax.set_xlim(-0.6, len(counts) - 0.4)
         ax.set_xlabel("trajectories N")
-        ax.set_title(METRICS[scenario], fontsize=8.5, wrap=True)
+        # Wrapped by hand: matplotlib wraps a title only at the figure's edge, so long
+        # ones ran into their neighbours' panels.
+        ax.set_title(textwrap.fill(METRICS[scenario], 48), fontsize=8.5)
         ax.grid(alpha=0.3)
     ordered = sorted(legend, key=_order)
     axes[0][0].legend([legend[c] for c in ordered], ordered, fontsize=8)
