@@ -5,49 +5,34 @@
 //! a bike file (the reference bike without it); FIELD=VALUE sets one of its fields
 //! (`front_brake/tipping_share=0.95`) to try a change.
 
+#[path = "common/bike_args.rs"]
+mod bike_args;
+
 use std::sync::Arc;
 
-use cpbp_core::bike::{field, take_bike_argument, Placement};
+use cpbp_core::bike::Placement;
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
-use cpbp_core::simulation::{Simulation, SimulationConfig};
+use cpbp_core::simulation::Simulation;
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
 
+use bike_args::{bike_config, take_flag};
+
+const TOOL: &str = "brake_curve";
+
+fn fail(why: &str) -> ! {
+    bike_args::fail(TOOL, why)
+}
+
 fn main() {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
-    let mut config = SimulationConfig::default();
-    match take_bike_argument(&mut args) {
-        Ok(Some(bike)) => config.bike = bike.params,
-        Ok(None) => {}
-        Err(why) => fail(&why),
-    }
-    let heading = match args.iter().position(|a| a == "--heading") {
-        Some(at) if at + 1 < args.len() => {
-            let degrees = args.remove(at + 1);
-            args.remove(at);
-            degrees
-                .parse::<f64>()
-                .unwrap_or_else(|_| fail(&format!("--heading {degrees}: not degrees")))
-        }
-        Some(_) => fail("--heading needs degrees"),
-        None => 0.0,
-    };
-    let (settings, args): (Vec<String>, Vec<String>) =
-        args.into_iter().partition(|a| a.contains('='));
-    for setting in &settings {
-        let (name, value) = setting.split_once('=').expect("partitioned on '='");
-        let Some(field) = field(name) else {
-            fail(&format!("{name}: no bike field is called so"));
-        };
-        let value = value
-            .parse()
-            .unwrap_or_else(|_| fail(&format!("{setting}: not a number")));
-        field
-            .apply(&mut config.bike, value)
-            .unwrap_or_else(|why| fail(&why));
-    }
-    config.bike.check().unwrap_or_else(|why| fail(&why));
+    let config = bike_config(&mut args, TOOL);
+    let heading = take_flag(&mut args, "--heading", TOOL).map_or(0.0, |degrees| {
+        degrees
+            .parse::<f64>()
+            .unwrap_or_else(|_| fail(&format!("--heading {degrees}: not degrees")))
+    });
     let kmh: f64 = args.first().and_then(|a| a.parse().ok()).unwrap_or(60.0);
     let kind = match args.get(1) {
         Some(name) => ControllerKind::from_name(name)
@@ -108,9 +93,4 @@ fn main() {
             break;
         }
     }
-}
-
-fn fail(why: &str) -> ! {
-    eprintln!("brake_curve: {why}");
-    std::process::exit(2);
 }

@@ -84,6 +84,13 @@ pub struct BikeParams {
     /// in the mid-plane, still holds long circles (it overshoots deeper leans and falls:
     /// 45° within seconds, 35° at 20 km/h).
     pub max_lean: f64,
+    /// Whether the planners cost the frame's roll against the lean asked, as arcade, the
+    /// HUD and `max_lean` measure a lean, instead of eq. 4.7's lean of the centre of mass
+    /// over the support point. A round tyre touches the road inside the wheel's plane, so
+    /// the centre of mass leans less than the frame: on the street bike 45° of frame roll
+    /// is about 41° of it, and asked eq. 4.7's 45° a planner asks the tyres for μ = 1.00
+    /// where the frame's 45° asks 0.87. Off, the reference plans as the thesis did.
+    pub planners_cost_frame_roll: bool,
     /// The drive and brake at the rear wheel (`RearWheelDrive`): the engine's torque and
     /// power, the rear brake's torque.
     pub rear_drive: RearWheelDrive,
@@ -122,6 +129,7 @@ impl Default for BikeParams {
             tyre_friction: 1.0,
             tyre_friction_follows_wheel: false,
             max_lean: 30f64.to_radians(),
+            planners_cost_frame_roll: false,
             rear_drive: RearWheelDrive::default(),
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),

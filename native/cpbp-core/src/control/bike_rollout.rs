@@ -2,7 +2,8 @@
 //! world built like the master's; a planning step applies a control vector for one
 //! control period and costs the squared lean error of eq. 4.7, plus the rider-position
 //! error when the player holds the rider's weight somewhere. In a wheelie the lean is
-//! measured against the lifted support point, so the balance point costs nothing.
+//! measured against the lifted support point, so the balance point costs nothing. A bike
+//! with `planners_cost_frame_roll` has its frame's roll costed instead.
 
 use std::sync::Arc;
 
@@ -10,7 +11,9 @@ use glam::DVec3;
 
 use super::arcade::ArcadeController;
 use super::cpbp::{Priors, RolloutSystem};
-use super::lean::{current_lean_vector, desired_lean_vector, lean_cost, roll_lean_cost};
+use super::lean::{
+    current_lean_vector, desired_lean_vector, frame_roll_cost, lean_cost, roll_lean_cost,
+};
 use super::learned::PolicyNetwork;
 use super::Goal;
 use crate::bike::{
@@ -119,19 +122,25 @@ impl RolloutSystem for BikeRollout {
                 &mut watch,
             )
             .ok()?;
-        let heading = self.bike.heading(&self.world, self.up);
-        let desired = desired_lean_vector(heading, self.up, self.goal.lean);
-        let current = current_lean_vector(
-            self.bike.center_of_mass(&self.world),
-            self.bike
-                .support_point_lifted(&self.world, self.up, held.lift - held.stoppie),
-        );
-        // Pitching on request (a wheelie, a turn in the air), the pitch is the bike's to
-        // hold: the planners answer for the roll alone.
-        let lean = if held.lift > 0.0 || held.air != 0.0 || held.stoppie > 0.0 {
-            roll_lean_cost(desired, current, heading, self.tolerances.lean)
+        let lean = if self.bike.params().planners_cost_frame_roll {
+            // The frame's roll is about the heading: a wheelie's pitch never enters it.
+            let roll = self.bike.lean(&self.world, self.up);
+            frame_roll_cost(roll, self.goal.lean, self.tolerances.lean)
         } else {
-            lean_cost(desired, current, self.tolerances.lean)
+            let heading = self.bike.heading(&self.world, self.up);
+            let desired = desired_lean_vector(heading, self.up, self.goal.lean);
+            let current = current_lean_vector(
+                self.bike.center_of_mass(&self.world),
+                self.bike
+                    .support_point_lifted(&self.world, self.up, held.lift - held.stoppie),
+            );
+            // Pitching on request (a wheelie, a turn in the air), the pitch is the bike's
+            // to hold: the planners answer for the roll alone.
+            if held.lift > 0.0 || held.air != 0.0 || held.stoppie > 0.0 {
+                roll_lean_cost(desired, current, heading, self.tolerances.lean)
+            } else {
+                lean_cost(desired, current, self.tolerances.lean)
+            }
         };
         // Only when asked: measuring the rider costs a little in every rollout step.
         let rider = if self.goal.rider.engagement() > 0.0 {

@@ -51,6 +51,12 @@ pub fn roll_lean_cost(desired: DVec3, current: DVec3, heading: DVec3, tolerance:
     lean_cost(across(desired), across(current), tolerance)
 }
 
+/// The lean cost of a bike whose planners hold its frame's roll (`BikeParams::
+/// planners_cost_frame_roll`): ((roll − desired) / s)², both about the heading.
+pub fn frame_roll_cost(roll: f64, desired: f64, tolerance: f64) -> f64 {
+    ((roll - desired) / tolerance).powi(2)
+}
+
 /// The player's turn: a stick value in [−1, 1] (positive right) scales the curvature up
 /// to `max_curvature`; the lean it asks for is limited to `max_lean`, the bike's
 /// (`BikeParams::max_lean`), so the player cannot ask for more than the bike can hold at
@@ -143,6 +149,19 @@ mod tests {
         let c = lean_cost(-DVec3::Y, current, 5f64.to_radians());
         assert!((c - 4.0).abs() < 1e-9, "{c}");
         assert_eq!(lean_cost(-DVec3::Y, -DVec3::Y, 0.1), 0.0);
+    }
+
+    #[test]
+    fn the_frame_roll_cost_is_the_squared_roll_error_in_tolerances() {
+        let (deg, s) = (f64::to_radians, 5f64.to_radians());
+        assert!((frame_roll_cost(deg(45.0), deg(35.0), s) - 4.0).abs() < 1e-12);
+        assert_eq!(frame_roll_cost(deg(-20.0), deg(-20.0), s), 0.0);
+        // A frame leaned 45° with its centre of mass at 41.2° (the street bike's crown)
+        // meets a 45° goal; eq. 4.7 still finds 3.8° missing.
+        let com = desired_lean_vector(DVec3::X, DVec3::Y, deg(41.2));
+        let eq_4_7 = lean_cost(desired_lean_vector(DVec3::X, DVec3::Y, deg(45.0)), com, s);
+        assert!((eq_4_7 - (3.8f64 / 5.0).powi(2)).abs() < 1e-9, "{eq_4_7}");
+        assert_eq!(frame_roll_cost(deg(45.0), deg(45.0), s), 0.0);
     }
 
     #[test]
