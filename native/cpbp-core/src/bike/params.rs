@@ -91,6 +91,23 @@ pub struct BikeParams {
     /// is about 41° of it, and asked eq. 4.7's 45° a planner asks the tyres for μ = 1.00
     /// where the frame's 45° asks 0.87. Off, the reference plans as the thesis did.
     pub planners_cost_frame_roll: bool,
+    /// The lean (rad, the frame's roll, leaned or asked) from which the planners' rollouts
+    /// step as the master does (`SimulationConfig::substeps`) instead of the physics
+    /// model's coarser `rollout_stepping`. Leaned deep at speed the coarse rollouts lose
+    /// the master: on the street bike in a 45° bend at 60 km/h the model's drift 12.9° of
+    /// roll in 0.5 s (its 100 N·m at the bar answers the coarse steps' errors harder),
+    /// where the reference's 30° bend drifts 1.7°, every rollout of optimizer-10 then
+    /// foresees a fall and it fell out of the bend (docs/benchmarks.md, "Rollout fidelity").
+    /// The master's stepping costs about 3× the model's, in those leans only. 90° (the
+    /// default) never: the reference plans as the thesis did.
+    pub planners_exact_from_lean: f64,
+    /// The tyres' sideways slide (m/s, `Bike::tyre_side_slide`) that costs the planners
+    /// as much as the lean tolerance's error; 0 (the default) costs none, as the thesis.
+    /// ODE's Coulomb friction grips as hard sliding as rolling, so a lean held in a slide
+    /// costs eq. 4.7 nothing: in the street bike's 45° bend at 60 km/h optimizer-10, even
+    /// with the master's rollouts, held the lean in a drift, the tyres 1.9–4.3 m/s sideways
+    /// on average and the bar 6–18° against the bend (arcade's tyres 0.03 m/s).
+    pub planners_slide_tolerance: f64,
     /// The drive and brake at the rear wheel (`RearWheelDrive`): the engine's torque and
     /// power, the rear brake's torque.
     pub rear_drive: RearWheelDrive,
@@ -130,6 +147,8 @@ impl Default for BikeParams {
             tyre_friction_follows_wheel: false,
             max_lean: 30f64.to_radians(),
             planners_cost_frame_roll: false,
+            planners_exact_from_lean: 90f64.to_radians(),
+            planners_slide_tolerance: 0.0,
             rear_drive: RearWheelDrive::default(),
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),

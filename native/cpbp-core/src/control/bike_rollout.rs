@@ -3,7 +3,8 @@
 //! control period and costs the squared lean error of eq. 4.7, plus the rider-position
 //! error when the player holds the rider's weight somewhere. In a wheelie the lean is
 //! measured against the lifted support point, so the balance point costs nothing. A bike
-//! with `planners_cost_frame_roll` has its frame's roll costed instead.
+//! with `planners_cost_frame_roll` has its frame's roll costed instead, and one with a
+//! `planners_slide_tolerance` its tyres' sideways slide too.
 
 use std::sync::Arc;
 
@@ -152,7 +153,14 @@ impl RolloutSystem for BikeRollout {
         } else {
             0.0
         };
-        Some(lean + rider + crash)
+        // Only on a bike that asks: the reference plans as the thesis did.
+        let slide_tolerance = self.bike.params().planners_slide_tolerance;
+        let slide = if slide_tolerance > 0.0 {
+            (self.bike.tyre_side_slide(&self.world, self.up) / slide_tolerance).powi(2)
+        } else {
+            0.0
+        };
+        Some(lean + rider + crash + slide)
     }
 
     /// Lean, lean rate, steering angle and rate, in units of roughly what one control

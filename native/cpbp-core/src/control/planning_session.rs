@@ -196,12 +196,29 @@ impl PlanningSession {
         self.planner.note_applied(controls.values());
     }
 
+    /// The rollouts' stepping for a plan from `sim`'s state towards `goal`: the
+    /// configuration's, or the master's own while the bike leans, or is asked to lean, at
+    /// least its `planners_exact_from_lean` (asked, so that the turn-in's plans already
+    /// predict the deep lean they lead into).
+    pub fn rollout_stepping_for(&self, sim: &Simulation, goal: &Goal) -> RolloutStepping {
+        let from = sim.bike().params().planners_exact_from_lean;
+        let lean = || sim.bike().lean(sim.world(), sim.up()).abs();
+        // 90° is "never", not "lying on the ground": a fallen reference bike plans as before.
+        if from < std::f64::consts::FRAC_PI_2 && goal.lean.abs().max(lean()) >= from {
+            RolloutStepping::uniform(sim.config().substeps)
+        } else {
+            self.config.rollout_stepping
+        }
+    }
+
     /// Plans one control step of `sim` towards the player's `goal`.
     pub fn controls(&mut self, sim: &Simulation, goal: &Goal) -> Controls {
         let start = sim.world().snapshot();
+        let stepping = self.rollout_stepping_for(sim, goal);
         for rollout in &mut self.rollouts {
             rollout.goal = *goal;
             rollout.tolerances = self.config.tolerances;
+            rollout.stepping = stepping;
         }
         // Combined mode: particle 1 rides with the arcade controller, starting from the
         // master's controller memory (taken before this step updates it); guided mode:
