@@ -140,8 +140,7 @@ fn optimizer_session(sim: &Simulation) -> PlanningSession {
     PlanningSession::new(sim, spec, config)
 }
 
-/// The street bike's planning fields (`planners_cost_frame_roll`, `planners_exact_from_lean`)
-/// at work: arcade takes it to 60 km/h, then optimizer-10 is asked for 45° and holds it,
+/// The street bike's planning field (`planners_exact_from_lean`) at work: arcade takes it to 60 km/h, then optimizer-10 is asked for 45° and holds it,
 /// where the thesis's cost and the model's rollouts fell out of this bend
 /// (docs/benchmarks.md, "Rollout fidelity"). It may hold it in a drift: ODE's tyres grip as
 /// hard sliding as rolling, and nothing costs the slide on this bike.
