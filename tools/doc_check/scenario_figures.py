@@ -3,7 +3,9 @@
 A rider argument is `arcade`, `learned` or a planner with its N (`combined-15`), in the
 exact physics; a scenario is the tool's name for it (`turn`, `push`, `stop40`). A rider
 ending in `@FOLDER` is read from the rows a change superseded, `superseded/FOLDER/` beside
-the table. A metric is averaged over the rides that stayed up, as the scenario report does."""
+the table; one starting `BIKE/` from another bike's table, `BIKE/` beside it
+(`street_390/optimizer-10@trial-frame-roll-cost`). A metric is averaged over the rides that
+stayed up, as the scenario report does."""
 
 from __future__ import annotations
 
@@ -26,7 +28,7 @@ DECIMAL = r"−?-?[\d.]+"
 class ScenarioRows:
     def __init__(self, path: Path):
         self.path = path
-        self._superseded: dict[str, ScenarioRows] = {}
+        self._others: dict[Path, ScenarioRows] = {}
 
     @cached_property
     def rides(self) -> dict[tuple[str, str], dict[int, tuple[bool, float]]]:
@@ -46,16 +48,22 @@ class ScenarioRows:
         return rides
 
     def of(self, scenario: str, rider: str) -> dict[int, tuple[bool, float]]:
+        bike, slash, rest = rider.partition("/")
+        if slash:
+            return self._other(Path(bike)).of(scenario, rest)
         rider, _, folder = rider.partition("@")
         if folder:
-            if folder not in self._superseded:
-                self._superseded[folder] = ScenarioRows(
-                    self.path.parent / "superseded" / folder / self.path.name)
-            return self._superseded[folder].of(scenario, rider)
+            return self._other(Path("superseded") / folder).of(scenario, rider)
         found = self.rides.get((scenario, rider))
         if not found:
             raise FigureError(f"no {scenario} rows of {rider}")
         return found
+
+    def _other(self, folder: Path) -> ScenarioRows:
+        """The rows of a table in `folder`, beside this one."""
+        if folder not in self._others:
+            self._others[folder] = ScenarioRows(self.path.parent / folder / self.path.name)
+        return self._others[folder]
 
     def standing(self, scenario: str, rider: str) -> dict[int, float]:
         return {seed: metric for seed, (fell, metric) in self.of(scenario, rider).items()

@@ -73,6 +73,21 @@ class DocCheckTest(unittest.TestCase):
         self.assertEqual(len(self.check(wrong)), 1)
         self.assertEqual(markers.update(wrong, self.figures, self.tables), right)
 
+    def test_another_bikes_rows_and_their_superseded_rows_are_read_beside_the_table(self):
+        header = "scenario,controller,trajectories,seed,physics,fell,metric,planning_ms\n"
+        street = self.folder / "street_390"
+        (street / "superseded" / "before").mkdir(parents=True)
+        (street / "scenarios.csv").write_text(
+            header + "push,arcade,0,0,exact,false,1.0,0\npush,arcade,0,1,exact,false,2.0,0\n")
+        (street / "superseded" / "before" / "scenarios.csv").write_text(
+            header + "push,arcade,0,0,exact,true,9.0,0\n")
+        doc = ("0 in 2<!--= scenario-falls push street_390/arcade -->, mean "
+               "1.50<!--= scenario-mean push street_390/arcade -->, before 1 in 1<!--= "
+               "scenario-falls push street_390/arcade@before -->; the reference 1 in 3<!--= "
+               "scenario-falls push arcade -->.")
+        self.assertEqual(self.check(doc), [])
+        self.assertEqual(len(self.check(doc.replace("0 in 2", "1 in 2"))), 1)
+
     def test_unknown_figures_and_missing_rows_are_reported(self):
         self.assertIn("no figure or table called 'goalz'", self.check("8<!--= goalz x -->")[0])
         self.assertIn("no rows of optimizer-5", self.check("1 of 1<!--= goals optimizer-5 10 -->")[0])

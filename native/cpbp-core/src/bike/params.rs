@@ -108,6 +108,14 @@ pub struct BikeParams {
     /// with the master's rollouts, held the lean in a drift, the tyres 1.9–4.3 m/s sideways
     /// on average and the bar 6–18° against the bend (arcade's tyres 0.03 m/s).
     pub planners_slide_tolerance: f64,
+    /// The share of the tyres' friction the planners' lean goal may ask of them in a
+    /// steady turn: eq. 4.7's lean is held to tan⁻¹(share · μ) (`control::lean::
+    /// grip_lean_limit`); 0 (the default) holds it to nothing, as the thesis. Eq. 4.7's
+    /// 45° asks μ = 1.00, all the street tyres have, and the turn-in's overshoot asks more:
+    /// in the street bike's 45° bend at 60 km/h optimizer-10 fell in 14 of 22 seeds, where
+    /// held to 0.9 of μ (42°, its frame then at about 45°) it fell in 4 of 30 (docs/
+    /// bike-model.md, "The bikes").
+    pub planners_grip_share: f64,
     /// The drive and brake at the rear wheel (`RearWheelDrive`): the engine's torque and
     /// power, the rear brake's torque.
     pub rear_drive: RearWheelDrive,
@@ -149,6 +157,7 @@ impl Default for BikeParams {
             planners_cost_frame_roll: false,
             planners_exact_from_lean: 90f64.to_radians(),
             planners_slide_tolerance: 0.0,
+            planners_grip_share: 0.0,
             rear_drive: RearWheelDrive::default(),
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),

@@ -32,9 +32,13 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let particles = arguments
-        .first()
-        .map_or(10, |n| n.parse().expect("a trajectory count N"));
+    let particles = match trajectory_count(&arguments) {
+        Ok(n) => n,
+        Err(why) => {
+            eprintln!("cpbp-fingerprint: {why}\n{USAGE}");
+            std::process::exit(2);
+        }
+    };
     println!("plans of a 3 s ride, N = {particles}, 2 threads (FNV-1a 64 of their exact bits)");
     if let Some(bike) = &bike {
         // Only another bike is named, so the reference's output stays as it always was.
@@ -55,6 +59,23 @@ fn main() {
                 kind.name()
             );
         }
+    }
+}
+
+const USAGE: &str =
+    "usage: cpbp-fingerprint [N] [--bike FILE]   (N: trajectories, 10 unless given)";
+
+/// The one optional argument left once the bike is taken: a trajectory count of at least 1.
+fn trajectory_count(arguments: &[String]) -> Result<usize, String> {
+    match arguments {
+        [] => Ok(10),
+        [n] => match n.parse::<usize>() {
+            Ok(count) if count > 0 => Ok(count),
+            _ => Err(format!(
+                "the trajectory count must be a whole number of at least 1, not {n:?}"
+            )),
+        },
+        [_, extra, ..] => Err(format!("unexpected argument {extra:?}")),
     }
 }
 

@@ -4,7 +4,8 @@
 //! error when the player holds the rider's weight somewhere. In a wheelie the lean is
 //! measured against the lifted support point, so the balance point costs nothing. A bike
 //! with `planners_cost_frame_roll` has its frame's roll costed instead, and one with a
-//! `planners_slide_tolerance` its tyres' sideways slide too.
+//! `planners_slide_tolerance` its tyres' sideways slide too; one with a
+//! `planners_grip_share` asks no deeper lean than that share of its tyres' grip holds.
 
 use std::sync::Arc;
 
@@ -13,7 +14,8 @@ use glam::DVec3;
 use super::arcade::ArcadeController;
 use super::cpbp::{Priors, RolloutSystem};
 use super::lean::{
-    current_lean_vector, desired_lean_vector, frame_roll_cost, lean_cost, roll_lean_cost,
+    current_lean_vector, desired_lean_vector, frame_roll_cost, grip_lean_limit, lean_cost,
+    roll_lean_cost,
 };
 use super::learned::PolicyNetwork;
 use super::Goal;
@@ -123,13 +125,18 @@ impl RolloutSystem for BikeRollout {
                 &mut watch,
             )
             .ok()?;
-        let lean = if self.bike.params().planners_cost_frame_roll {
+        let params = self.bike.params();
+        let asked = match grip_lean_limit(params.tyre_friction, params.planners_grip_share) {
+            Some(limit) => self.goal.lean.clamp(-limit, limit),
+            None => self.goal.lean,
+        };
+        let lean = if params.planners_cost_frame_roll {
             // The frame's roll is about the heading: a wheelie's pitch never enters it.
             let roll = self.bike.lean(&self.world, self.up);
-            frame_roll_cost(roll, self.goal.lean, self.tolerances.lean)
+            frame_roll_cost(roll, asked, self.tolerances.lean)
         } else {
             let heading = self.bike.heading(&self.world, self.up);
-            let desired = desired_lean_vector(heading, self.up, self.goal.lean);
+            let desired = desired_lean_vector(heading, self.up, asked);
             let current = current_lean_vector(
                 self.bike.center_of_mass(&self.world),
                 self.bike
@@ -154,7 +161,7 @@ impl RolloutSystem for BikeRollout {
             0.0
         };
         // Only on a bike that asks: the reference plans as the thesis did.
-        let slide_tolerance = self.bike.params().planners_slide_tolerance;
+        let slide_tolerance = params.planners_slide_tolerance;
         let slide = if slide_tolerance > 0.0 {
             (self.bike.tyre_side_slide(&self.world, self.up) / slide_tolerance).powi(2)
         } else {
@@ -257,5 +264,84 @@ pub fn bike_priors() -> Priors {
         lower: LOWER.to_vec(),
         upper: UPPER.to_vec(),
         planned,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bike::{BikeParams, Part, Placement};
+    use crate::simulation::{Simulation, SimulationConfig};
+    use crate::terrain::Terrain;
+
+    /// A rollout of `bike` standing on ice (friction 0.1), its wheels down, with every
+    /// body sliding at 2 m/s across its heading, as a bike does once its tyres let go.
+    fn sliding_rollout(bike: BikeParams) -> BikeRollout {
+        let config = SimulationConfig {
+            bike: BikeParams {
+                tyre_friction: 0.1,
+                ..bike
+            },
+            ..SimulationConfig::default()
+        };
+        let spawn = Placement {
+            position: DVec3::new(0.0, 0.02, 0.0),
+            ..Placement::IDENTITY
+        };
+        let mut sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
+        // A few steps to set the tyres on the ground.
+        for _ in 0..6 {
+            sim.step();
+        }
+        let mut rollout = BikeRollout {
+            world: sim.new_world(),
+            bike: sim.bike().clone(),
+            gravity: sim.config().gravity,
+            up: sim.up(),
+            step_dt: sim.config().control_dt,
+            stepping: RolloutStepping::uniform(sim.config().substeps),
+            goal: Goal::default(),
+            tolerances: CostTolerances::default(),
+            policy: None,
+        };
+        rollout.restore(&sim.world().snapshot());
+        let across = rollout
+            .bike
+            .heading(&rollout.world, rollout.up)
+            .cross(rollout.up);
+        for body in 0..rollout.world.body_count() {
+            let id = crate::ode::BodyId(body);
+            rollout.world.set_body_linear_velocity(id, across * 2.0);
+        }
+        rollout
+    }
+
+    #[test]
+    fn a_slide_tolerance_costs_the_tyres_sideways_slide_in_tolerances_squared() {
+        let tolerance = 0.5;
+        let mut plain = sliding_rollout(BikeParams::default());
+        let mut costed = sliding_rollout(BikeParams {
+            planners_slide_tolerance: tolerance,
+            ..BikeParams::default()
+        });
+        let u = [0.0; CONTROL_DIM];
+        let without = plain.step(&u, 0).expect("a sliding bike steps");
+        let with = costed.step(&u, 0).expect("a sliding bike steps");
+        // The cost term does not touch the physics: both worlds end the step alike.
+        let frame = plain.bike.body(Part::Frame);
+        assert_eq!(
+            plain.world.body_position(frame),
+            costed.world.body_position(frame)
+        );
+        let slide = costed.bike.tyre_side_slide(&costed.world, costed.up);
+        assert!(
+            slide.abs() > 0.5,
+            "the tyres still slide after one step: {slide}"
+        );
+        let expected = (slide / tolerance).powi(2);
+        assert!(
+            (with - without - expected).abs() < 1e-9,
+            "{with} − {without} ≠ {expected}"
+        );
     }
 }

@@ -57,6 +57,14 @@ pub fn frame_roll_cost(roll: f64, desired: f64, tolerance: f64) -> f64 {
     ((roll - desired) / tolerance).powi(2)
 }
 
+/// The deepest lean of the centre of mass (eq. 4.7's, rad) a steady turn holds asking
+/// `share` of the tyres' friction `mu`: there tan θ = a / g, and a ≤ share · μ · g. `None`
+/// for a share of 0: the planners' goal is held to nothing (`BikeParams::
+/// planners_grip_share`).
+pub fn grip_lean_limit(mu: f64, share: f64) -> Option<f64> {
+    (share > 0.0).then(|| (share * mu).atan())
+}
+
 /// The player's turn: a stick value in [−1, 1] (positive right) scales the curvature up
 /// to `max_curvature`; the lean it asks for is limited to `max_lean`, the bike's
 /// (`BikeParams::max_lean`), so the player cannot ask for more than the bike can hold at
@@ -162,6 +170,18 @@ mod tests {
         let eq_4_7 = lean_cost(desired_lean_vector(DVec3::X, DVec3::Y, deg(45.0)), com, s);
         assert!((eq_4_7 - (3.8f64 / 5.0).powi(2)).abs() < 1e-9, "{eq_4_7}");
         assert_eq!(frame_roll_cost(deg(45.0), deg(45.0), s), 0.0);
+    }
+
+    #[test]
+    fn the_grip_limit_is_the_lean_whose_turn_asks_that_share_of_the_friction() {
+        assert_eq!(grip_lean_limit(1.0, 0.0), None);
+        let limit = grip_lean_limit(1.0, 0.9).unwrap().to_degrees();
+        assert!((limit - 41.99).abs() < 0.01, "{limit}");
+        // All of it: tan 45° = 1, the turn's lateral acceleration is g.
+        let all = grip_lean_limit(1.0, 1.0).unwrap().to_degrees();
+        assert!((all - 45.0).abs() < 1e-9, "{all}");
+        let wet = grip_lean_limit(0.5, 0.9).unwrap().to_degrees();
+        assert!((wet - 24.23).abs() < 0.01, "{wet}");
     }
 
     #[test]
