@@ -5,7 +5,8 @@
 //! measured against the lifted support point, so the balance point costs nothing. A bike
 //! with `planners_cost_frame_roll` has its frame's roll costed instead, and one with a
 //! `planners_slide_tolerance` its tyres' sideways slide too; one with a
-//! `planners_grip_share` asks no deeper lean than that share of its tyres' grip holds.
+//! `planners_grip_share` asks no deeper lean than that share of its tyres' grip holds, and
+//! one with `planners_lean_reference` asks it on the way from the plan's start.
 
 use std::sync::Arc;
 
@@ -14,8 +15,8 @@ use glam::DVec3;
 use super::arcade::ArcadeController;
 use super::cpbp::{Priors, RolloutSystem};
 use super::lean::{
-    current_lean_vector, desired_lean_vector, frame_roll_cost, grip_lean_limit, lean_cost,
-    roll_lean_cost,
+    current_lean_vector, desired_lean_vector, fall_time_scale, frame_roll_cost, grip_lean_limit,
+    lean_cost, lean_on_the_way, roll_lean_cost,
 };
 use super::learned::PolicyNetwork;
 use super::Goal;
@@ -65,6 +66,18 @@ pub struct BikeRollout {
     pub tolerances: CostTolerances,
     /// The controller this particle follows (combined and guided modes' particle 1).
     pub policy: Option<RolloutPolicy>,
+    /// Where the plan starts, read at its first step on a bike with
+    /// `planners_lean_reference`: the lean goal approaches the asked lean from there.
+    pub start: PlanStart,
+}
+
+/// The costed lean where a plan starts and the time scale of the bike's fall from it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PlanStart {
+    /// Rad, positive right.
+    pub lean: f64,
+    /// `lean::fall_time_scale` of the centre of mass's height over the contact line (s).
+    pub fall_time: f64,
 }
 
 /// A controller a particle follows live.
@@ -91,6 +104,42 @@ impl BikeRollout {
     }
 }
 
+impl BikeRollout {
+    /// Where the plan starts: the lean the cost holds (the frame's roll, or eq. 4.7's
+    /// centre of mass over the tyres' contact line, signed about the heading) and how fast
+    /// the bike falls from it.
+    fn plan_start(&self) -> PlanStart {
+        let toward =
+            self.bike.center_of_mass(&self.world) - self.bike.support_point(&self.world, self.up);
+        let lean = if self.bike.params().planners_cost_frame_roll {
+            self.bike.lean(&self.world, self.up)
+        } else {
+            let right = self.bike.heading(&self.world, self.up).cross(self.up);
+            toward.dot(right).atan2(toward.dot(self.up))
+        };
+        PlanStart {
+            lean,
+            fall_time: fall_time_scale(toward.length(), self.gravity.length()),
+        }
+    }
+
+    /// The lean the cost asks `step` steps into the plan: the player's, held to the bike's
+    /// share of its grip, and on the way to it from the plan's start at the pace the bike
+    /// falls by itself (`BikeParams::planners_lean_reference`).
+    fn goal_lean(&self, step: usize) -> f64 {
+        let params = self.bike.params();
+        let asked = match grip_lean_limit(params.tyre_friction, params.planners_grip_share) {
+            Some(limit) => self.goal.lean.clamp(-limit, limit),
+            None => self.goal.lean,
+        };
+        if !params.planners_lean_reference {
+            return asked;
+        }
+        let t = (step + 1) as f64 * self.step_dt;
+        lean_on_the_way(self.start.lean, asked, t, self.start.fall_time)
+    }
+}
+
 impl RolloutSystem for BikeRollout {
     type State = WorldState;
 
@@ -106,6 +155,9 @@ impl RolloutSystem for BikeRollout {
 
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         let controls = self.controls_for(u);
+        if step == 0 && self.bike.params().planners_lean_reference {
+            self.start = self.plan_start();
+        }
         let asked = self.goal.pitch_request();
         let period = self.stepping.ode_steps_at(step, self.step_dt);
         let bike = &self.bike;
@@ -126,10 +178,7 @@ impl RolloutSystem for BikeRollout {
             )
             .ok()?;
         let params = self.bike.params();
-        let asked = match grip_lean_limit(params.tyre_friction, params.planners_grip_share) {
-            Some(limit) => self.goal.lean.clamp(-limit, limit),
-            None => self.goal.lean,
-        };
+        let asked = self.goal_lean(step);
         let lean = if params.planners_cost_frame_roll {
             // The frame's roll is about the heading: a wheelie's pitch never enters it.
             let roll = self.bike.lean(&self.world, self.up);
@@ -268,80 +317,4 @@ pub fn bike_priors() -> Priors {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::bike::{BikeParams, Part, Placement};
-    use crate::simulation::{Simulation, SimulationConfig};
-    use crate::terrain::Terrain;
-
-    /// A rollout of `bike` standing on ice (friction 0.1), its wheels down, with every
-    /// body sliding at 2 m/s across its heading, as a bike does once its tyres let go.
-    fn sliding_rollout(bike: BikeParams) -> BikeRollout {
-        let config = SimulationConfig {
-            bike: BikeParams {
-                tyre_friction: 0.1,
-                ..bike
-            },
-            ..SimulationConfig::default()
-        };
-        let spawn = Placement {
-            position: DVec3::new(0.0, 0.02, 0.0),
-            ..Placement::IDENTITY
-        };
-        let mut sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
-        // A few steps to set the tyres on the ground.
-        for _ in 0..6 {
-            sim.step();
-        }
-        let mut rollout = BikeRollout {
-            world: sim.new_world(),
-            bike: sim.bike().clone(),
-            gravity: sim.config().gravity,
-            up: sim.up(),
-            step_dt: sim.config().control_dt,
-            stepping: RolloutStepping::uniform(sim.config().substeps),
-            goal: Goal::default(),
-            tolerances: CostTolerances::default(),
-            policy: None,
-        };
-        rollout.restore(&sim.world().snapshot());
-        let across = rollout
-            .bike
-            .heading(&rollout.world, rollout.up)
-            .cross(rollout.up);
-        for body in 0..rollout.world.body_count() {
-            let id = crate::ode::BodyId(body);
-            rollout.world.set_body_linear_velocity(id, across * 2.0);
-        }
-        rollout
-    }
-
-    #[test]
-    fn a_slide_tolerance_costs_the_tyres_sideways_slide_in_tolerances_squared() {
-        let tolerance = 0.5;
-        let mut plain = sliding_rollout(BikeParams::default());
-        let mut costed = sliding_rollout(BikeParams {
-            planners_slide_tolerance: tolerance,
-            ..BikeParams::default()
-        });
-        let u = [0.0; CONTROL_DIM];
-        let without = plain.step(&u, 0).expect("a sliding bike steps");
-        let with = costed.step(&u, 0).expect("a sliding bike steps");
-        // The cost term does not touch the physics: both worlds end the step alike.
-        let frame = plain.bike.body(Part::Frame);
-        assert_eq!(
-            plain.world.body_position(frame),
-            costed.world.body_position(frame)
-        );
-        let slide = costed.bike.tyre_side_slide(&costed.world, costed.up);
-        assert!(
-            slide.abs() > 0.5,
-            "the tyres still slide after one step: {slide}"
-        );
-        let expected = (slide / tolerance).powi(2);
-        assert!(
-            (with - without - expected).abs() < 1e-9,
-            "{with} − {without} ≠ {expected}"
-        );
-    }
-}
+mod tests;

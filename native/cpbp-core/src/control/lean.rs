@@ -65,6 +65,19 @@ pub fn grip_lean_limit(mu: f64, share: f64) -> Option<f64> {
     (share > 0.0).then(|| (share * mu).atan())
 }
 
+/// The time scale (s) of a bike's fall over from its lean, an inverted pendulum's √(h / g)
+/// for a centre of mass `height` above the contact line (about 0.25 s on the street bike).
+pub fn fall_time_scale(height: f64, gravity: f64) -> f64 {
+    (height / gravity).sqrt()
+}
+
+/// The lean `t` s into a plan that started at `start` and approaches `asked` with the time
+/// constant `tau`: a first-order reference, as predictive controllers give a set point
+/// (`BikeParams::planners_lean_reference`).
+pub fn lean_on_the_way(start: f64, asked: f64, t: f64, tau: f64) -> f64 {
+    asked + (start - asked) * (-t / tau.max(1e-6)).exp()
+}
+
 /// The player's turn: a stick value in [−1, 1] (positive right) scales the curvature up
 /// to `max_curvature`; the lean it asks for is limited to `max_lean`, the bike's
 /// (`BikeParams::max_lean`), so the player cannot ask for more than the bike can hold at
@@ -182,6 +195,19 @@ mod tests {
         assert!((all - 45.0).abs() < 1e-9, "{all}");
         let wet = grip_lean_limit(0.5, 0.9).unwrap().to_degrees();
         assert!((wet - 24.23).abs() < 0.01, "{wet}");
+    }
+
+    #[test]
+    fn the_lean_on_the_way_starts_where_the_plan_does_and_closes_in_on_the_goal() {
+        let tau = fall_time_scale(0.6, 9.81);
+        assert!((tau - 0.2473).abs() < 1e-4, "{tau}");
+        assert!((lean_on_the_way(0.1, 0.7, 0.0, tau) - 0.1).abs() < 1e-12);
+        // One time constant in, 1 − 1/e of the way.
+        let one = lean_on_the_way(0.0, 1.0, tau, tau);
+        assert!((one - (1.0 - (-1f64).exp())).abs() < 1e-12, "{one}");
+        assert!((lean_on_the_way(0.0, 1.0, 10.0 * tau, tau) - 1.0).abs() < 1e-4);
+        // Leaning out of a bend as into one.
+        assert!(lean_on_the_way(0.7, 0.0, tau, tau) < 0.7);
     }
 
     #[test]

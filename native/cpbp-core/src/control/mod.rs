@@ -14,7 +14,7 @@ mod planning_thread;
 pub mod sampling;
 
 pub use arcade::{eq_4_12, eq_4_8, ArcadeController, ArcadeGains};
-pub use bike_rollout::{bike_priors, BikeRollout, CostTolerances, RolloutPolicy};
+pub use bike_rollout::{bike_priors, BikeRollout, CostTolerances, PlanStart, RolloutPolicy};
 pub use goal::Goal;
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,

@@ -6,7 +6,7 @@
 use std::sync::Arc;
 
 use super::arcade::ArcadeController;
-use super::bike_rollout::{BikeRollout, CostTolerances, RolloutPolicy};
+use super::bike_rollout::{BikeRollout, CostTolerances, PlanStart, RolloutPolicy};
 use super::learned::PolicyNetwork;
 use super::plan_result::{PlanPhases, PlanResult};
 use super::planner::{BikePlanner, Follows, PlannerSpec};
@@ -136,6 +136,7 @@ impl PlanningSession {
                 goal: Goal::default(),
                 tolerances: config.tolerances,
                 policy: None,
+                start: PlanStart::default(),
             });
         }
     }

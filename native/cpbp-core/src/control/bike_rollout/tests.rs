@@ -1,0 +1,121 @@
+//! The rollout's cost terms, each against the same rollout without it.
+
+use super::*;
+use crate::bike::{BikeParams, Part, Placement};
+use crate::control::lean::lean_on_the_way;
+use crate::simulation::{Simulation, SimulationConfig};
+use crate::terrain::Terrain;
+
+/// A rollout of `bike` standing on ice (friction 0.1), its wheels down, with every
+/// body sliding at 2 m/s across its heading, as a bike does once its tyres let go.
+fn sliding_rollout(bike: BikeParams) -> BikeRollout {
+    let mut rollout = standing_rollout(BikeParams {
+        tyre_friction: 0.1,
+        ..bike
+    });
+    let across = rollout
+        .bike
+        .heading(&rollout.world, rollout.up)
+        .cross(rollout.up);
+    for body in 0..rollout.world.body_count() {
+        let id = crate::ode::BodyId(body);
+        rollout.world.set_body_linear_velocity(id, across * 2.0);
+    }
+    rollout
+}
+
+/// A rollout of `bike` standing upright on flat ground, its wheels down.
+fn standing_rollout(bike: BikeParams) -> BikeRollout {
+    let config = SimulationConfig {
+        bike,
+        ..SimulationConfig::default()
+    };
+    let spawn = Placement {
+        position: DVec3::new(0.0, 0.02, 0.0),
+        ..Placement::IDENTITY
+    };
+    let mut sim = Simulation::new(config, Arc::new(Terrain::flat()), spawn);
+    // A few steps to set the tyres on the ground.
+    for _ in 0..6 {
+        sim.step();
+    }
+    let mut rollout = BikeRollout {
+        world: sim.new_world(),
+        bike: sim.bike().clone(),
+        gravity: sim.config().gravity,
+        up: sim.up(),
+        step_dt: sim.config().control_dt,
+        stepping: RolloutStepping::uniform(sim.config().substeps),
+        goal: Goal::default(),
+        tolerances: CostTolerances::default(),
+        policy: None,
+        start: PlanStart::default(),
+    };
+    rollout.restore(&sim.world().snapshot());
+    rollout
+}
+
+/// The costs of two rollouts' first steps with the controls at rest. A cost term never
+/// touches the physics: both worlds end the step alike.
+fn first_step_of_both(a: &mut BikeRollout, b: &mut BikeRollout) -> (f64, f64) {
+    let u = [0.0; CONTROL_DIM];
+    let costs = (
+        a.step(&u, 0).expect("the bike steps"),
+        b.step(&u, 0).expect("the bike steps"),
+    );
+    let frame = a.bike.body(Part::Frame);
+    assert_eq!(a.world.body_position(frame), b.world.body_position(frame));
+    costs
+}
+
+#[test]
+fn a_slide_tolerance_costs_the_tyres_sideways_slide_in_tolerances_squared() {
+    let tolerance = 0.5;
+    let mut plain = sliding_rollout(BikeParams::default());
+    let mut costed = sliding_rollout(BikeParams {
+        planners_slide_tolerance: tolerance,
+        ..BikeParams::default()
+    });
+    let (without, with) = first_step_of_both(&mut plain, &mut costed);
+    let slide = costed.bike.tyre_side_slide(&costed.world, costed.up);
+    assert!(
+        slide.abs() > 0.5,
+        "the tyres still slide after one step: {slide}"
+    );
+    let expected = (slide / tolerance).powi(2);
+    assert!(
+        (with - without - expected).abs() < 1e-9,
+        "{with} − {without} ≠ {expected}"
+    );
+}
+
+#[test]
+fn the_lean_reference_asks_the_first_steps_for_a_lean_on_the_way_from_the_start() {
+    let asked = 0.7;
+    let goal = Goal {
+        lean: asked,
+        ..Goal::default()
+    };
+    let mut thesis = standing_rollout(BikeParams::default());
+    let mut referenced = standing_rollout(BikeParams {
+        planners_lean_reference: true,
+        ..BikeParams::default()
+    });
+    thesis.goal = goal;
+    referenced.goal = goal;
+    let (at_once, on_the_way) = first_step_of_both(&mut thesis, &mut referenced);
+    let start = referenced.start;
+    assert!(
+        start.lean.abs() < 0.02,
+        "it started upright: {}",
+        start.lean
+    );
+    // The reference bike's centre of mass stands about 0.6 m over its contact line.
+    assert!((0.2..0.3).contains(&start.fall_time), "{}", start.fall_time);
+    let first = lean_on_the_way(start.lean, asked, thesis.step_dt, start.fall_time);
+    assert_eq!(referenced.goal_lean(0), first);
+    assert!(first < asked / 2.0, "one step in, not half way: {first}");
+    assert!(on_the_way < at_once / 2.0, "{on_the_way} against {at_once}");
+    // A later step of the same plan asks from the same start, closer to the goal.
+    assert!(referenced.goal_lean(20) > 0.9 * asked);
+}
