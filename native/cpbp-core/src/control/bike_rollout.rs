@@ -102,9 +102,7 @@ impl BikeRollout {
             .apply(self.bike.params().wheel_radius, &mut controls);
         controls
     }
-}
 
-impl BikeRollout {
     /// Where the plan starts: the lean the cost holds (the frame's roll, or eq. 4.7's
     /// centre of mass over the tyres' contact line, signed about the heading) and how fast
     /// the bike falls from it.
@@ -178,14 +176,14 @@ impl RolloutSystem for BikeRollout {
             )
             .ok()?;
         let params = self.bike.params();
-        let asked = self.goal_lean(step);
+        let lean_goal = self.goal_lean(step);
         let lean = if params.planners_cost_frame_roll {
             // The frame's roll is about the heading: a wheelie's pitch never enters it.
             let roll = self.bike.lean(&self.world, self.up);
-            frame_roll_cost(roll, asked, self.tolerances.lean)
+            frame_roll_cost(roll, lean_goal, self.tolerances.lean)
         } else {
             let heading = self.bike.heading(&self.world, self.up);
-            let desired = desired_lean_vector(heading, self.up, asked);
+            let desired = desired_lean_vector(heading, self.up, lean_goal);
             let current = current_lean_vector(
                 self.bike.center_of_mass(&self.world),
                 self.bike
