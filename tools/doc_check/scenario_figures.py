@@ -89,11 +89,15 @@ def figures(rows: ScenarioRows) -> dict[str, Figure]:
         ridden = rows.of(scenario, rider)
         return f"{count(sum(fell for fell, _ in ridden.values()))} in {count(len(ridden))}"
 
-    def fall_split(scenario: str, first: str, second: str) -> tuple[int, int]:
-        a, b = rows.of(scenario, first), rows.of(scenario, second)
-        shared = a.keys() & b.keys()
-        return (sum(a[s][0] and not b[s][0] for s in shared),
-                sum(b[s][0] and not a[s][0] for s in shared))
+    def fall_split(scenarios: str, first: str, second: str) -> tuple[int, int]:
+        # "bend45-h0+bend45-h22": the seeds of each scenario pooled, each paired with itself.
+        only_first = only_second = 0
+        for scenario in scenarios.split("+"):
+            a, b = rows.of(scenario, first), rows.of(scenario, second)
+            shared = a.keys() & b.keys()
+            only_first += sum(a[s][0] and not b[s][0] for s in shared)
+            only_second += sum(b[s][0] and not a[s][0] for s in shared)
+        return only_first, only_second
 
     return {
         # "4 to 0": the seeds where only the first fell, to those where only the second did.

@@ -3,10 +3,11 @@
 //! [FIELD=VALUE…]` rides up to KMH (60) upright for 9 s, asks for LEAN_DEG (45) and prints
 //! one CSV row per control step of the next 6 s: the frame's roll, the centre of mass's lean
 //! over the tyres' contact line (what eq. 4.7 costs), the bar's angle, how fast the tyres
-//! slide sideways, the speed and the plan's best cost, until the bike falls. The bend of
-//! the `bend45` scenarios, to see how a planner loses it; `--rollouts` plans with another
-//! rollout stepping than the physics model's (`RolloutStepping`), FIELD=VALUE changes a
-//! field of the bike (`planners_cost_frame_roll=1`).
+//! slide sideways, the speed, the plan's best cost and how far right of the riding pose the
+//! rider's centre of mass sits, until the bike falls. The bend of the `bend45` scenarios,
+//! to see how a planner loses it; `--rollouts` plans with another rollout stepping than the
+//! physics model's (`RolloutStepping`), FIELD=VALUE changes a field of the bike
+//! (`planners_cost_frame_roll=1`).
 
 #[path = "common/bike_args.rs"]
 mod bike_args;
@@ -80,7 +81,9 @@ fn main() {
         lean: Some(lean_deg.to_radians()),
         ..Intent::cruise(kmh)
     });
-    println!("t,lean_deg,com_lean_deg,steer_deg,side_slide_mps,speed_kmh,best_cost,fell");
+    println!(
+        "t,lean_deg,com_lean_deg,steer_deg,side_slide_mps,speed_kmh,best_cost,fell,rider_right_cm"
+    );
     for step in 0..(6.0 / dt) as usize {
         ride.step();
         let s = ride.sim();
@@ -89,7 +92,7 @@ fn main() {
         let toward = bike.center_of_mass(world) - bike.support_point(world, up);
         let fell = s.crashed().is_some();
         println!(
-            "{:.3},{:.2},{:.2},{:.2},{:.3},{:.1},{:.1},{fell}",
+            "{:.3},{:.2},{:.2},{:.2},{:.3},{:.1},{:.1},{fell},{:.1}",
             (step + 1) as f64 * dt,
             bike.lean(world, up).to_degrees(),
             toward.dot(right).atan2(toward.dot(up)).to_degrees(),
@@ -97,6 +100,7 @@ fn main() {
             bike.tyre_side_slide(world, up),
             bike.forward_speed(world, up) * 3.6,
             ride.plan().map_or(0.0, |p| p.best_cost),
+            bike.rider_offset(world).z * 100.0,
         );
         if fell {
             break;

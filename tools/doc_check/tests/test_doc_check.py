@@ -88,6 +88,18 @@ class DocCheckTest(unittest.TestCase):
         self.assertEqual(self.check(doc), [])
         self.assertEqual(len(self.check(doc.replace("0 in 2", "1 in 2"))), 1)
 
+    def test_a_fall_split_pools_the_scenarios_joined_by_a_plus(self):
+        # Shoves: arcade fell on seed 0 alone; slalom: arcade on seed 1, learned on seed 2.
+        with (self.folder / "scenarios.csv").open("a") as f:
+            f.write("slalom,arcade,0,1,exact,true,1.0,0\nslalom,arcade,0,2,exact,false,1.0,0\n"
+                    "slalom,learned,0,1,exact,false,1.0,0\nslalom,learned,0,2,exact,true,1.0,0\n")
+        self.figures.update(scenario_figures.figures(
+            scenario_figures.ScenarioRows(self.folder / "scenarios.csv")))
+        doc = ("1 to 0<!--= scenario-fall-split push arcade learned -->, pooled "
+               "2 to 1<!--= scenario-fall-split push+slalom arcade learned --> "
+               "(p = 1<!--= scenario-fall-p push+slalom arcade learned -->)")
+        self.assertEqual(self.check(doc), [])
+
     def test_unknown_figures_and_missing_rows_are_reported(self):
         self.assertIn("no figure or table called 'goalz'", self.check("8<!--= goalz x -->")[0])
         self.assertIn("no rows of optimizer-5", self.check("1 of 1<!--= goals optimizer-5 10 -->")[0])

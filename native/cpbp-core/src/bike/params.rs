@@ -106,7 +106,8 @@ pub struct BikeParams {
     /// ODE's Coulomb friction grips as hard sliding as rolling, so a lean held in a slide
     /// costs eq. 4.7 nothing: in the street bike's 45° bend at 60 km/h optimizer-10, even
     /// with the master's rollouts, held the lean in a drift, the tyres 1.9–4.3 m/s sideways
-    /// on average and the bar 6–18° against the bend (arcade's tyres 0.03 m/s).
+    /// on average and the bar 6–18° against the bend (arcade's tyres 0.03 m/s). The street
+    /// bike's 2 m/s takes the drift away (docs/bike-model.md, "The bikes").
     pub planners_slide_tolerance: f64,
     /// The share of the tyres' friction the planners' lean goal may ask of them in a
     /// steady turn: eq. 4.7's lean is held to tan⁻¹(share · μ) (`control::lean::
@@ -124,6 +125,19 @@ pub struct BikeParams {
     /// of 90 without (on the same seeds 6 to 9, McNemar p = 0.61), in the turn-in in 2
     /// against 5; the falls left come in the steady bend (docs/bike-model.md, "The bikes").
     pub planners_lean_reference: bool,
+    /// The planners cost the lean where the bike's roll is taking it, its lean plus its
+    /// roll rate times the time scale of its own fall (`control::lean::lean_ahead`), not
+    /// where it is: a lean arriving at the goal still rolling costs the overshoot it is
+    /// heading for. Off (the thesis's cost) by default; on for the street bike, whose
+    /// optimizer overshot the 45° bend's turn-in into a slide (docs/bike-model.md).
+    pub planners_lean_lookahead: bool,
+    /// How firmly the planners hold the rider's weight in the riding pose while the
+    /// player's weight stick is released (0–1, the stick's engagement it stands for,
+    /// `bike::rider_position_cost`); 0 (the default) leaves the rider free to use the body
+    /// for balance, as the thesis. The lean cost is eq. 4.7's centre of mass, so nothing
+    /// else keeps the weight on the bike: the street bike's optimizer let it creep 20 cm
+    /// inside the 45° bend until the centre of mass passed the grip; it holds it at 0.1.
+    pub planners_rider_hold: f64,
     /// The drive and brake at the rear wheel (`RearWheelDrive`): the engine's torque and
     /// power, the rear brake's torque.
     pub rear_drive: RearWheelDrive,
@@ -167,6 +181,8 @@ impl Default for BikeParams {
             planners_slide_tolerance: 0.0,
             planners_grip_share: 0.0,
             planners_lean_reference: false,
+            planners_lean_lookahead: false,
+            planners_rider_hold: 0.0,
             rear_drive: RearWheelDrive::default(),
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),

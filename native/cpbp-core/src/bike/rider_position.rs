@@ -121,9 +121,15 @@ impl RiderPosition {
 /// Rider-position cost: how far the rider's centre of mass is from where the player asks,
 /// fore/aft and sideways (heights are free), squared in units of `tolerance` (m), as
 /// eq. 4.7 squares the lean error in units of its s; scaled by how firmly the stick is
-/// held, so a released stick adds nothing.
-pub fn rider_position_cost(asked: &RiderPosition, offset: DVec3, tolerance: f64) -> f64 {
-    let engagement = asked.engagement();
+/// held, or by `released` where that is firmer: a released stick adds nothing unless the
+/// bike's planners hold the rider in the riding pose (`BikeParams::planners_rider_hold`).
+pub fn rider_position_cost(
+    asked: &RiderPosition,
+    offset: DVec3,
+    tolerance: f64,
+    released: f64,
+) -> f64 {
+    let engagement = asked.engagement().max(released);
     if engagement == 0.0 {
         return 0.0;
     }
@@ -172,7 +178,7 @@ mod tests {
         assert_eq!(RiderPosition::NEUTRAL.engagement(), 0.0);
         let anywhere = DVec3::new(0.3, -0.1, 0.2);
         assert_eq!(
-            rider_position_cost(&RiderPosition::NEUTRAL, anywhere, 0.03),
+            rider_position_cost(&RiderPosition::NEUTRAL, anywhere, 0.03, 0.0),
             0.0
         );
     }
@@ -186,7 +192,7 @@ mod tests {
             right: 0.0,
         };
         let offset = DVec3::new(0.03, 0.5, 0.03);
-        let cost = rider_position_cost(&asked, offset, 0.03);
+        let cost = rider_position_cost(&asked, offset, 0.03, 0.0);
         assert!((cost - 5.0).abs() < 1e-9, "{cost}");
         // Half deflection halves how firmly it is held.
         let half = RiderPosition {
@@ -194,9 +200,27 @@ mod tests {
             right: 0.0,
         };
         let at_target = DVec3::new(0.045, 0.0, 0.0);
-        assert!(rider_position_cost(&half, at_target, 0.03).abs() < 1e-12);
-        let off = rider_position_cost(&half, DVec3::new(0.075, 0.0, 0.0), 0.03);
+        assert!(rider_position_cost(&half, at_target, 0.03, 0.0).abs() < 1e-12);
+        let off = rider_position_cost(&half, DVec3::new(0.075, 0.0, 0.0), 0.03, 0.0);
         assert!((off - 0.5).abs() < 1e-9, "{off}");
+    }
+
+    #[test]
+    fn a_bike_that_holds_the_rider_costs_a_released_stick_away_from_the_riding_pose() {
+        // 6 cm right of the riding pose, tolerance 3 cm: (0.06 / 0.03)² = 4 at full hold.
+        let off = DVec3::new(0.0, 0.2, 0.06);
+        let released = RiderPosition::NEUTRAL;
+        assert_eq!(rider_position_cost(&released, off, 0.03, 0.0), 0.0);
+        let held = rider_position_cost(&released, off, 0.03, 0.1);
+        assert!((held - 0.4).abs() < 1e-9, "{held}");
+        // A stick held harder than the hold is held as firmly as the stick says.
+        let half_right = RiderPosition {
+            forward: 0.0,
+            right: 0.5,
+        };
+        let asked = half_right.com_offset();
+        let firm = rider_position_cost(&half_right, asked + off, 0.03, 0.1);
+        assert!((firm - 2.0).abs() < 1e-9, "{firm}");
     }
 
     #[test]

@@ -5,8 +5,10 @@
 //! measured against the lifted support point, so the balance point costs nothing. A bike
 //! with `planners_cost_frame_roll` has its frame's roll costed instead, and one with a
 //! `planners_slide_tolerance` its tyres' sideways slide too; one with a
-//! `planners_grip_share` asks no deeper lean than that share of its tyres' grip holds, and
-//! one with `planners_lean_reference` asks it on the way from the plan's start.
+//! `planners_grip_share` asks no deeper lean than that share of its tyres' grip holds, one
+//! with `planners_lean_reference` asks it on the way from the plan's start, one with
+//! `planners_lean_lookahead` costs the lean its roll is heading for, and one with
+//! `planners_rider_hold` keeps the rider's weight near the riding pose unasked.
 
 use std::sync::Arc;
 
@@ -16,7 +18,7 @@ use super::arcade::ArcadeController;
 use super::cpbp::{Priors, RolloutSystem};
 use super::lean::{
     current_lean_vector, desired_lean_vector, fall_time_scale, frame_roll_cost, grip_lean_limit,
-    lean_cost, lean_on_the_way, roll_lean_cost,
+    lean_ahead, lean_cost, lean_on_the_way, roll_lean_cost,
 };
 use super::learned::PolicyNetwork;
 use super::Goal;
@@ -103,10 +105,10 @@ impl BikeRollout {
         controls
     }
 
-    /// Where the plan starts: the lean the cost holds (the frame's roll, or eq. 4.7's
-    /// centre of mass over the tyres' contact line, signed about the heading) and how fast
-    /// the bike falls from it.
-    fn plan_start(&self) -> PlanStart {
+    /// The lean the cost holds now (the frame's roll, or eq. 4.7's centre of mass over the
+    /// tyres' contact line, signed about the heading) and how fast the bike falls from it:
+    /// where a plan starts, or where a step that looks ahead sets off from.
+    fn costed_lean(&self) -> PlanStart {
         let toward =
             self.bike.center_of_mass(&self.world) - self.bike.support_point(&self.world, self.up);
         let lean = if self.bike.params().planners_cost_frame_roll {
@@ -136,6 +138,17 @@ impl BikeRollout {
         let t = (step + 1) as f64 * self.step_dt;
         lean_on_the_way(self.start.lean, asked, t, self.start.fall_time)
     }
+
+    /// The lean cost of a bike whose planners look ahead (`BikeParams::
+    /// planners_lean_lookahead`): the costed lean carried on by the frame's roll rate for
+    /// the time scale of the bike's fall, against the goal. The frame's rate stands for
+    /// the centre of mass's: with the rider held (`planners_rider_hold`) they differ little.
+    fn lean_ahead_cost(&self, lean_goal: f64) -> f64 {
+        let now = self.costed_lean();
+        let rate = self.bike.lean_rate(&self.world, self.up);
+        let ahead = lean_ahead(now.lean, rate, now.fall_time);
+        frame_roll_cost(ahead, lean_goal, self.tolerances.lean)
+    }
 }
 
 impl RolloutSystem for BikeRollout {
@@ -154,7 +167,7 @@ impl RolloutSystem for BikeRollout {
     fn step(&mut self, u: &[f64], step: usize) -> Option<f64> {
         let controls = self.controls_for(u);
         if step == 0 && self.bike.params().planners_lean_reference {
-            self.start = self.plan_start();
+            self.start = self.costed_lean();
         }
         let asked = self.goal.pitch_request();
         let period = self.stepping.ode_steps_at(step, self.step_dt);
@@ -177,7 +190,10 @@ impl RolloutSystem for BikeRollout {
             .ok()?;
         let params = self.bike.params();
         let lean_goal = self.goal_lean(step);
-        let lean = if params.planners_cost_frame_roll {
+        let pitching = held.lift > 0.0 || held.air != 0.0 || held.stoppie > 0.0;
+        let lean = if params.planners_lean_lookahead && !pitching {
+            self.lean_ahead_cost(lean_goal)
+        } else if params.planners_cost_frame_roll {
             // The frame's roll is about the heading: a wheelie's pitch never enters it.
             let roll = self.bike.lean(&self.world, self.up);
             frame_roll_cost(roll, lean_goal, self.tolerances.lean)
@@ -191,18 +207,20 @@ impl RolloutSystem for BikeRollout {
             );
             // Pitching on request (a wheelie, a turn in the air), the pitch is the bike's
             // to hold: the planners answer for the roll alone.
-            if held.lift > 0.0 || held.air != 0.0 || held.stoppie > 0.0 {
+            if pitching {
                 roll_lean_cost(desired, current, heading, self.tolerances.lean)
             } else {
                 lean_cost(desired, current, self.tolerances.lean)
             }
         };
-        // Only when asked: measuring the rider costs a little in every rollout step.
-        let rider = if self.goal.rider.engagement() > 0.0 {
+        // Only when asked or held: measuring the rider costs a little in every step.
+        let hold = params.planners_rider_hold;
+        let rider = if self.goal.rider.engagement() > 0.0 || hold > 0.0 {
             rider_position_cost(
                 &self.goal.rider,
                 self.bike.rider_offset(&self.world),
                 self.tolerances.rider,
+                hold,
             )
         } else {
             0.0

@@ -78,6 +78,13 @@ pub fn lean_on_the_way(start: f64, asked: f64, t: f64, tau: f64) -> f64 {
     asked + (start - asked) * (-t / tau.max(1e-6)).exp()
 }
 
+/// The lean (rad) a bike rolling at `rate` (rad/s) reaches in `tau` s, its fall's time
+/// scale, if the roll goes on: what a lean cost looking ahead holds to the goal
+/// (`BikeParams::planners_lean_lookahead`), as a sliding surface e + τ·ė does.
+pub fn lean_ahead(lean: f64, rate: f64, tau: f64) -> f64 {
+    lean + rate * tau
+}
+
 /// The player's turn: a stick value in [−1, 1] (positive right) scales the curvature up
 /// to `max_curvature`; the lean it asks for is limited to `max_lean`, the bike's
 /// (`BikeParams::max_lean`), so the player cannot ask for more than the bike can hold at

@@ -141,12 +141,13 @@ fn optimizer_session(sim: &Simulation) -> PlanningSession {
 }
 
 /// The street bike's planning fields at work (`planners_exact_from_lean`, the master's
-/// stepping from 30°; `planners_grip_share`, the goal held to 0.9 of the grip): arcade
-/// takes it to 60 km/h, then optimizer-10 is asked for 45° of frame roll and holds it,
-/// where the thesis's cost and the model's rollouts fell out of this bend
-/// (docs/benchmarks.md, "Rollout fidelity"). Over 30 seeds it still falls in a few
-/// (docs/scenarios/street_390): this seed is one it holds, a test of the fields, not of
-/// the rate.
+/// stepping from 30°; `planners_grip_share`, the goal held to 0.9 of the grip; the cost of
+/// the lean ahead, of the tyres' slide and of the rider's weight off the riding pose):
+/// arcade takes it to 60 km/h, then optimizer-10 is asked for 45° of frame roll and holds
+/// it, where the thesis's cost and the model's rollouts fell out of this bend
+/// (docs/benchmarks.md, "Rollout fidelity"). The rate over 30 seeds at three headings is
+/// the scenario table's (docs/scenarios/street_390): this is one seed, a test of the
+/// fields, not of the rate.
 #[test]
 fn optimizer_10_holds_the_street_bikes_45_degrees_at_60_kmh() {
     let sim = common::flat_ride_with(SimulationConfig {

@@ -119,3 +119,41 @@ fn the_lean_reference_asks_the_first_steps_for_a_lean_on_the_way_from_the_start(
     // A later step of the same plan asks from the same start, closer to the goal.
     assert!(referenced.goal_lean(20) > 0.9 * asked);
 }
+
+/// A rollout of `bike` standing upright with every body turning at `rate` rad/s about
+/// the tyres' contact line (the heading at the ground), as a bike starts to fall.
+fn rolling_rollout(bike: BikeParams, rate: f64) -> BikeRollout {
+    let mut rollout = standing_rollout(bike);
+    let heading = rollout.bike.heading(&rollout.world, rollout.up);
+    let spin = heading * rate;
+    for body in 0..rollout.world.body_count() {
+        let id = crate::ode::BodyId(body);
+        let from_line = rollout.world.body_position(id).reject_from(heading);
+        rollout.world.set_body_angular_velocity(id, spin);
+        rollout
+            .world
+            .set_body_linear_velocity(id, spin.cross(from_line));
+    }
+    rollout
+}
+
+#[test]
+fn looking_ahead_costs_the_lean_the_roll_is_heading_for() {
+    let mut thesis = rolling_rollout(BikeParams::default(), 1.0);
+    let mut ahead = rolling_rollout(
+        BikeParams {
+            planners_lean_lookahead: true,
+            ..BikeParams::default()
+        },
+        1.0,
+    );
+    let (now, looking) = first_step_of_both(&mut thesis, &mut ahead);
+    let costed = ahead.costed_lean();
+    let rate = ahead.bike.lean_rate(&ahead.world, ahead.up);
+    assert!(rate > 0.8, "still rolling right after one step: {rate}");
+    let expected = ((costed.lean + rate * costed.fall_time) / ahead.tolerances.lean).powi(2);
+    assert!((looking - expected).abs() < 1e-9, "{looking} ≠ {expected}");
+    // Nearly upright and falling away from an upright goal, looking ahead costs the lean
+    // a quarter of a second on, many times today's cost of where the bike is.
+    assert!(looking > 4.0 * now, "{looking} against {now}");
+}
