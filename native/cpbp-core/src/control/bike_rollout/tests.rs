@@ -157,3 +157,26 @@ fn looking_ahead_costs_the_lean_the_roll_is_heading_for() {
     // a quarter of a second on, many times today's cost of where the bike is.
     assert!(looking > 4.0 * now, "{looking} against {now}");
 }
+
+#[test]
+fn a_bike_that_holds_the_rider_costs_a_released_riders_weight_off_the_riding_pose() {
+    let hold = 0.1;
+    let mut free = standing_rollout(BikeParams::default());
+    let mut held = standing_rollout(BikeParams {
+        planners_rider_hold: hold,
+        ..BikeParams::default()
+    });
+    assert_eq!(held.goal.rider.engagement(), 0.0, "the stick is released");
+    let (without, with) = first_step_of_both(&mut free, &mut held);
+    let off = held.bike.rider_offset(&held.world);
+    let tolerance = held.tolerances.rider;
+    let expected = hold * (off.x * off.x + off.z * off.z) / (tolerance * tolerance);
+    assert!(
+        expected > 0.0,
+        "the standing rider sits off the riding pose: {off}"
+    );
+    assert!(
+        (with - without - expected).abs() < 1e-9,
+        "{with} − {without} ≠ {expected}"
+    );
+}
