@@ -130,6 +130,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "planners_lean_reference", "", 0.0, 1.0, 1.0, ON_OFF, flag planners_lean_reference },
     field! { "planners_lean_lookahead", "", 0.0, 1.0, 1.0, ON_OFF, flag planners_lean_lookahead },
     field! { "planners_rider_hold", "", 0.0, 1.0, 0.01, SAME, planners_rider_hold },
+    field! { "planners_rider_hold_speed", "m/s", 0.0, 30.0, 0.1, SAME, planners_rider_hold_speed },
     field! { "engine/max_torque", "N·m", 50.0, 3_000.0, 10.0, SAME, rear_drive.max_torque },
     field! { "engine/max_power_kw", "kW", 0.0, 300.0, 0.5, SAME, rear_drive.max_power_kw },
     field! { "rear_brake/max_torque", "N·m", 50.0, 3_000.0, 10.0, SAME, rear_drive.brake_torque },

@@ -138,6 +138,10 @@ pub struct BikeParams {
     /// else keeps the weight on the bike: the street bike's optimizer let it creep 20 cm
     /// inside the 45° bend until the centre of mass passed the grip; it holds it at 0.1.
     pub planners_rider_hold: f64,
+    /// The forward speed (m/s) from which `planners_rider_hold` holds at full strength:
+    /// below it the hold fades in proportion to the speed, none at rest, where the body
+    /// balances the bike. 0 (the default) holds at every speed.
+    pub planners_rider_hold_speed: f64,
     /// The drive and brake at the rear wheel (`RearWheelDrive`): the engine's torque and
     /// power, the rear brake's torque.
     pub rear_drive: RearWheelDrive,
@@ -183,6 +187,7 @@ impl Default for BikeParams {
             planners_lean_reference: false,
             planners_lean_lookahead: false,
             planners_rider_hold: 0.0,
+            planners_rider_hold_speed: 0.0,
             rear_drive: RearWheelDrive::default(),
             suspension: Some(Suspension::default()),
             wheelie_control: Some(WheelieControl::default()),
@@ -193,6 +198,17 @@ impl Default for BikeParams {
 }
 
 impl BikeParams {
+    /// How firmly the planners hold a released rider at `forward_speed` (m/s): the full
+    /// `planners_rider_hold` from `planners_rider_hold_speed` up, less in proportion
+    /// below it, none at rest or backwards.
+    pub fn planners_rider_hold_at(&self, forward_speed: f64) -> f64 {
+        let full_from = self.planners_rider_hold_speed;
+        if full_from <= 0.0 {
+            return self.planners_rider_hold;
+        }
+        self.planners_rider_hold * (forward_speed / full_from).clamp(0.0, 1.0)
+    }
+
     /// The same bike without suspension: lower legs fixed to the fork, swingarm to the
     /// frame (and no anti-wheelie, which reads the fork, and no feet: the thesis's bike).
     pub fn rigid(&self) -> Self {

@@ -214,7 +214,11 @@ impl RolloutSystem for BikeRollout {
             }
         };
         // Only when asked or held: measuring the rider costs a little in every step.
-        let hold = params.planners_rider_hold;
+        let hold = if params.planners_rider_hold > 0.0 {
+            params.planners_rider_hold_at(self.bike.forward_speed(&self.world, self.up))
+        } else {
+            0.0
+        };
         let rider = if self.goal.rider.engagement() > 0.0 || hold > 0.0 {
             rider_position_cost(
                 &self.goal.rider,

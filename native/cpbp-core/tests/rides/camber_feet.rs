@@ -152,13 +152,13 @@ fn the_planners_stop_and_ride_off_a_10_degree_camber_on_legs_that_reach() {
             let lean = stand.downhill_lean;
             assert!(lean.abs() < 5.0, "{kind:?} stood {lean:.1}° on {degrees}°");
             let riding_off = stand.riding_off.expect("rode off");
-            // Holding the released rider near the riding pose (the street bike's
-            // `planners_rider_hold`) takes the body from the optimizer's balance at walking
-            // pace: on the camber falling left it leaned 20.3° riding off, 9.1° without the
-            // hold (combined 6.3° either way). Bounded loosely until the hold fades at
-            // walking pace.
+            // Held near the riding pose at every speed (`planners_rider_hold`), the
+            // released rider lost the body's balance at walking pace: optimizer-10 leaned
+            // 20.3° riding off the camber falling left, 9.1° without the hold. With the
+            // hold fading out below 5 m/s (`planners_rider_hold_speed`) it leans
+            // 5.4° and 5.9°, combined 6.2° and 6.3°.
             assert!(
-                riding_off < 25.0,
+                riding_off < 20.0,
                 "{kind:?} leaned {riding_off:.1}° riding off"
             );
         }

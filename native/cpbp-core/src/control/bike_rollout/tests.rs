@@ -180,3 +180,31 @@ fn a_bike_that_holds_the_rider_costs_a_released_riders_weight_off_the_riding_pos
         "{with} − {without} ≠ {expected}"
     );
 }
+
+#[test]
+fn the_rider_hold_fades_out_towards_rest() {
+    let bike = BikeParams {
+        planners_rider_hold: 0.1,
+        planners_rider_hold_speed: 4.0,
+        ..BikeParams::default()
+    };
+    assert_eq!(bike.planners_rider_hold_at(8.0), 0.1);
+    assert!((bike.planners_rider_hold_at(1.0) - 0.025).abs() < 1e-15);
+    assert_eq!(bike.planners_rider_hold_at(0.0), 0.0);
+    assert_eq!(bike.planners_rider_hold_at(-2.0), 0.0, "backwards: none");
+    // A bike standing still holds its rider a speed's worth: next to nothing.
+    let mut free = standing_rollout(BikeParams::default());
+    let mut held = standing_rollout(bike.clone());
+    let (without, with) = first_step_of_both(&mut free, &mut held);
+    let speed = held.bike.forward_speed(&held.world, held.up);
+    let off = held.bike.rider_offset(&held.world);
+    let tolerance = held.tolerances.rider;
+    let full = 0.1 * (off.x * off.x + off.z * off.z) / (tolerance * tolerance);
+    let expected = bike.planners_rider_hold_at(speed) / 0.1 * full;
+    assert!(speed.abs() < 0.1, "standing: {speed} m/s");
+    assert!(
+        (with - without - expected).abs() < 1e-9,
+        "{with} − {without} ≠ {expected}"
+    );
+    assert!(with - without < 0.03 * full, "faded to under 3 % at rest");
+}
