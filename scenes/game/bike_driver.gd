@@ -21,6 +21,10 @@ var auto_accelerate := false
 var auto_speed_kmh: float = Settings.schema_entry(&"auto_speed_kmh").default
 ## An automatic level: it accelerates by itself and ignores the turn command.
 var automatic := false
+## An automatic level's attempt is over (the goal reached, or out of time): until the
+## level starts the next one the rider brakes to a stop, whatever the triggers, so the bike
+## waits at the goal rather than riding on over the level's end.
+var stopping := false
 ## Top speed (km/h) of full throttle when driving by hand.
 var max_speed_kmh: float = Settings.schema_entry(&"max_speed_kmh").default
 ## Who balances and steers, by the registry's name: the player's choice, saved as it is;
@@ -50,7 +54,10 @@ func _physics_process(_delta: float) -> void:
 	if bike == null:
 		return
 	brake = Input.get_action_strength(&"brake")
-	if auto_accelerate or automatic:
+	if stopping:
+		throttle = 0.0
+		brake = 1.0
+	elif auto_accelerate or automatic:
 		bike.max_speed_kmh = auto_speed_kmh
 		throttle = AUTO_THROTTLE
 	else:

@@ -164,6 +164,7 @@ func _unhandled_input(event: InputEvent) -> void:
 	elif event.is_action_pressed(&"lift_bike"):
 		bike.lift_upright()
 		_finished_for = -1.0
+		_driver.stopping = false
 	elif event.is_action_pressed(&"next_spawn"):
 		cycle_spawn(1)
 	elif event.is_action_pressed(&"previous_spawn"):
@@ -197,6 +198,7 @@ func restart() -> void:
 	level.begin_attempt(bike, _attempt_seed)
 	_attempt_seed += 1
 	_finished_for = -1.0
+	_driver.stopping = false
 
 
 ## Shows the replay of the last run (the game stays paused); back to the pause menu after.
@@ -254,6 +256,7 @@ func quit_to_menu() -> void:
 
 func _finish(outcome: String) -> void:
 	_finished_for = 0.0
+	_driver.stopping = level.automatic
 	attempts += 1
 	match outcome:
 		Level.GOAL:
