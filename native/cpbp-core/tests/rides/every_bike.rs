@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use crate::common;
 
-use cpbp_core::bike::{read_bike_file, BikeFile, REFERENCE_BIKE};
+use cpbp_core::bike::{read_bike_file, BikeFile, FIELDS, REFERENCE_BIKE};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::settings::BIKE;
@@ -145,6 +145,31 @@ fn arcade_and_combined_stand_ride_bend_and_stop_every_bike_with_no_tuning_of_the
     for (_, bike) in choices {
         for kind in [ControllerKind::ARCADE, ControllerKind::COMBINED] {
             stand_ride_bend_and_stop(&bike, kind);
+        }
+    }
+}
+
+#[test]
+fn the_bikes_a_player_chooses_share_the_planners_cost_with_no_tuning_of_their_own() {
+    // The planners simulate the bike they ride: what differs between the bikes is the
+    // bike, not how the planners cost a ride (the reference keeps the thesis's cost).
+    let chosen: Vec<(PathBuf, BikeFile)> = shipped_bikes()
+        .into_iter()
+        .filter(|(path, _)| path.file_stem().is_some_and(|s| s != REFERENCE_BIKE))
+        .collect();
+    let planners_fields = || FIELDS.iter().filter(|f| f.name.starts_with("planners_"));
+    assert!(planners_fields().count() >= 6, "the planners' fields");
+    let (first_path, first) = &chosen[0];
+    for (path, bike) in &chosen[1..] {
+        for field in planners_fields() {
+            assert_eq!(
+                field.value(&bike.params),
+                field.value(&first.params),
+                "{} in {} and {}",
+                field.name,
+                path.display(),
+                first_path.display()
+            );
         }
     }
 }
