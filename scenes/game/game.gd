@@ -257,6 +257,7 @@ func quit_to_menu() -> void:
 func _finish(outcome: String) -> void:
 	_finished_for = 0.0
 	_driver.stopping = level.automatic
+	level.finish_attempt(outcome)
 	attempts += 1
 	match outcome:
 		Level.GOAL:

@@ -58,6 +58,14 @@ func judge(bike: BikeSimulation, delta: float) -> String:
 	return RIDING
 
 
+## The game judged the attempt (`outcome`, not RIDING) and shows its result until the next
+## `begin_attempt`: a level may open what only a finished attempt reaches (the test level's
+## run-off past its goal). The experiment never calls it, so its attempts ride the level
+## exactly as it judges them.
+func finish_attempt(_outcome: String) -> void:
+	pass
+
+
 ## One line for the HUD about the attempt (timer, lap, best).
 func status_line() -> String:
 	return "time %s" % format_time(elapsed)

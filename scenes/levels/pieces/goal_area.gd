@@ -4,6 +4,9 @@ extends Node3D
 ## A box the bike has to reach: `contains` tells whether a point (the bike's centre of
 ## mass) is inside. Shown as a translucent green volume with a chequered line.
 
+## How far (m) the drawn volume's bottom sits above the box's.
+const VISUAL_INSET := 0.02
+
 ## Size of the box (m), centred on this node.
 @export var size := Vector3(25.0, 3.0, 4.0):
 	set(value):
@@ -31,8 +34,11 @@ func _build() -> void:
 		_mesh.name = "Volume"
 		_mesh.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 		add_child(_mesh)
+	# Drawn a little inside its box: its bottom face on the floor it stands on would fight
+	# the floor's for the same depth, striping the ground around a bike standing there.
 	var box := BoxMesh.new()
-	box.size = size
+	box.size = size - Vector3(0.0, VISUAL_INSET, 0.0)
+	_mesh.position.y = VISUAL_INSET / 2.0
 	var material := StandardMaterial3D.new()
 	material.albedo_color = Color(0.2, 0.9, 0.35, 0.25)
 	material.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA

@@ -20,6 +20,10 @@ var _start := Vector3.ZERO
 
 @onready var _bumps: BumpField = $Bumps
 @onready var _goal: GoalArea = $Goal
+## The floor past the goal, where a bike that reached it brakes to a stop. Its shape is
+## off during an attempt: the course is the thesis's, its floor ending 4 m past where the
+## goal begins, which the planners' rollouts see as they near the goal.
+@onready var _run_off: CollisionShape3D = $RunOff/Shape
 
 
 func begin_attempt(bike: BikeSimulation, seed_value: int) -> void:
@@ -27,7 +31,16 @@ func begin_attempt(bike: BikeSimulation, seed_value: int) -> void:
 	_start = bike.get_center_of_mass()
 	attempt_time_limit = 0.0
 	_bumps.regenerate(seed_value)
+	_run_off.disabled = true
 	terrain_changed.emit()
+
+
+## Past the goal the floor goes on, long enough to brake to a stop from the top of
+## auto-accelerate's range (60 km/h at 0.75 g: 19 m).
+func finish_attempt(outcome: String) -> void:
+	if outcome == GOAL:
+		_run_off.disabled = false
+		terrain_changed.emit()
 
 
 func judge(bike: BikeSimulation, delta: float) -> String:
