@@ -168,12 +168,10 @@ fn a_bike_that_holds_the_rider_costs_a_released_riders_weight_off_the_riding_pos
     });
     assert_eq!(held.goal.rider.engagement(), 0.0, "the stick is released");
     let (without, with) = first_step_of_both(&mut free, &mut held);
-    let off = held.bike.rider_offset(&held.world);
-    let tolerance = held.tolerances.rider;
-    let expected = hold * (off.x * off.x + off.z * off.z) / (tolerance * tolerance);
+    let expected = hold * off_the_riding_pose(&held);
     assert!(
         expected > 0.0,
-        "the standing rider sits off the riding pose: {off}"
+        "the standing rider sits off the riding pose"
     );
     assert!(
         (with - without - expected).abs() < 1e-9,
@@ -197,14 +195,20 @@ fn the_rider_hold_fades_out_towards_rest() {
     let mut held = standing_rollout(bike.clone());
     let (without, with) = first_step_of_both(&mut free, &mut held);
     let speed = held.bike.forward_speed(&held.world, held.up);
-    let off = held.bike.rider_offset(&held.world);
-    let tolerance = held.tolerances.rider;
-    let full = 0.1 * (off.x * off.x + off.z * off.z) / (tolerance * tolerance);
-    let expected = bike.planners_rider_hold_at(speed) / 0.1 * full;
     assert!(speed.abs() < 0.1, "standing: {speed} m/s");
+    let faded = bike.planners_rider_hold_at(speed);
+    assert!(faded < 0.03 * 0.1, "faded to under 3 % at rest: {faded}");
+    let expected = faded * off_the_riding_pose(&held);
     assert!(
         (with - without - expected).abs() < 1e-9,
         "{with} − {without} ≠ {expected}"
     );
-    assert!(with - without < 0.03 * full, "faded to under 3 % at rest");
+}
+
+/// How far the rollout's rider sits off the riding pose, fore/aft and sideways, squared in
+/// units of the rider tolerance: what a full stick's firmness costs.
+fn off_the_riding_pose(rollout: &BikeRollout) -> f64 {
+    let off = rollout.bike.rider_offset(&rollout.world);
+    let tolerance = rollout.tolerances.rider;
+    (off.x * off.x + off.z * off.z) / (tolerance * tolerance)
 }
