@@ -55,6 +55,14 @@ fn the_game_ships_a_reference_and_three_bikes_to_choose_each_named_once() {
     assert_eq!(offered, files);
 }
 
+/// The unseen bike: a test fixture (tests/fixtures/bikes) that no controller was tuned on
+/// and no network trained on, never offered in the game.
+fn unseen_bike() -> BikeFile {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/fixtures/bikes/naked_700.tres");
+    read_bike_file(&path).unwrap_or_else(|why| panic!("{why}"))
+}
+
 fn lean_deg(ride: &Ride) -> f64 {
     common::lean(ride).to_degrees()
 }
@@ -138,11 +146,11 @@ fn stand_ride_bend_and_stop(bike: &BikeFile, kind: ControllerKind) {
 )]
 fn arcade_and_combined_stand_ride_bend_and_stop_every_bike_with_no_tuning_of_their_own() {
     // The thesis's rigid bike has no feet to stand on: it is the research's reference,
-    // not a bike to choose.
+    // not a bike to choose. The unseen bike rides too: nothing was tuned on it.
     let choices = shipped_bikes()
         .into_iter()
         .filter(|(path, _)| path.file_stem().is_some_and(|stem| stem != REFERENCE_BIKE));
-    for (_, bike) in choices {
+    for bike in choices.map(|(_, bike)| bike).chain([unseen_bike()]) {
         for kind in [ControllerKind::ARCADE, ControllerKind::COMBINED] {
             stand_ride_bend_and_stop(&bike, kind);
         }
@@ -153,9 +161,15 @@ fn arcade_and_combined_stand_ride_bend_and_stop_every_bike_with_no_tuning_of_the
 fn the_bikes_a_player_chooses_share_the_planners_cost_with_no_tuning_of_their_own() {
     // The planners simulate the bike they ride: what differs between the bikes is the
     // bike, not how the planners cost a ride (the reference keeps the thesis's cost).
+    // The unseen bike carries the same cost: what carries to it is the planners'.
+    let unseen = (
+        PathBuf::from("tests/fixtures/bikes/naked_700.tres"),
+        unseen_bike(),
+    );
     let chosen: Vec<(PathBuf, BikeFile)> = shipped_bikes()
         .into_iter()
         .filter(|(path, _)| path.file_stem().is_some_and(|s| s != REFERENCE_BIKE))
+        .chain([unseen])
         .collect();
     let planners_fields = || FIELDS.iter().filter(|f| f.name.starts_with("planners_"));
     assert!(planners_fields().count() >= 6, "the planners' fields");
