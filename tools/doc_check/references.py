@@ -9,9 +9,10 @@ import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
-# Paths into the project's own folders, as prose and comments write them.
-PATH = re.compile(r"(?<![\w./-])((?:docs|tools|scripts|scenes|native|tests|addons|models|\.ci)"
-                  r"/[\w./-]*[\w])")
+# Paths into the project's own folders, as prose and comments write them (a run of
+# one bike with another's network is a folder such as docs/experiment/naked_700+street_390).
+PATH = re.compile(r"(?<![\w./+-])((?:docs|tools|scripts|scenes|native|tests|addons|models|\.ci)"
+                  r"/[\w./+-]*[\w])")
 LINK = re.compile(r"\]\(([^)\s]+)\)")
 # `results.md, "Planners side by side"` or `results.md "Lean reversals"`.
 SECTION = re.compile(r"([\w./-]+\.md)(?:'s)?,? \"([A-Za-z][^\"]*)\"")

@@ -117,7 +117,9 @@ class DocCheckTest(unittest.TestCase):
         (root / "tools").mkdir()
         (root / "docs/a.md").write_text("# A\n\n## Lean reversals\n\n[b](b.md#nowhere) "
                                         "[self](#lean-reversals) [gone](gone.md)\n")
-        (root / "docs/b.md").write_text("# B\n")
+        (root / "docs/b.md").write_text("# B\n\ndocs/bike+net/r.md, docs/gone+net/r.md\n")
+        (root / "docs/bike+net").mkdir()
+        (root / "docs/bike+net/r.md").write_text("# R\n")
         (root / "tools/x.sh").write_text("# See docs/a.md, \"Lean\n# reversals\" and "
                                          "docs/a.md, \"Planners\" and tools/y.py.\n")
         subprocess.run(["git", "init", "-q"], cwd=root, check=True)
@@ -125,6 +127,7 @@ class DocCheckTest(unittest.TestCase):
         self.assertEqual(found, [
             "docs/a.md:5: link to a missing file: gone.md",
             "docs/a.md:5: link to a missing heading: b.md#nowhere",
+            "docs/b.md:3: no such file or folder: docs/gone+net/r.md",
             'tools/x.sh:1: docs/a.md has no section "Planners"',
             "tools/x.sh:2: no such file or folder: tools/y.py",
         ])
