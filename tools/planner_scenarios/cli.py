@@ -75,6 +75,9 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--physics", default="exact", choices=("classic", "exact"))
     parser.add_argument("--bike", default=None, help="a bike file to ride (default: the "
                         "reference bike); keep its rows in an --out of their own")
+    parser.add_argument("--model", default=None, help="the network learned and guided "
+                        "ride (default: the bike's own, models/policy-<bike>.safetensors): "
+                        "another bike's, to see how far it carries")
     parser.add_argument("--compare", default=None, help="report: another table's directory "
                         "(another bike's), compared side by side in OUT/comparison.md")
     return parser
@@ -88,6 +91,8 @@ def ride(args: argparse.Namespace, rows: ScenarioRows) -> None:
                "--seeds", args.seeds, "--scenarios", args.scenarios, "--physics", args.physics]
     if args.bike:
         command += ["--bike", args.bike]
+    if args.model:
+        command += ["--model", args.model]
     if rows.path.exists():
         command += ["--skip", str(rows.path)]
     with subprocess.Popen(command, stdout=subprocess.PIPE, text=True) as process:

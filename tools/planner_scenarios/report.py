@@ -34,8 +34,8 @@ METRICS = {
        for d in (5, 8, 10) for side in ("left", "right")},
     "slope10-across45": "stop across a 10° slope at 45°, stand, ride off: largest lean "
                         "from upright (°)",
-    **{f"bend45-h{h}": f"45° asked at 60 km/h heading {deg}°: RMS lean error over the last "
-                       "3 s (°)"
+    **{f"bend45-h{h}": f"45° asked at 60 km/h heading {deg}° (or the bike's deepest lean, "
+                       "if less): RMS lean error over the last 3 s (°)"
        for h, deg in (("0", "0"), ("22", "22.5"), ("45", "45"))},
     "lowside-wet": "the deepest lean asked at 60 km/h on a wet road (μ 0.5): 1 if it fell "
                    "in a low-side",

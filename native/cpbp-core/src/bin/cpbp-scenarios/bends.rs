@@ -3,8 +3,10 @@
 //! which must end in a low-side, the tyres sliding out, not another kind of fall.
 //!
 //! - `bend45-h0`, `bend45-h22`, `bend45-h45`: 60 km/h heading 0°, 22.5° or 45° from the
-//!   world's x axis, then 45° of right lean asked for 6 s. Metric: the RMS error from
-//!   45° over the last 3 s (°). Also reported: the mean lean then, the radius ridden
+//!   world's x axis, then 45° of right lean asked for 6 s, or the bike's deepest lean
+//!   (`max_lean_deg`) where that is less: a bike on knobblies is asked as far as its own
+//!   tyres hold, not into a low-side. Metric: the RMS error from the lean asked over the
+//!   last 3 s (°). Also reported: the mean lean then, the radius ridden
 //!   (the mean speed over the mean yaw rate: the mean of their ratio runs to kilometres
 //!   when a wobble stops the yaw for an instant) and the one eq. 4.3 gives that lean at that speed
 //!   (r = v² / (g tan θ)).
@@ -23,15 +25,18 @@ use super::{mean_planning_ms, ridden_bike, ride_bike_on, Outcome, Rider, STEPS_P
 pub const SCENARIOS: [&str; 4] = ["bend45-h0", "bend45-h22", "bend45-h45", "lowside-wet"];
 
 const KMH: f64 = 60.0;
+/// The deep bends' lean: street tyres' limit (issue 68).
+const DEEP_BEND_DEG: f64 = 45.0;
 /// Wet asphalt's grip, about half of dry (road-safety tables give 0.4–0.6).
 const WET: f64 = 0.5;
 
 pub fn ride(scenario: &str, rider: Rider) -> Outcome {
     let mut bike = ridden_bike();
+    let deep = DEEP_BEND_DEG.min(bike.max_lean.to_degrees());
     let (heading_deg, lean_deg) = match scenario {
-        "bend45-h0" => (0.0, 45.0),
-        "bend45-h22" => (22.5, 45.0),
-        "bend45-h45" => (45.0, 45.0),
+        "bend45-h0" => (0.0, deep),
+        "bend45-h22" => (22.5, deep),
+        "bend45-h45" => (45.0, deep),
         _ => {
             bike.tyre_friction = WET;
             (0.0, bike.max_lean.to_degrees())
