@@ -20,7 +20,9 @@ use cpbp_core::ride::{Intent, Ride};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
 
-use super::{mean_planning_ms, ridden_bike, ride_bike_on, Outcome, Rider, STEPS_PER_SECOND};
+use super::{
+    fall_cause, mean_planning_ms, ridden_bike, ride_bike_on, Outcome, Rider, STEPS_PER_SECOND,
+};
 
 pub const SCENARIOS: [&str; 4] = ["bend45-h0", "bend45-h22", "bend45-h45", "lowside-wet"];
 
@@ -88,6 +90,7 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
         let low_side = crash.as_ref().and_then(|c| c.fall) == Some(Fall::LowSide);
         return Outcome {
             fell: crash.is_some(),
+            fall_cause: fall_cause(&ride),
             metric: f64::from(u8::from(low_side)),
             planning_ms: mean_planning_ms(&planning),
             measures: Vec::new(),
@@ -98,6 +101,7 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
     let g = ride.sim().config().gravity.length();
     Outcome {
         fell: !stayed_up || crash.is_some(),
+        fall_cause: fall_cause(&ride),
         metric: (mean(&errors.iter().map(|e| e * e).collect::<Vec<_>>()))
             .sqrt()
             .to_degrees(),

@@ -18,7 +18,7 @@
 use cpbp_core::control::TurnIntent;
 use cpbp_core::ride::{Intent, Ride};
 
-use super::{mean_planning_ms, new_ride, Outcome, Rider, STEPS_PER_SECOND};
+use super::{fall_cause, mean_planning_ms, new_ride, Outcome, Rider, STEPS_PER_SECOND};
 
 pub const SCENARIOS: [&str; 3] = ["brake60", "brake90", "brake-bend"];
 
@@ -52,7 +52,7 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
         ride.step();
         planning.extend(ride.plan().map(|p| p.planning_ms));
         if ride.sim().crashed().is_some() {
-            return fell(&planning);
+            return fell(&planning, fall_cause(&ride));
         }
     }
     let mut brake = cruise;
@@ -66,10 +66,11 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
     }
     let fell = ride.sim().crashed().is_some() || measured.is_none();
     let Some(stop) = measured.filter(|_| !fell) else {
-        return self::fell(&planning);
+        return self::fell(&planning, fall_cause(&ride));
     };
     Outcome {
         fell,
+        fall_cause: None,
         metric: stop.mean_g,
         planning_ms: mean_planning_ms(&planning),
         measures: vec![
@@ -84,9 +85,10 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
     }
 }
 
-fn fell(planning: &[f64]) -> Outcome {
+fn fell(planning: &[f64], fall_cause: Option<String>) -> Outcome {
     Outcome {
         fell: true,
+        fall_cause,
         metric: f64::NAN,
         planning_ms: mean_planning_ms(planning),
         measures: Vec::new(),

@@ -14,7 +14,9 @@
 use cpbp_core::ride::{Intent, Ride};
 use glam::{DMat3, DQuat, DVec3};
 
-use super::{heading_of, mean_planning_ms, new_ride_on_plane, Outcome, Rider, STEPS_PER_SECOND};
+use super::{
+    fall_cause, heading_of, mean_planning_ms, new_ride_on_plane, Outcome, Rider, STEPS_PER_SECOND,
+};
 
 pub const SCENARIOS: [&str; 7] = [
     "camber5-left",
@@ -90,6 +92,7 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
     phase(&mut ride, cruise, 4.0, true);
     Outcome {
         fell: ride.sim().crashed().is_some(),
+        fall_cause: fall_cause(&ride),
         metric: largest.to_degrees(),
         planning_ms: mean_planning_ms(&planning),
         measures: vec![

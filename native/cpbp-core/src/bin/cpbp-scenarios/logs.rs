@@ -9,7 +9,7 @@ use cpbp_core::grounds::LogField;
 use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::DVec3;
 
-use super::{heading_of, mean_planning_ms, ride_on, Outcome, Rider, STEPS_PER_SECOND};
+use super::{fall_cause, heading_of, mean_planning_ms, ride_on, Outcome, Rider, STEPS_PER_SECOND};
 
 pub const SCENARIO: &str = "logs";
 
@@ -50,6 +50,7 @@ pub fn ride(rider: Rider) -> Outcome {
     let rms = (leans.iter().map(|l| l * l).sum::<f64>() / leans.len().max(1) as f64).sqrt();
     Outcome {
         fell: ride.sim().crashed().is_some(),
+        fall_cause: fall_cause(&ride),
         metric: rms.to_degrees(),
         planning_ms: mean_planning_ms(&planning),
         measures: Vec::new(),

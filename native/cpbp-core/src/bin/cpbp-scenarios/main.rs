@@ -72,6 +72,9 @@ pub(crate) struct Rider {
 /// row's `extra` column, `name=value;…`).
 pub(crate) struct Outcome {
     pub fell: bool,
+    /// What brought the bike down, as the crash report names it (None: it stayed up, or
+    /// the scenario judged a fall of its own). Printed, not saved: the rows keep `fell`.
+    pub fall_cause: Option<String>,
     pub metric: f64,
     pub planning_ms: f64,
     pub measures: Vec<(&'static str, f64)>,
@@ -162,6 +165,13 @@ fn main() {
                         .iter()
                         .map(|(name, value)| format!("{name}={value:.4}"))
                         .collect();
+                    if o.fell {
+                        let cause = o
+                            .fall_cause
+                            .as_deref()
+                            .unwrap_or("no crash: the scenario's own judgement");
+                        eprintln!("cpbp-scenarios: {key} fell: {cause}");
+                    }
                     println!(
                         "{key},{},{:.4},{:.3},{}",
                         o.fell,
@@ -301,10 +311,16 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
     };
     Outcome {
         fell: ride.sim().crashed().is_some(),
+        fall_cause: fall_cause(&ride),
         metric,
         planning_ms: mean_planning_ms(&planning),
         measures: Vec::new(),
     }
+}
+
+/// What brought the ride's bike down, if it fell (`Outcome::fall_cause`).
+pub(crate) fn fall_cause(ride: &Ride) -> Option<String> {
+    ride.sim().crashed().map(|crash| crash.describe())
 }
 
 /// The mean planning time (ms) of a ride's plans; 0 for a controller that plans nothing
