@@ -120,6 +120,30 @@ class ReproducibleRidesTest(unittest.TestCase):
         rows = 12 if "optimizer" in controllers else 9
         self.assertIn(f"{rows} of {rows} rows re-ride exactly", checked.stdout)
 
+    def test_a_sample_of_each_bikes_committed_run_re_rides_exactly(self):
+        # docs/results.md, "Per bike": attempts 4-6 at walking pace, where the sport 600's
+        # first fall is (attempt 6), so a fall is among the rows re-ridden.
+        runs = {
+            "street_390": (["--bike", "scenes/bike/bikes/street_390.tres"], True),
+            "dirt_125": (["--bike", "scenes/bike/bikes/dirt_125.tres"], False),
+            "sport_600": (["--bike", "scenes/bike/bikes/sport_600.tres"], False),
+            "naked_700+street_390": (["--bike", "tests/fixtures/bikes/naked_700.tres",
+                                      "--model", "models/policy-street_390.safetensors"], True),
+        }
+        with tempfile.TemporaryDirectory() as directory:
+            fma = worker_platform(Path(directory) / "workers.log")["math_path"] == "fma"
+        for folder, (bike, learned) in runs.items():
+            # The network's tanh is libm's: like the optimizer's rows above, its rows were
+            # made on the FMA paths and need not repeat elsewhere.
+            learned = learned and fma
+            controllers = "arcade:exact,learned:exact" if learned else "arcade:exact"
+            checked = experiment("verify", "--out", str(PROJECT_ROOT / "docs/experiment" / folder),
+                                 *bike, "--attempts", "4-6", "--speeds", "10",
+                                 "--controllers", controllers)
+            self.assertEqual(checked.returncode, 0, folder + checked.stdout + checked.stderr)
+            rows = 6 if learned else 3
+            self.assertIn(f"{rows} of {rows} rows re-ride exactly", checked.stdout, folder)
+
     def _pretend_rows_came_from_another_c_library(self, out: Path, rows: list[dict]) -> None:
         platforms = json.loads((out / "platforms.json").read_text())
         (name, description), = platforms.items()
