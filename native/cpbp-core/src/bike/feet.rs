@@ -58,6 +58,14 @@ pub struct Feet {
     /// Pulling away, a reaching leg's foot stays down, a prop, below this forward speed
     /// (m/s), with the throttle open.
     pub prop_until: f64,
+    /// A reaching leg whose foot has not met the road keeps its length as the bike leans
+    /// towards it, rather than drawing back with its estimate of where the road is (the
+    /// bike rolled as a rigid body about its tyres' contact line). On a long, soft
+    /// suspension that estimate puts the road over a centimetre nearer than it is, and a
+    /// leg that follows it keeps its sole just off the road all the way down: the dirt
+    /// 125 on a 15° downhill leaned past 10° without its foot ever touching
+    /// (docs/bike-model.md). Off, the leg follows the estimate, as the street 390's does.
+    pub steady_reach: bool,
 }
 
 impl Default for Feet {
@@ -92,6 +100,7 @@ impl Default for Feet {
             leg_speed: 1.0,
             push_time: 1.0,
             prop_until: 1.4,
+            steady_reach: false,
         }
     }
 }

@@ -97,6 +97,12 @@ macro_rules! field {
         |b: &mut BikeParams, v| if let Some(p) = b.$part.as_mut() { p.$($field).+ = v; }
     };
     // A bool of the model, read and written as 1 or 0 (`ON_OFF`).
+    (@get flag $part:ident / $field:ident) => {
+        |b: &BikeParams| b.$part.as_ref().map(|p| if p.$field { 1.0 } else { 0.0 })
+    };
+    (@set flag $part:ident / $field:ident) => {
+        |b: &mut BikeParams, v| if let Some(p) = b.$part.as_mut() { p.$field = v != 0.0; }
+    };
     (@get flag $field:ident) => { |b: &BikeParams| Some(if b.$field { 1.0 } else { 0.0 }) };
     (@set flag $field:ident) => { |b: &mut BikeParams, v| b.$field = v != 0.0 };
     (@get $($field:ident).+) => { |b: &BikeParams| Some(b.$($field).+) };
@@ -193,6 +199,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "feet/leg_speed", "m/s", 0.1, 5.0, 0.1, SAME, feet / leg_speed },
     field! { "feet/push_time", "s", 0.05, 5.0, 0.05, SAME, feet / push_time },
     field! { "feet/prop_until", "m/s", 0.0, 5.0, 0.05, SAME, feet / prop_until },
+    field! { "feet/steady_reach", "", 0.0, 1.0, 1.0, ON_OFF, flag feet / steady_reach },
 ];
 
 /// The field called `name`.

@@ -93,7 +93,12 @@ impl Bike {
             } else {
                 let toward = rightward(side) * self.lean(world, up);
                 let touching = self.leg_to_lean(world, up, feet, side, toward);
-                propping.min(touching + INTO_THE_ROAD)
+                let reaching = propping.min(touching + INTO_THE_ROAD);
+                if feet.steady_reach {
+                    reaching.max(now.min(propping))
+                } else {
+                    reaching
+                }
             }
             .clamp(0.0, feet.reach);
             let mut step = feet.leg_speed * dt;
