@@ -3,7 +3,8 @@
 //! the weight already downhill, the bike rolls off it onto the downhill foot) and pulling
 //! away from there falls; with legs that reach (`Feet::reach`) the foot it leans to holds
 //! it 2.5° from upright, the uphill leg bent or the downhill one stretched, on either side,
-//! and it rides off.
+//! and it rides off. Facing down a 15° slope the dirt 125's foot meets the road only with
+//! a leg that keeps its reach (`Feet::steady_reach`).
 
 use std::sync::Arc;
 
@@ -246,4 +247,51 @@ fn a_bike_put_down_leaned_onto_a_foot_is_pushed_up_and_stays_on_it() {
             "pushing at once stayed on its foot from {degrees}° (at least {near:.1}°)"
         );
     }
+}
+
+#[test]
+fn the_dirt_bike_stops_facing_down_a_15_degree_slope_stands_on_a_foot_and_rides_off() {
+    // Followed down by its estimate of the road, the dirt 125's leg stayed just off it
+    // and the bike leaned past 10° (docs/bike-model.md, "A leg that keeps its reach").
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../scenes/bike/bikes/dirt_125.tres");
+    let bike = cpbp_core::bike::read_bike_file(&path).unwrap().params;
+    assert!(bike.feet.as_ref().is_some_and(|f| f.steady_reach));
+    let plane = DQuat::from_rotation_z(-15f64.to_radians());
+    let normal = plane * DVec3::Y;
+    let terrain = Terrain::new(vec![TerrainPiece::ground_through_origin("down", normal)]);
+    let spawn = Placement {
+        position: normal * 0.02,
+        rotation: plane,
+    };
+    let config = SimulationConfig {
+        bike,
+        ..SimulationConfig::default()
+    };
+    let sim = Simulation::new(config, Arc::new(terrain.unwrap()), spawn);
+    let mut ride = Ride::new(sim, ControllerKind::ARCADE);
+    let cruise = Intent::cruise(20.0);
+    let mut brake = cruise;
+    brake.drive.throttle = 0.0;
+    brake.drive.brake = 1.0;
+    let mut ride_for = |intent: Intent, seconds: f64, what: &str| {
+        ride.set_intent(intent);
+        for _ in 0..(seconds * common::FRAMES_PER_SECOND as f64) as usize {
+            ride.step();
+            if let Some(crash) = ride.sim().crashed() {
+                panic!("fell {what}: {}", crash.describe());
+            }
+        }
+        let sim = ride.sim();
+        let on_a_foot = sim.bike().feet(sim.world()).iter().any(|f| f.on_ground);
+        (on_a_foot, common::lean(&ride).to_degrees())
+    };
+    ride_for(cruise, 5.0, "riding down");
+    ride_for(brake, 2.0, "braking");
+    // The bike rests upright on its wheels for some seconds before it leans onto a foot.
+    let (on_a_foot, lean) = ride_for(brake, 8.0, "standing");
+    assert!(on_a_foot, "no foot on the road, leaned {lean:.1}°");
+    assert!(lean.abs() < 6.0, "stood leaned {lean:.1}°");
+    let (_, riding) = ride_for(cruise, 4.0, "riding off");
+    assert!(riding.abs() < 3.0, "rode off leaned {riding:.1}°");
 }
