@@ -252,7 +252,7 @@ fn a_bike_put_down_leaned_onto_a_foot_is_pushed_up_and_stays_on_it() {
 #[test]
 fn the_dirt_bike_stops_facing_down_a_15_degree_slope_stands_on_a_foot_and_rides_off() {
     // Followed down by its estimate of the road, the dirt 125's leg stayed just off it
-    // and the bike leaned past 10° (docs/bike-model.md, "A leg that keeps its reach").
+    // and the bike leaned past 10° (docs/bike-model.md, "The bikes": a leg that keeps its reach).
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../scenes/bike/bikes/dirt_125.tres");
     let bike = cpbp_core::bike::read_bike_file(&path).unwrap().params;
