@@ -17,7 +17,7 @@ from statistics import median
 from cpbp_experiment.configs import Controller
 from cpbp_experiment.report import REAL_TIME_MS, PairedTest, paired_tests, read_timing
 from cpbp_experiment.results import Attempt, ResultsFile
-from cpbp_experiment.stats import wilson_interval
+from cpbp_experiment.stats import mcnemar_exact, wilson_interval
 
 from .formats import count, format_p, percent_range
 from .markers import Figure, FigureError
@@ -93,6 +93,10 @@ class ExperimentRows:
                 return float(row["mean_ms"])
         raise FigureError(f"no timing row of {kind} at N = {trajectories}")
 
+    def bike(self, folder: str) -> ExperimentRows:
+        """Another bike's run, in a folder of its own here (docs/experiment/sport_600)."""
+        return ExperimentRows(self.folder / folder)
+
     def real_time_count(self, kind: str) -> str:
         counts = [int(r["trajectories"]) for r in self.timing if r["controller"] == kind
                   and r.get("physics", "exact") == "exact" and float(r["mean_ms"]) <= REAL_TIME_MS]
@@ -119,6 +123,20 @@ def _goals(attempts: list[Attempt]) -> int:
 
 
 P_FORM = r"[\d.]+(?:·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?"
+
+
+def _bike_split(rows: ExperimentRows, first: str, second: str, speed: str) -> tuple[int, int]:
+    """Two bikes' runs (`street_390/arcade`, a folder under docs/experiment and a
+    controller) paired attempt by attempt at a speed: the tries only the first reached
+    the goal in, and those only the second did."""
+    outcomes = []
+    for rider in (first, second):
+        folder, _, controller = rider.partition("/")
+        outcomes.append({a.attempt: a.outcome == "goal"
+                         for a in rows.bike(folder).select(controller, speed)})
+    shared = outcomes[0].keys() & outcomes[1].keys()
+    return (sum(outcomes[0][i] and not outcomes[1][i] for i in shared),
+            sum(outcomes[1][i] and not outcomes[0][i] for i in shared))
 
 
 def figures(rows: ExperimentRows) -> dict[str, Figure]:
@@ -194,4 +212,12 @@ def figures(rows: ExperimentRows) -> dict[str, Figure]:
         "plan-hz": Figure(lambda k, n: f"{min(1000 / rows.plan_ms(k, n), 999):.0f} Hz",
                           r"\d+ Hz"),
         "real-time-n": Figure(rows.real_time_count, COUNT),
+        # Another bike's run (docs/experiment/<folder>): "149/200" and, paired with a
+        # second bike's on the same attempts, "50 to 0" and its exact McNemar p.
+        "bike-cell": Figure(lambda b, c, s: "{}/{}".format(
+            *(lambda a: (_goals(a), len(a)))(rows.bike(b).select(c, s))), r"\d+/\d+"),
+        "bike-split": Figure(lambda a, b, s: "{} to {}".format(*_bike_split(rows, a, b, s)),
+                             f"{COUNT} to {COUNT}"),
+        "bike-p": Figure(lambda a, b, s: format_p(mcnemar_exact(*_bike_split(rows, a, b, s))),
+                         P_FORM),
     }
