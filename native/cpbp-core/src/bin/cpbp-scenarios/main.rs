@@ -24,6 +24,7 @@ mod bends;
 mod brakes;
 mod cambers;
 mod logs;
+mod outcome;
 mod stops;
 
 use std::sync::{Arc, OnceLock};
@@ -38,6 +39,7 @@ use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
 
 use args::{parse, USAGE};
+pub(crate) use outcome::{fall_cause, mean_planning_ms, Outcome};
 
 const MANOEUVRES: [&str; 6] = ["turn", "carve", "slalom", "reversals", "push", "walk"];
 pub(crate) const STEPS_PER_SECOND: f64 = 30.0;
@@ -66,18 +68,6 @@ pub(crate) struct Rider {
     pub n: usize,
     pub seed: u64,
     pub physics: PhysicsModel,
-}
-
-/// What one ride measured: its metric, and what else a scenario reports (printed as the
-/// row's `extra` column, `name=value;…`).
-pub(crate) struct Outcome {
-    pub fell: bool,
-    /// What brought the bike down, as the crash report names it (None: it stayed up, or
-    /// the scenario judged a fall of its own). Printed, not saved: the rows keep `fell`.
-    pub fall_cause: Option<String>,
-    pub metric: f64,
-    pub planning_ms: f64,
-    pub measures: Vec<(&'static str, f64)>,
 }
 
 fn main() {
@@ -316,20 +306,6 @@ fn ride_scenario(scenario: &str, rider: Rider) -> Outcome {
         planning_ms: mean_planning_ms(&planning),
         measures: Vec::new(),
     }
-}
-
-/// What brought the ride's bike down, if it fell (`Outcome::fall_cause`).
-pub(crate) fn fall_cause(ride: &Ride) -> Option<String> {
-    ride.sim().crashed().map(|crash| crash.describe())
-}
-
-/// The mean planning time (ms) of a ride's plans; 0 for a controller that plans nothing
-/// (an empty float sum is −0.0, which the rows would print as "-0.000").
-pub(crate) fn mean_planning_ms(planning: &[f64]) -> f64 {
-    if planning.is_empty() {
-        return 0.0;
-    }
-    planning.iter().sum::<f64>() / planning.len() as f64
 }
 
 /// A ride heading where seed `seed` says, waiting for every plan so the outcome does not
