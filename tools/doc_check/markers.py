@@ -71,13 +71,34 @@ def _split_emphasis(before: str) -> tuple[str, str]:
     return core, before[len(core):]
 
 
+def _inside_a_number(before: str) -> bool:
+    """Whether a figure right after the character `before` would be a longer number's tail."""
+    return before.isdigit() or before in ".,"
+
+
+def _ends_with_figure(core: str, expected: str) -> bool:
+    """Whether `core` ends with the figure `expected` and not with a longer number whose
+    tail it is: "30 in 30" does not end with the figure "0 in 30", nor "2 500" with "500"
+    (counts are written with spaces)."""
+    if not core.endswith(expected):
+        return False
+    before = core[:len(core) - len(expected)]
+    if not expected[:1].isdigit() or not before:
+        return True
+    if _inside_a_number(before[-1]):
+        return False
+    grouped = re.match(r"\d{3}(?!\d)", expected)
+    return not (grouped and re.search(r"\d $", before))
+
+
 def _old_figure(core: str, form: str) -> re.Match | None:
     """The figure's old text: the longest tail of `core` that has the figure's form and
-    does not start inside a number (counts are written with spaces: 2 500)."""
+    does not start inside a number (counts are written with spaces: 2 500; nor after a
+    decimal point)."""
     window = core[-120:]
     for start in range(len(window)):
         match = re.fullmatch(form, window[start:])
-        if match and (start == 0 or not window[start - 1].isdigit()):
+        if match and (start == 0 or not _inside_a_number(window[start - 1])):
             return match
     return None
 
@@ -95,7 +116,7 @@ def check(text: str, figures: dict[str, Figure], tables: Tables) -> list[Problem
             problems.append(Problem(_line_of(text, marker.start()), call, str(error)))
             continue
         core, _ = _split_emphasis(text[:marker.start()])
-        if not core.endswith(expected):
+        if not _ends_with_figure(core, expected):
             name = call.split()[0]
             old = _old_figure(core, figures[name].form)
             found = old.group(0) if old else core[-30:].split("\n")[-1]
@@ -125,7 +146,7 @@ def update(text: str, figures: dict[str, Figure], tables: Tables) -> str:
         call = marker["call"]
         expected = _compute(figures, call)
         core, emphasis = _split_emphasis(text[last:marker.start()])
-        if not core.endswith(expected):
+        if not _ends_with_figure(core, expected):
             old = _old_figure(core, figures[call.split()[0]].form)
             if old is None:
                 raise FigureError(f"line {_line_of(text, marker.start())}: no figure of the "

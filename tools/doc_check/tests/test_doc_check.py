@@ -64,6 +64,18 @@ class DocCheckTest(unittest.TestCase):
         self.assertIn("the rows give '8 of 20', the doc says '9 of 20'", problems[0])
         self.assertEqual(markers.update(wrong, self.figures, self.tables), right)
 
+    def test_a_figure_is_not_the_tail_of_a_longer_number(self):
+        right = "shoves 1 in 3<!--= scenario-falls push arcade -->."
+        for wrong in ("shoves 11 in 3", "shoves 2.1 in 3"):
+            problems = self.check(right.replace("shoves 1 in 3", wrong))
+            self.assertEqual(len(problems), 1, wrong)
+            self.assertIn("the rows give '1 in 3'", problems[0])
+        eleven = right.replace("1 in 3", "11 in 3")
+        self.assertEqual(markers.update(eleven, self.figures, self.tables), right)
+        # No longer of the figure's form: update will not guess which part to replace.
+        with self.assertRaises(markers.FigureError):
+            markers.update(right.replace("1 in 3", "2.1 in 3"), self.figures, self.tables)
+
     def test_a_table_changed_by_hand_fails_and_update_restores_it(self):
         right = ("<!-- figures: success-table -->\n" + tables.success_table(
             experiment_figures.ExperimentRows(self.folder)) + "\n<!-- /figures -->\n")
