@@ -127,11 +127,12 @@ P_FORM = r"[\d.]+(?:·10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?"
 
 def _bike_split(rows: ExperimentRows, first: str, second: str, speed: str) -> tuple[int, int]:
     """Two bikes' runs (`street_390/arcade`, a folder under docs/experiment and a
-    controller) paired attempt by attempt at a speed: the tries only the first reached
-    the goal in, and those only the second did."""
+    controller; the folder may be a bike's superseded rows,
+    `sport_600/superseded/before-wrists-follow/arcade`) paired attempt by attempt at a
+    speed: the tries only the first reached the goal in, and those only the second did."""
     outcomes = []
     for rider in (first, second):
-        folder, _, controller = rider.partition("/")
+        folder, _, controller = rider.rpartition("/")
         outcomes.append({a.attempt: a.outcome == "goal"
                          for a in rows.bike(folder).select(controller, speed)})
     shared = outcomes[0].keys() & outcomes[1].keys()

@@ -100,6 +100,22 @@ class DocCheckTest(unittest.TestCase):
         self.assertEqual(self.check(doc), [])
         self.assertEqual(len(self.check(doc.replace("0 in 2", "1 in 2"))), 1)
 
+    def test_bikes_pair_up_attempt_by_attempt_with_their_superseded_rows_too(self):
+        # A bike whose MPPI-10 missed the first 12 tries before a change and none after.
+        before = self.folder / "bike" / "superseded" / "before"
+        before.mkdir(parents=True)
+        for folder, outcomes in ((before, "f" * 12 + "g" * 8), (self.folder / "bike", "g" * 20)):
+            with (folder / "results.csv").open("w", newline="") as f:
+                writer = csv.writer(f, lineterminator="\n")
+                writer.writerow(FIELDS)
+                writer.writerows(a.row() for a in rows(Config(10, MPPI), outcomes))
+        doc = ("0 to 12<!--= bike-split bike/superseded/before/mppi-10 bike/mppi-10 10 --> "
+               "(p = 4.9·10⁻⁴<!--= bike-p bike/superseded/before/mppi-10 bike/mppi-10 10 -->), "
+               "0 to 0<!--= bike-split arcade-bike/arcade bike/mppi-10 10 -->")
+        problems = self.check(doc)
+        self.assertEqual(len(problems), 1, problems)
+        self.assertIn("no rows of arcade", problems[0])
+
     def test_a_fall_split_pools_the_scenarios_joined_by_a_plus(self):
         # Shoves: arcade fell on seed 0 alone; slalom: arcade on seed 1, learned on seed 2.
         with (self.folder / "scenarios.csv").open("a") as f:

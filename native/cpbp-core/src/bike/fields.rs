@@ -153,6 +153,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "rider/upper_arm_mass", "kg", 1.0, 12.0, 0.05, SAME, [3] },
     field! { "rider/lower_arm_mass", "kg", 1.0, 10.0, 0.05, SAME, [4] },
     field! { "rider/brace_share", "", 0.0, 1.0, 0.05, SAME, rider_brace },
+    field! { "rider/wrists_follow_bar", "", 0.0, 1.0, 1.0, ON_OFF, flag rider_wrists_follow_bar },
     field! { "suspension/front_travel", "m", 0.05, 0.35, 0.005, SAME, suspension / front_travel },
     field! { "suspension/rear_travel", "m", 0.05, 0.35, 0.005, SAME, suspension / rear_travel },
     field! { "suspension/sag", "", 0.1, 0.5, 0.01, SAME, suspension / sag },

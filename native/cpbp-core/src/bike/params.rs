@@ -60,6 +60,14 @@ pub struct BikeParams {
     /// of the arms' full strength reached at the full brake (`Bike::braced_arms`; 0: the
     /// arms as the physics model has them, the reference bike's).
     pub rider_brace: f64,
+    /// Whether the rider's wrists turn with the bar: the wrist's motor turns about the
+    /// steering axis and only damps the turn there, as a hand on a grip lets the bar turn
+    /// in it, instead of holding the hand's pose at the bar within ±34°. Off, the
+    /// reference bike's: held, the rider's sway about the peg drives a wrist to its stop
+    /// and the rider's weight then holds the bar (on the sport 600's clip-ons arcade fell
+    /// in 18 of 30 shoves, steering stuck at 11° while the lean ran to 62°; none with
+    /// the wrists following, docs/bike-model.md, "The wrists follow the bar").
+    pub rider_wrists_follow_bar: bool,
     /// Largest steering angle either way (rad).
     pub steer_limit: f64,
     /// The most torque (N·m) the rider turns the bar with: the reference bike's 60. At
@@ -174,6 +182,7 @@ impl Default for BikeParams {
             rider_masses: [9.15, 15.0, 43.35, 4.2, 3.3],
             posture: Posture::default(),
             rider_brace: 0.0,
+            rider_wrists_follow_bar: false,
             steer_limit: 35f64.to_radians(),
             max_steer_torque: 60.0,
             arcade_tuned_speed: 0.0,

@@ -31,3 +31,4 @@ mod stopping;
 mod street_brakes;
 mod suspension;
 mod wheelie_control;
+mod wrists;

@@ -98,7 +98,14 @@ impl Bike {
         let (_, shoulder) = b.ball_with_motor(torso, upper_arm, l.shoulder, [1.0, 0.8, 0.6]);
         let elbow = b.hinge(upper_arm, lower_arm, l.elbow, z);
         b.world.set_joint_limits(elbow, 0, -1.0, 1.0);
-        let (grip, wrist) = b.ball_with_motor(lower_arm, fork, l.grip, [0.8, 0.6, 0.6]);
+        let (grip, wrist) = if params.rider_wrists_follow_bar {
+            // The third axis on the fork's steering axis, with no stop: the bar turns
+            // in the hand (`Bike::set_rider_motors` damps it there).
+            let steer_axis = b.placement.rotation * l.steer_axis;
+            b.ball_with_motor_about(lower_arm, fork, l.grip, steer_axis, &[0.8, 0.6])
+        } else {
+            b.ball_with_motor(lower_arm, fork, l.grip, [0.8, 0.6, 0.6])
+        };
 
         if let (Some(s), Some(joints)) = (&params.suspension, &suspension_joints) {
             let (fork_spring, rear_spring) =
@@ -271,11 +278,25 @@ impl Builder<'_> {
         anchor: DVec3,
         limits: [f64; 3],
     ) -> (JointId, JointId) {
+        let axis2 = self.placement.rotation * DVec3::X;
+        self.ball_with_motor_about(a, b, anchor, axis2, &limits)
+    }
+
+    /// A ball joint with an Euler motor whose first axis is the bike's lateral one (on
+    /// `a`) and whose third is `axis2` (on `b`), each axis within ±its limit; axes past
+    /// the end of `limits` turn freely.
+    fn ball_with_motor_about(
+        &mut self,
+        a: BodyId,
+        b: BodyId,
+        anchor: DVec3,
+        axis2: DVec3,
+        limits: &[f64],
+    ) -> (JointId, JointId) {
         let ball = self.ball(a, b, anchor);
         let axis0 = self.placement.rotation * DVec3::Z;
-        let axis2 = self.placement.rotation * DVec3::X;
         let motor = self.world.add_euler_motor(a, b, axis0, axis2);
-        for (axis, limit) in limits.into_iter().enumerate() {
+        for (axis, &limit) in limits.iter().enumerate() {
             self.world.set_joint_limits(motor, axis, -limit, limit);
         }
         (ball, motor)

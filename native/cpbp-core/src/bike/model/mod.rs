@@ -20,10 +20,6 @@ use crate::bike::params::BikeParams;
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::{BodyId, GeomId, JointId, World};
 
-/// The shoulder motor's axis that swings the arm fore and aft (about the frame's lateral
-/// axis: `Builder::ball_with_motor`'s first), the one a braking rider braces.
-const SHOULDER_SWING: usize = 0;
-
 /// Number of rigid bodies of bike and rider.
 pub const PARTS: usize = 11;
 
@@ -224,34 +220,7 @@ impl Bike {
         );
         self.set_rear_motor(world, controls, held, up);
         self.set_front_brake(world, controls, held, up, 0.0);
-        let waist = controls.max_torque(ForceClass::Waist);
-        let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
-        let braced = self.braced_arms(controls, arms);
-        let arms_held = self.arms_held_sideways(world, controls, held);
-        for axis in 0..3 {
-            world.set_motor(self.waist, axis, c[index::WAIST + axis], waist);
-            // Held in a stoppie the rider locks the whole body to the bar.
-            let shoulder = if axis == SHOULDER_SWING || held.stoppie > 0.0 {
-                braced
-            } else {
-                arms
-            };
-            let (shoulder_target, wrist_target) = arms_held
-                .as_ref()
-                .filter(|_| axis != SHOULDER_SWING)
-                .map_or((c[index::SHOULDER + axis], c[index::WRIST + axis]), |h| {
-                    h[axis]
-                });
-            world.set_motor(self.shoulder, axis, shoulder_target, shoulder);
-            world.set_motor(self.wrist, axis, wrist_target, arms);
-        }
-        world.set_motor(
-            self.knee,
-            0,
-            c[index::KNEE],
-            controls.max_torque(ForceClass::Knee),
-        );
-        world.set_motor(self.elbow, 0, c[index::ELBOW], braced);
+        self.set_rider_motors(world, controls, held);
     }
 
     /// Puts every body back in its built pose at `placement`, at rest.

@@ -11,7 +11,64 @@ use crate::bike::rider_position::RIDER_JOINTS;
 use crate::bike::wheelie_control::PitchRequest;
 use crate::ode::World;
 
+/// The shoulder motor's axis that swings the arm fore and aft (about the frame's lateral
+/// axis: `Builder::ball_with_motor`'s first), the one a braking rider braces.
+const SHOULDER_SWING: usize = 0;
+
+/// The wrist motor's axis on the steering axis when the wrists follow the bar
+/// (`BikeParams::rider_wrists_follow_bar`).
+const WRIST_ABOUT_STEERING: usize = 2;
+
 impl Bike {
+    /// Sets the rider's joint motors from the control vector (`held`: the pitch the
+    /// rider's weight asks for, as `apply_pitching` takes it).
+    pub(super) fn set_rider_motors(
+        &self,
+        world: &mut World,
+        controls: &Controls,
+        held: PitchRequest,
+    ) {
+        let c = controls.values();
+        let waist = controls.max_torque(ForceClass::Waist);
+        let arms = controls.max_torque(ForceClass::Arms) * self.arm_strength;
+        let braced = self.braced_arms(controls, arms);
+        let arms_held = self.arms_held_sideways(world, controls, held);
+        for axis in 0..3 {
+            world.set_motor(self.waist, axis, c[index::WAIST + axis], waist);
+            // Held in a stoppie the rider locks the whole body to the bar.
+            let shoulder = if axis == SHOULDER_SWING || held.stoppie > 0.0 {
+                braced
+            } else {
+                arms
+            };
+            let (shoulder_target, wrist_target) = arms_held
+                .as_ref()
+                .filter(|_| axis != SHOULDER_SWING)
+                .map_or((c[index::SHOULDER + axis], c[index::WRIST + axis]), |h| {
+                    h[axis]
+                });
+            world.set_motor(self.shoulder, axis, shoulder_target, shoulder);
+            // A bar that turns in the hand only meets the arm's damping: holding the
+            // hand's pose there instead, on a foot as well, a bike stopped in a turn
+            // twisted the bar as the pose came back and fell (the naked 700's braked
+            // turn: 30 of 30 with the pose held on a foot, none damped).
+            let wrist_target =
+                if axis == WRIST_ABOUT_STEERING && self.params.rider_wrists_follow_bar {
+                    0.0
+                } else {
+                    wrist_target
+                };
+            world.set_motor(self.wrist, axis, wrist_target, arms);
+        }
+        world.set_motor(
+            self.knee,
+            0,
+            c[index::KNEE],
+            controls.max_torque(ForceClass::Knee),
+        );
+        world.set_motor(self.elbow, 0, c[index::ELBOW], braced);
+    }
+
     /// Angles of the rider's joint axes that have motors, in control order after the
     /// rear wheel (waist ×3, knee, shoulder ×3, elbow, wrist ×3); 0 in the riding pose.
     pub fn rider_joint_angles(&self, world: &World) -> [f64; RIDER_JOINTS] {
