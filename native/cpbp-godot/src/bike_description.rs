@@ -5,7 +5,7 @@
 //! Its looks (paint, bodywork) are the drawing's alone: the core never sees them.
 
 use cpbp_core::bike::{BikeParams, FIELDS};
-use godot::classes::{IResource, Resource};
+use godot::classes::{ClassDb, IResource, Resource};
 use godot::prelude::*;
 use godot::register::info::{PropertyHintInfo, PropertyInfo, PropertyUsageFlags};
 
@@ -37,6 +37,10 @@ pub struct BikeDescription {
     bodywork: Option<Gd<Resource>>,
     /// One number per bike field, in the field's file unit, as set (checked when built).
     numbers: Vec<f64>,
+    /// Properties set that are neither a bike field nor one Godot knows (a field
+    /// misspelled, or one from a newer build): the bike is refused naming them, where
+    /// Godot would drop them without a word.
+    unknown: Vec<String>,
     base: Base<Resource>,
 }
 
@@ -63,6 +67,7 @@ impl IResource for BikeDescription {
             paint: STREET_ORANGE,
             bodywork: None,
             numbers: reference_numbers(),
+            unknown: Vec::new(),
             base,
         }
     }
@@ -94,6 +99,10 @@ impl IResource for BikeDescription {
 
     fn on_set(&mut self, property: StringName, value: Variant) -> bool {
         let Some(i) = index_of(&property) else {
+            let name = property.to_string();
+            if !godot_knows(&name) && !self.unknown.contains(&name) {
+                self.unknown.push(name);
+            }
             return false;
         };
         // Kept as given, a bad one too: building the bike refuses it, naming the field.
@@ -107,6 +116,16 @@ impl IResource for BikeDescription {
     fn on_property_get_revert(&self, property: StringName) -> Option<Variant> {
         index_of(&property).map(|i| field_variant(i, reference_numbers()[i]))
     }
+}
+
+/// Whether `name` is a property Godot itself sets on a bike description: the exported
+/// ones (`name`, `paint`, …), a resource's own and an object's metadata.
+fn godot_knows(name: &str) -> bool {
+    name.starts_with("metadata/")
+        || ClassDb::singleton()
+            .class_get_property_list("BikeDescription")
+            .iter_shared()
+            .any(|property| property.get("name").is_some_and(|n| n.to_string() == name))
 }
 
 /// Field `i`'s value as the inspector and the file show it: a bool for an on/off field.
@@ -163,6 +182,12 @@ impl BikeDescription {
     /// The bike as the core builds it, or why it cannot be built (a number out of its
     /// field's range, or a geometry the core refuses), naming the field.
     pub fn params(&self) -> Result<BikeParams, String> {
+        if !self.unknown.is_empty() {
+            return Err(format!(
+                "{} not a bike field of this build (misspelled, or from a newer one)",
+                quoted_list(&self.unknown)
+            ));
+        }
         let values = FIELDS
             .iter()
             .map(|f| f.name)
@@ -180,5 +205,15 @@ pub fn params_of(description: Option<&Gd<BikeDescription>>) -> Result<BikeParams
             .params()
             .map_err(|why| format!("the bike {}: {why}", description.get_path())),
         None => Ok(BikeParams::default()),
+    }
+}
+
+/// `'a'`, `'a' and 'b' are`, `'a', 'b' and 'c' are`: the subject of a sentence.
+fn quoted_list(names: &[String]) -> String {
+    let quoted: Vec<String> = names.iter().map(|n| format!("'{n}'")).collect();
+    match quoted.split_last() {
+        Some((last, [])) => format!("{last} is"),
+        Some((last, rest)) => format!("{} and {last} are", rest.join(", ")),
+        None => String::new(),
     }
 }
