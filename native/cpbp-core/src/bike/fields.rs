@@ -170,6 +170,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "front_brake/cornering_lean_deg", "°", 0.0, 90.0, 0.5, DEG, front_brake / cornering_lean },
     field! { "front_brake/ease_below", "m/s", 0.0, 5.0, 0.1, SAME, front_brake / ease_below },
     field! { "front_brake/ease_to", "", 0.1, 1.0, 0.05, SAME, front_brake / ease_to },
+    field! { "front_brake/righting_reserve", "", 0.0, 1.0, 1.0, ON_OFF, flag front_brake / righting_reserve },
     field! { "front_brake/hold_gain", "1/m", 0.0, 20.0, 0.1, SAME, front_brake / hold_gain },
     field! { "front_brake/hold_rate_gain", "s/m", 0.0, 10.0, 0.1, SAME, front_brake / hold_rate_gain },
     field! { "front_brake/rear_share", "", 0.0, 1.0, 0.05, SAME, front_brake / rear_share },

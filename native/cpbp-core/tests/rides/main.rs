@@ -12,6 +12,7 @@ mod common;
 mod air_control;
 mod anytime;
 mod arcade_gains;
+mod braked_turn;
 mod camber_feet;
 mod contact_patch;
 mod deep_lean;

@@ -116,6 +116,44 @@ fn a_leaned_bike_brakes_less_with_cornering_abs() {
 }
 
 #[test]
+fn a_leaned_bike_keeps_the_speed_it_stands_up_at_with_the_righting_reserve() {
+    // g·L / (tan δ·cos ε) of a 1.38 m bike with a 30° lock and 24° of rake: 25.7 m²/s².
+    let full_lock = 9.81 * 1.38 / (30f64.to_radians().tan() * 24f64.to_radians().cos());
+    assert_eq!(
+        FrontBrake::default().righting_share(0.3, 5.0, full_lock),
+        1.0,
+        "not on the reference"
+    );
+    let brake = FrontBrake {
+        righting_reserve: true,
+        ..FrontBrake::default()
+    };
+    assert_eq!(brake.righting_share(0.0, 5.0, full_lock), 1.0, "upright");
+    // Leaned 20° at 25 km/h the full-lock turn holds the lean at 3.0 m/s, so 1 − 3.0² /
+    // 6.9² of the brake is left; either way round.
+    let (lean, speed) = (20f64.to_radians(), 25.0 / 3.6);
+    let expected = 1.0 - full_lock * lean.sin() / (speed * speed);
+    for lean in [lean, -lean] {
+        let share = brake.righting_share(lean, speed, full_lock);
+        assert!((share - expected).abs() < 1e-12, "{share}");
+    }
+    assert!((0.8..0.82).contains(&expected), "{expected}");
+    assert_eq!(
+        brake.righting_share(lean, 2.9, full_lock),
+        0.0,
+        "below the speed it stands up at"
+    );
+    assert_eq!(
+        brake.righting_share(lean, 1.0, full_lock),
+        1.0,
+        "walking pace"
+    );
+    assert_eq!(brake.righting_share(f64::NAN, 5.0, full_lock), 0.0);
+    assert_eq!(brake.righting_share(lean, f64::NAN, full_lock), 1.0);
+    assert!(brake.modulates(), "set before every physics step");
+}
+
+#[test]
 fn the_brake_eases_in_the_last_metre_when_asked() {
     assert_eq!(
         FrontBrake::default().eased(0.0),

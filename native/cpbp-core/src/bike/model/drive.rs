@@ -71,7 +71,9 @@ impl Bike {
                     // Braking with a front brake too, the rear gets its share of the
                     // trigger (`FrontBrake::rear_share`).
                     _ => match &self.params.front_brake {
-                        Some(front) if brake_level(controls) > 0.0 => front.rear_share,
+                        Some(front) if brake_level(controls) > 0.0 => {
+                            front.rear_share * self.righting_share(world, front, up)
+                        }
                         _ => 1.0,
                     },
                 };
@@ -147,9 +149,14 @@ impl Bike {
             let window = brake.lift_off_share(self.suspension_compression(world).1);
             let speed = self.forward_speed(world, up);
             let eased = brake.eased(speed);
-            let cornering = brake.cornering_share(self.lean(world, up), speed);
+            let lean = self.lean(world, up);
+            let cornering = brake.cornering_share(lean, speed);
+            let righting = self.righting_share(world, brake, up);
             let tipping = self.tipping_limit(world, brake, up);
-            (level * window * eased * cornering * tipping, true)
+            (
+                level * window * eased * cornering * righting * tipping,
+                true,
+            )
         };
         // ABS keeps the wheels turning, except in a stoppie the rider asked for: the hold
         // needs the wheel stopped to pitch the bike over it (the rear's ABS is off then too).
@@ -164,6 +171,21 @@ impl Bike {
             torque = brake.ramped(current, torque, dt);
         }
         world.set_motor(self.front_axle, 0, floor, torque);
+    }
+
+    /// The share of either brake the righting reserve lets through now
+    /// (`FrontBrake::righting_share`): it eases the rear brake the trigger shares out as
+    /// well, which alone would otherwise take the bike below the speed it stands up at.
+    fn righting_share(&self, world: &World, brake: &FrontBrake, up: DVec3) -> f64 {
+        let (lean, speed) = (self.lean(world, up), self.forward_speed(world, up));
+        brake.righting_share(lean, speed, self.full_lock_lean_speed2())
+    }
+
+    /// g·L / (tan δ·cos ε) (m²/s²): times sin θ, the speed squared at which the bike's
+    /// tightest turn (the bar at its lock δ) holds a lean θ (`FrontBrake::righting_share`).
+    fn full_lock_lean_speed2(&self) -> f64 {
+        let p = &self.params;
+        GRAVITY * p.wheelbase / (p.steer_limit.tan() * p.rake.cos())
     }
 
     /// The share of the front brake's full torque its tipping limit allows now
