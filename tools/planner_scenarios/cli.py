@@ -71,7 +71,9 @@ def _parser() -> argparse.ArgumentParser:
                              "arcade and learned (ridden once per seed, as N = 0), comma-separated")
     parser.add_argument("--counts", default="5,10", help="trajectory counts N")
     parser.add_argument("--seeds", default="0-9", help="FIRST-LAST: ride i for each")
-    parser.add_argument("--scenarios", default="turn,slalom,push,walk")
+    parser.add_argument("--scenarios", default=None, help="comma-separated, or all (every "
+                        "scenario, as a bike's table is ridden again; default: cpbp-scenarios's "
+                        "manoeuvres, turn to walk)")
     parser.add_argument("--physics", default="exact", choices=("classic", "exact"))
     parser.add_argument("--bike", default=None, help="a bike file to ride (default: the "
                         "reference bike); keep its rows in an --out of their own")
@@ -88,7 +90,9 @@ def ride(args: argparse.Namespace, rows: ScenarioRows) -> None:
     subprocess.run([str(PROJECT_ROOT / "tools" / "cargo"), "build", "--quiet", "--release",
                     "-p", "cpbp-core", "--bin", "cpbp-scenarios"], check=True)
     command = [str(BINARY), "--controllers", args.controllers, "--counts", args.counts,
-               "--seeds", args.seeds, "--scenarios", args.scenarios, "--physics", args.physics]
+               "--seeds", args.seeds, "--physics", args.physics]
+    if args.scenarios:
+        command += ["--scenarios", args.scenarios]
     if args.bike:
         command += ["--bike", args.bike]
     if args.model:

@@ -25,7 +25,7 @@ pub(crate) struct Args {
 
 pub(crate) const USAGE: &str =
     "cpbp-scenarios [--controllers K,K…] [--counts N,N…] [--seeds FIRST-LAST] \
-[--scenarios S,S…] [--physics classic|exact] [--skip FILE] [--model FILE] [--bike FILE]";
+[--scenarios S,S…|all] [--physics classic|exact] [--skip FILE] [--model FILE] [--bike FILE]";
 const FLAGS: [&str; 8] = [
     "--model",
     "--bike",
@@ -88,8 +88,13 @@ pub(crate) fn parse(arguments: Vec<String>) -> Result<Args, String> {
         _ => return Err(format!("--seeds is FIRST-LAST, not {seeds}")),
     };
     let names = scenario_names();
-    let scenarios = value("--scenarios")?
-        .unwrap_or(MANOEUVRES.join(","))
+    // `all`: every scenario, as a bike's table is ridden again after its physics changed.
+    let scenarios = match value("--scenarios")?.as_deref() {
+        Some("all") => names.join(","),
+        Some(listed) => listed.to_string(),
+        None => MANOEUVRES.join(","),
+    };
+    let scenarios = scenarios
         .split(',')
         .map(|name| {
             names
@@ -136,6 +141,8 @@ mod tests {
         assert_eq!(args.counts, vec![5, 15]);
         assert_eq!(args.seeds, vec![2, 3, 4]);
         assert_eq!(args.scenarios, vec!["stop40"]);
+        let all = parse(words("--scenarios all")).unwrap().scenarios;
+        assert_eq!(all, super::scenario_names());
         for wrong in [
             "--seed 3",
             "stop40",
