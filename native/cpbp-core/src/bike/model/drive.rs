@@ -151,7 +151,7 @@ impl Bike {
             let eased = brake.eased(speed);
             let lean = self.lean(world, up);
             let cornering = brake.cornering_share(lean, speed);
-            let righting = self.righting_share(world, brake, up);
+            let righting = brake.righting_share(lean, speed, self.full_lock_lean_speed2());
             let tipping = self.tipping_limit(world, brake, up);
             (
                 level * window * eased * cornering * righting * tipping,
