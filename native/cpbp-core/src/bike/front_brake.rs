@@ -69,7 +69,7 @@ pub struct FrontBrake {
     /// full-lock turn's pull is left to stand the bike up, and the brake gives that share
     /// of itself (`righting_share`). Without it a full brake at 20° and 25 km/h stopped the
     /// sport 600 in 0.7 s still leaned 15–20° with the bar at full lock, and it fell
-    /// (30 of 30 headings; none with it, stopping in 5.4 m rather than 2.3): the square law
+    /// (30 of 30 headings; none with it, stopping in 5.7 m rather than 2.3): the square law
     /// of `cornering_lean` leaves 0.8 of the brake there. The bike's drive eases the rear
     /// brake's share by the same (docs/bike-model.md, "Braking in a turn").
     pub righting_reserve: bool,
@@ -192,12 +192,36 @@ impl FrontBrake {
     /// lean θ holds that lean at v² = `full_lock_lean_speed2` · sin θ (g·L / (tan δ·cos ε),
     /// m²/s²): all of it without the reserve and at walking pace (`abs_above`), where ABS
     /// rests and a bike leaned on a foot stays held (eased there too, the bikes rolled on
-    /// leaned and the sport 600 fell in all 30 braked turns again).
+    /// leaned and the sport 600 fell in all 30 braked turns again); the front's there
+    /// waits for the bar to come straight (`walking_bar_share`).
     pub fn righting_share(&self, lean: f64, speed: f64, full_lock_lean_speed2: f64) -> f64 {
         if !self.righting_reserve || speed.is_nan() || speed.abs() <= self.abs_above {
             return 1.0;
         }
         let share = 1.0 - full_lock_lean_speed2 * lean.sin().abs() / (speed * speed);
+        if share.is_finite() {
+            share.clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    }
+
+    /// Share (0–1) of itself the front brake gives at walking pace (`abs_above`) under the
+    /// righting reserve with the bar turned `steer` (rad, either way) of its lock `lock`:
+    /// 1 − |δ|/lock, all of it straight and none at full lock; 1 above walking pace and
+    /// without the reserve. Turned by δ, the brake's pull along the wheel's heading pushes
+    /// the contact patch sideways by sin δ of itself, out of the turn and below the
+    /// weight, which rolls the bike into the turn: a rider grabbing the front brake at a
+    /// walk with the bar turned drops the bike, so riders stop on the rear and squeeze the
+    /// front as the bar comes straight. With the front coming back in full at walking
+    /// pace, arcade's dirt 125 reached it leaned 6.5° with the bar 31° into the turn and
+    /// the brake kicked the lean to 15° within 0.3 s (docs/bike-model.md, "Braking in a
+    /// turn"). The rear wheel stays in the frame's plane and keeps its share.
+    pub fn walking_bar_share(&self, speed: f64, steer: f64, lock: f64) -> f64 {
+        if !self.righting_reserve || speed.is_nan() || speed.abs() > self.abs_above {
+            return 1.0;
+        }
+        let share = 1.0 - (steer / lock).abs();
         if share.is_finite() {
             share.clamp(0.0, 1.0)
         } else {

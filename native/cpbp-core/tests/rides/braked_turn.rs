@@ -76,7 +76,7 @@ fn with_the_righting_reserve_the_sport_600_stops_upright_from_a_braked_turn() {
         );
         assert!(up, "fell braking in a turn to {side} with the reserve");
         // What the field is for: the whole brake at 20° drops the bike (30 of 30 in the
-        // scenario), and the reserve costs some distance (5.4 m from 2.3 m here).
+        // scenario), and the reserve costs some distance (5.7 m from 2.3 m here).
         assert!(
             !up_whole,
             "stayed up with the whole brake turning to {side}"

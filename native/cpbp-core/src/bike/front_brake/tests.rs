@@ -154,6 +154,43 @@ fn a_leaned_bike_keeps_the_speed_it_stands_up_at_with_the_righting_reserve() {
 }
 
 #[test]
+fn at_walking_pace_the_reserve_waits_for_the_bar_to_come_straight() {
+    let lock = 40f64.to_radians();
+    let walking = FrontBrake::default().abs_above;
+    assert_eq!(
+        FrontBrake::default().walking_bar_share(1.0, lock, lock),
+        1.0,
+        "not on the reference"
+    );
+    let brake = FrontBrake {
+        righting_reserve: true,
+        ..FrontBrake::default()
+    };
+    assert_eq!(brake.walking_bar_share(1.0, 0.0, lock), 1.0, "straight");
+    for steer in [lock, -lock, 1.2 * lock] {
+        assert_eq!(
+            brake.walking_bar_share(1.0, steer, lock),
+            0.0,
+            "at the lock"
+        );
+    }
+    let halfway = brake.walking_bar_share(walking, -lock / 2.0, lock);
+    assert!((halfway - 0.5).abs() < 1e-12, "{halfway}");
+    assert_eq!(
+        brake.walking_bar_share(walking + 0.1, lock, lock),
+        1.0,
+        "above walking pace the righting share rules"
+    );
+    assert_eq!(
+        brake.walking_bar_share(-1.0, lock, lock),
+        0.0,
+        "rolling back"
+    );
+    assert_eq!(brake.walking_bar_share(1.0, f64::NAN, lock), 0.0);
+    assert_eq!(brake.walking_bar_share(f64::NAN, lock, lock), 1.0);
+}
+
+#[test]
 fn the_brake_eases_in_the_last_metre_when_asked() {
     assert_eq!(
         FrontBrake::default().eased(0.0),

@@ -153,8 +153,10 @@ impl Bike {
             let cornering = brake.cornering_share(lean, speed);
             let righting = brake.righting_share(lean, speed, self.full_lock_lean_speed2());
             let tipping = self.tipping_limit(world, brake, up);
+            let (steer, lock) = (self.steering(world).0, self.params.steer_limit);
+            let bar = brake.walking_bar_share(speed, steer, lock);
             (
-                level * window * eased * cornering * righting * tipping,
+                level * window * eased * cornering * righting * tipping * bar,
                 true,
             )
         };
