@@ -50,6 +50,10 @@ pub struct WorldState {
     /// from a snapshot goes on with the same foot as the ride.
     pub feet_down: Vec<bool>,
     pub feet_extension: Vec<f64>,
+    /// Per foot, the way its leg stretches now (a unit vector in its body's frame; zero
+    /// for a foot without a leg): a leg that hangs plumb turns in the frame as the body
+    /// rolls (`World::set_foot_leg_direction`).
+    pub feet_leg_direction: Vec<Vec3>,
     /// Per body, the sum of its contacts' normals with the terrain in the last step (from
     /// the ground towards the body; zero where it touched none): the slope under a wheel,
     /// which a step may read before it runs, as it reads the flags above.

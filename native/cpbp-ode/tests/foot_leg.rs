@@ -70,3 +70,33 @@ fn a_snapshot_carries_the_foot_down_and_its_leg() {
     settle(&mut world, 0.5);
     assert_eq!(world.snapshot(), original);
 }
+
+#[test]
+fn a_leg_turned_moves_its_sole_and_a_snapshot_carries_the_turn() {
+    let (mut world, foot) = block_on_a_foot();
+    world.set_foot_extension(foot, 0.1);
+    assert_eq!(world.foot_sole(foot), Some(SOLE - DVec3::Y * 0.1));
+    let slanted = DVec3::new(0.0, -1.0, 1.0);
+    world.set_foot_leg_direction(foot, slanted);
+    let sole = world.foot_sole(foot).unwrap();
+    assert!(
+        (sole - (SOLE + slanted.normalize() * 0.1)).length() < 1e-12,
+        "{sole}"
+    );
+    settle(&mut world, 0.3);
+    let branch = world.snapshot();
+    assert_eq!(
+        branch.feet_leg_direction,
+        vec![slanted.normalize().to_array()]
+    );
+    settle(&mut world, 0.3);
+    let original = world.snapshot();
+
+    // Turned back since: restoring turns it again, and the steps repeat exactly.
+    world.set_foot_leg_direction(foot, -DVec3::Y);
+    settle(&mut world, 0.2);
+    world.restore(&branch).unwrap();
+    assert_eq!(world.foot_leg_direction(foot), Some(slanted.normalize()));
+    settle(&mut world, 0.3);
+    assert_eq!(world.snapshot(), original);
+}

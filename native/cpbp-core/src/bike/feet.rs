@@ -66,6 +66,14 @@ pub struct Feet {
     /// 125 on a 15° downhill leaned past 10° without its foot ever touching
     /// (docs/bike-model.md). Off, the leg follows the estimate, as the street 390's does.
     pub steady_reach: bool,
+    /// A reaching leg hangs plumb from where its sole is built, stretching against
+    /// gravity rather than along the frame's own down axis, as a rider's leg hangs from
+    /// the hip to the road. Stretched along the frame, a leg's sole swings in under a
+    /// leaned bike by its stretch times the sine of the lean: the dirt 125, its sole built
+    /// 0.35 m up, came to rest leaned 11° and lay down onto its foot, its centre of mass
+    /// passing over the sole at 24° (docs/bike-model.md, "Braking in a turn"). Off, the leg
+    /// stretches along the frame, as the street 390's does.
+    pub plumb_legs: bool,
 }
 
 impl Default for Feet {
@@ -101,6 +109,7 @@ impl Default for Feet {
             push_time: 1.0,
             prop_until: 1.4,
             steady_reach: false,
+            plumb_legs: false,
         }
     }
 }

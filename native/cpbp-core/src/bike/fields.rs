@@ -202,6 +202,7 @@ pub const FIELDS: &[BikeField] = &[
     field! { "feet/push_time", "s", 0.05, 5.0, 0.05, SAME, feet / push_time },
     field! { "feet/prop_until", "m/s", 0.0, 5.0, 0.05, SAME, feet / prop_until },
     field! { "feet/steady_reach", "", 0.0, 1.0, 1.0, ON_OFF, flag feet / steady_reach },
+    field! { "feet/plumb_legs", "", 0.0, 1.0, 1.0, ON_OFF, flag feet / plumb_legs },
 ];
 
 /// The field called `name`.

@@ -4,7 +4,8 @@
 //! away from there falls; with legs that reach (`Feet::reach`) the foot it leans to holds
 //! it 2.5° from upright, the uphill leg bent or the downhill one stretched, on either side,
 //! and it rides off. Facing down a 15° slope the dirt 125's foot meets the road only with
-//! a leg that keeps its reach (`Feet::steady_reach`).
+//! a leg that keeps its reach (`Feet::steady_reach`), and so does the sport 600's once its
+//! legs hang plumb (`Feet::plumb_legs`).
 
 use std::sync::Arc;
 
@@ -250,13 +251,21 @@ fn a_bike_put_down_leaned_onto_a_foot_is_pushed_up_and_stays_on_it() {
 }
 
 #[test]
-fn the_dirt_bike_stops_facing_down_a_15_degree_slope_stands_on_a_foot_and_rides_off() {
+fn the_dirt_and_sport_bikes_stop_facing_down_a_15_degree_slope_stand_on_a_foot_and_ride_off() {
     // Followed down by its estimate of the road, the dirt 125's leg stayed just off it
-    // and the bike leaned past 10° (docs/bike-model.md, "The bikes": a leg that keeps its reach).
+    // and the bike leaned past 10° (docs/bike-model.md, "The bikes": a leg that keeps its
+    // reach); so did the sport 600's once it hung plumb (`Feet::plumb_legs`).
+    for name in ["dirt_125", "sport_600"] {
+        stops_facing_down_a_15_degree_slope(name);
+    }
+}
+
+fn stops_facing_down_a_15_degree_slope(name: &str) {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../scenes/bike/bikes/dirt_125.tres");
+        .join("../../scenes/bike/bikes")
+        .join(format!("{name}.tres"));
     let bike = cpbp_core::bike::read_bike_file(&path).unwrap().params;
-    assert!(bike.feet.as_ref().is_some_and(|f| f.steady_reach));
+    assert!(bike.feet.as_ref().is_some_and(|f| f.steady_reach), "{name}");
     let plane = DQuat::from_rotation_z(-15f64.to_radians());
     let normal = plane * DVec3::Y;
     let terrain = Terrain::new(vec![TerrainPiece::ground_through_origin("down", normal)]);
@@ -279,7 +288,7 @@ fn the_dirt_bike_stops_facing_down_a_15_degree_slope_stands_on_a_foot_and_rides_
         for _ in 0..(seconds * common::FRAMES_PER_SECOND as f64) as usize {
             ride.step();
             if let Some(crash) = ride.sim().crashed() {
-                panic!("fell {what}: {}", crash.describe());
+                panic!("{name} fell {what}: {}", crash.describe());
             }
         }
         let sim = ride.sim();
@@ -290,8 +299,8 @@ fn the_dirt_bike_stops_facing_down_a_15_degree_slope_stands_on_a_foot_and_rides_
     ride_for(brake, 2.0, "braking");
     // The bike rests upright on its wheels for some seconds before it leans onto a foot.
     let (on_a_foot, lean) = ride_for(brake, 8.0, "standing");
-    assert!(on_a_foot, "no foot on the road, leaned {lean:.1}°");
-    assert!(lean.abs() < 6.0, "stood leaned {lean:.1}°");
+    assert!(on_a_foot, "{name}: no foot on the road, leaned {lean:.1}°");
+    assert!(lean.abs() < 6.0, "{name} stood leaned {lean:.1}°");
     let (_, riding) = ride_for(cruise, 4.0, "riding off");
-    assert!(riding.abs() < 3.0, "rode off leaned {riding:.1}°");
+    assert!(riding.abs() < 3.0, "{name} rode off leaned {riding:.1}°");
 }

@@ -3,7 +3,7 @@
 
 use super::{GeomId, World};
 use crate::feet::{Foot, FootSurface, Leg};
-use crate::{ffi, BodyId, DVec3};
+use crate::{ffi, BodyId, DVec3, Vec3};
 
 impl World {
     /// Adds a foot: a sphere of `radius` on `body`, standing on the terrain as `surface`
@@ -44,6 +44,27 @@ impl World {
         }
     }
 
+    /// Turns the way a foot's leg stretches to the unit `direction` in its body's frame,
+    /// moving the sole with it (a foot without a leg is left where it is).
+    pub fn set_foot_leg_direction(&mut self, foot: GeomId, direction: DVec3) {
+        if let Some(leg) = self.foot_mut(foot).leg.as_mut() {
+            leg.direction = direction.normalize();
+            self.place_sole(foot);
+        }
+    }
+
+    /// Where a leg's sole sits on its body now (its body's frame): where it was built,
+    /// moved along the leg by its stretch; none for a foot without a leg.
+    pub fn foot_sole(&self, foot: GeomId) -> Option<DVec3> {
+        self.foot(foot).leg.map(|leg| leg.sole_offset())
+    }
+
+    /// The way a foot's leg stretches now (a unit vector in its body's frame; none for a
+    /// foot without a leg).
+    pub fn foot_leg_direction(&self, foot: GeomId) -> Option<DVec3> {
+        self.foot(foot).leg.map(|leg| leg.direction)
+    }
+
     /// How far a foot's leg is stretched (0 without a leg).
     pub fn foot_extension(&self, foot: GeomId) -> f64 {
         self.foot(foot).leg.map_or(0.0, |leg| leg.extension)
@@ -66,8 +87,9 @@ impl World {
         self.foot(foot).touching
     }
 
-    /// The feet's part of a snapshot: per foot, whether it is down and its leg's stretch.
-    pub(super) fn feet_state(&self) -> (Vec<bool>, Vec<f64>) {
+    /// The feet's part of a snapshot: per foot, whether it is down, its leg's stretch and
+    /// the way it stretches.
+    pub(super) fn feet_state(&self) -> (Vec<bool>, Vec<f64>, Vec<Vec3>) {
         let down = self
             .feet
             .iter()
@@ -79,16 +101,28 @@ impl World {
             .iter()
             .map(|f| f.leg.map_or(0.0, |leg| leg.extension))
             .collect();
-        (down, extension)
+        let direction = self
+            .feet
+            .iter()
+            .map(|f| f.leg.map_or([0.0; 3], |leg| leg.direction.to_array()))
+            .collect();
+        (down, extension, direction)
     }
 
     /// Puts the feet back as a snapshot has them (the caller checked the lengths).
-    pub(super) fn restore_feet(&mut self, touching: &[bool], down: &[bool], extension: &[f64]) {
+    pub(super) fn restore_feet(
+        &mut self,
+        touching: &[bool],
+        down: &[bool],
+        extension: &[f64],
+        direction: &[Vec3],
+    ) {
         for (i, foot) in self.feet.iter_mut().enumerate() {
             foot.touching = touching[i];
             set_enabled(foot.geom, down[i]);
             if let Some(leg) = foot.leg.as_mut() {
                 leg.extension = extension[i];
+                leg.direction = DVec3::from_array(direction[i]);
                 let at = leg.sole_offset();
                 // SAFETY: the geom belongs to this world and is attached to a body.
                 unsafe { ffi::dGeomSetOffsetPosition(foot.geom, at.x, at.y, at.z) };

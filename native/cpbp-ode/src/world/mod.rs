@@ -266,7 +266,7 @@ impl World {
         let motors = (0..self.joints.len())
             .map(|j| self.motor_state(crate::JointId(j)))
             .collect();
-        let (feet_down, feet_extension) = self.feet_state();
+        let (feet_down, feet_extension, feet_leg_direction) = self.feet_state();
         WorldState {
             bodies,
             motors,
@@ -275,6 +275,7 @@ impl World {
             feet_touching: self.feet.iter().map(|f| f.touching).collect(),
             feet_down,
             feet_extension,
+            feet_leg_direction,
             ground_normals: self.ground_normals.clone(),
         }
     }
@@ -288,6 +289,7 @@ impl World {
             || state.ground_normals.len() != self.bodies.len()
             || [state.feet_touching.len(), state.feet_down.len()] != [self.feet.len(); 2]
             || state.feet_extension.len() != self.feet.len()
+            || state.feet_leg_direction.len() != self.feet.len()
         {
             return Err(StateMismatch {
                 expected_bodies: self.bodies.len(),
@@ -318,6 +320,7 @@ impl World {
             &state.feet_touching,
             &state.feet_down,
             &state.feet_extension,
+            &state.feet_leg_direction,
         );
         Ok(())
     }

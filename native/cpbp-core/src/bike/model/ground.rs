@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use super::{legs, Bike, Part};
+use super::{Bike, Part};
 use crate::bike::controls::{index, Controls, ForceClass};
 use crate::bike::drive::throttle_open;
 use crate::bike::manual::POSE_GAIN;
@@ -208,7 +208,7 @@ impl Bike {
             .iter()
             .zip(geoms)
             .map(|(at, &geom)| FootState {
-                on_frame: *at + legs::LEG_DIRECTION * world.foot_extension(geom) - frame_rest,
+                on_frame: world.foot_sole(geom).unwrap_or(*at - frame_rest),
                 down: world.is_foot_down(geom),
                 on_ground: world.foot_touches_ground(geom),
             })

@@ -1,8 +1,9 @@
 //! Legs that reach (`Feet::reach`): the rider puts one foot down, on the side the bike
 //! leans to, and stretches its leg until the bike leans `Feet::prop_lean` from upright
 //! onto it; pulling away the foot props the bike until `Feet::prop_until`. Which foot is
-//! down and how far its leg is stretched are the world's state (`WorldState::feet_down`,
-//! `feet_extension`), so the planners' rollouts step the same rule from the same foot.
+//! down, how far its leg is stretched and which way (`Feet::plumb_legs`) are the world's
+//! state (`WorldState::feet_down`, `feet_extension`, `feet_leg_direction`), so the
+//! planners' rollouts step the same rule from the same foot.
 
 use glam::{DQuat, DVec3};
 
@@ -26,7 +27,8 @@ fn rightward(side: usize) -> f64 {
     }
 }
 
-/// The way the leg stretches, in the frame's own axes: down.
+/// The way a leg stretches, in the frame's own axes: down (as built, and always unless
+/// it hangs plumb, `Feet::plumb_legs`).
 pub(super) const LEG_DIRECTION: DVec3 = DVec3::NEG_Y;
 
 /// How far (m) past the road a leg reaching for it stretches: a sole laid exactly on the
@@ -84,6 +86,10 @@ impl Bike {
         for (side, foot) in geoms.into_iter().enumerate() {
             if !world.is_foot_down(foot) {
                 continue;
+            }
+            if feet.plumb_legs {
+                let frame = world.body_quaternion(self.body(Part::Frame));
+                world.set_foot_leg_direction(foot, frame.inverse() * -up);
             }
             let propping = self.leg_to_lean(world, up, feet, side, feet.prop_lean);
             let now = world.foot_extension(foot);
@@ -149,7 +155,11 @@ impl Bike {
         let rotation = world.body_quaternion(frame);
         let sole_on_frame = feet.positions()[side] - self.rest[Part::Frame as usize].0;
         let sole = rear + rolled * (world.body_position(frame) + rotation * sole_on_frame - rear);
-        let leg = rolled * (rotation * LEG_DIRECTION);
+        let leg = if feet.plumb_legs {
+            -up
+        } else {
+            rolled * (rotation * LEG_DIRECTION)
+        };
         let normal = self.ground_normal(world, up);
         let reach_down = leg.dot(normal);
         if reach_down > -1e-3 {
