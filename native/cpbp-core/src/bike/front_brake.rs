@@ -68,8 +68,9 @@ pub struct FrontBrake {
     /// δ, rake ε), so v² = g·L·sin θ / (tan δ·cos ε); only the share 1 − that / v² of the
     /// full-lock turn's pull is left to stand the bike up, and the brake gives that share
     /// of itself (`righting_share`). Without it a full brake at 20° and 25 km/h stopped the
-    /// sport 600 in 0.7 s still leaned 15–20° with the bar at full lock, and it fell
-    /// (30 of 30 headings; none with it, stopping in 5.7 m rather than 2.3): the square law
+    /// sport 600 in 0.7 s still leaned 15–20° with the bar at full lock, and on legs along
+    /// the frame it fell (30 of 30 headings; none with it, stopping in 5.7 m rather than
+    /// 2.3); on legs that hang plumb it lies onto its foot leaned instead: the square law
     /// of `cornering_lean` leaves 0.8 of the brake there. The bike's drive eases the rear
     /// brake's share by the same (docs/bike-model.md, "Braking in a turn").
     pub righting_reserve: bool,
