@@ -71,8 +71,10 @@ pub struct Feet {
     /// the hip to the road. Stretched along the frame, a leg's sole swings in under a
     /// leaned bike by its stretch times the sine of the lean: the dirt 125, its sole built
     /// 0.35 m up, came to rest leaned 11° and lay down onto its foot, its centre of mass
-    /// passing over the sole at 24° (docs/bike-model.md, "Braking in a turn"). Off, the leg
-    /// stretches along the frame, as the street 390's does.
+    /// passing over the sole at 24° (docs/bike-model.md, "Braking in a turn"). It wants
+    /// `steady_reach` too: a plumb leg following its estimate of the road hovered just off
+    /// it facing down a 15° slope (the sport 600 and the naked 700 fell in all 30 such
+    /// stops). Off, the leg stretches along the frame, as the street 390's does.
     pub plumb_legs: bool,
 }
 
