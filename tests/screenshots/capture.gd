@@ -18,10 +18,11 @@ extends Node
 ## Only the last DRAWN_FRAMES frames are drawn: the game's logic, physics and controllers
 ## run every frame as usual, but drawing a 1280×720 frame in software (llvmpipe under
 ## Xvfb) costs about 0.2 s, far more than the frame's simulation, and only the last
-## picture is kept. Undrawn frames are paced (UNDRAWN_FPS) so the planners, which plan in
-## the background against the clock, still deliver every plan in time: racing ahead
-## would make plans late and ride another ride than the one drawn frames give. The full
-## ride is drawn frame by frame by the sound check's recording.
+## picture is kept. Every bike in the scene waits for each of its plans
+## (`wait_for_every_plan`), so undrawn frames run as fast as the planners deliver and the
+## ride is the one its seed gives however busy the machine: pacing them to the clock
+## instead took 50 ms a frame, most of this step's time. The full ride is drawn frame by
+## frame by the sound check's recording.
 
 ## The graphics quality pictures show: the textured world, without the antialiasing that
 ## multiplies a software renderer's frame time several times over.
@@ -31,9 +32,6 @@ const MIN_LUMINANCE_SPREAD := 0.04
 ## Enough drawn frames before the picture for the renderer to warm up (shader pipelines,
 ## shadow maps) as it would in play.
 const DRAWN_FRAMES := 20
-## A third of the game's 60 Hz: 50 ms a frame leaves a planner's plan (under 10 ms at the
-## game's N on an idle core) in time even on a busy two-core CI machine.
-const UNDRAWN_FPS := 20
 
 
 func _ready() -> void:
@@ -65,6 +63,7 @@ func _ready() -> void:
 	if packed == null:
 		_quit_with("cannot load scene %s" % options.scene, 1)
 		return
+	get_tree().node_added.connect(_wait_for_every_plan)
 	var root := packed.instantiate()
 	for assignment: String in staging["set"]:
 		var pair := assignment.split("=", true, 1)
@@ -72,7 +71,6 @@ func _ready() -> void:
 	add_child(root)
 	var frames := int(options.frames)
 	RenderingServer.render_loop_enabled = frames <= DRAWN_FRAMES
-	var frame_began := Time.get_ticks_usec()
 	for frame: int in frames:
 		if frame == frames - DRAWN_FRAMES:
 			RenderingServer.render_loop_enabled = true
@@ -87,8 +85,6 @@ func _ready() -> void:
 			if at.size() == 2 and int(at[1]) == frame:
 				_call(root, at[0])
 		await get_tree().process_frame
-		if not RenderingServer.render_loop_enabled:
-			frame_began = _pace(frame_began)
 	await RenderingServer.frame_post_draw
 	var image := get_viewport().get_texture().get_image()
 	DirAccess.make_dir_recursive_absolute(String(options.out).get_base_dir())
@@ -114,13 +110,10 @@ func _ready() -> void:
 	_quit_with("", 1 if blank else 0)
 
 
-## Sleeps out the rest of an undrawn frame begun at `began_usec` (Engine.max_fps does not
-## hold back a --fixed-fps run); returns when the next one begins.
-func _pace(began_usec: int) -> int:
-	var left := began_usec + 1_000_000 / UNDRAWN_FPS - Time.get_ticks_usec()
-	if left > 0:
-		OS.delay_usec(left)
-	return Time.get_ticks_usec()
+## Makes a bike (any node riding with plans) wait for each plan, as the bot rides do.
+func _wait_for_every_plan(node: Node) -> void:
+	if "wait_for_every_plan" in node:
+		node.set("wait_for_every_plan", true)
 
 
 ## Calls `node:method:argument` on the node of that name under `root` that has the method

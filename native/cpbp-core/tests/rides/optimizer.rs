@@ -6,7 +6,8 @@ use crate::common;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Ride};
 
-/// A flat ride with the `kind` planner (N = 15) at `kmh`.
+/// A flat ride with the `kind` planner (N = 15) at `kmh`. The straight rides below take
+/// the two ends of the protocol's 10–25 km/h: the experiment rides every speed at scale.
 fn planner_at(kmh: f64, kind: ControllerKind) -> Ride {
     common::ride_at(kind, kmh, 15)
 }
@@ -16,8 +17,8 @@ fn planner_at(kmh: f64, kind: ControllerKind) -> Ride {
     debug_assertions,
     ignore = "slow in debug builds; make test runs it in release"
 )]
-fn combined_rides_straight_at_10_15_20_and_25_kmh() {
-    for kmh in [10.0, 15.0, 20.0, 25.0] {
+fn combined_rides_straight_at_10_and_25_kmh() {
+    for kmh in [10.0, 25.0] {
         common::assert_rides_straight_for_20_seconds(&mut planner_at(
             kmh,
             ControllerKind::COMBINED,
@@ -30,8 +31,8 @@ fn combined_rides_straight_at_10_15_20_and_25_kmh() {
     debug_assertions,
     ignore = "slow in debug builds; make test runs it in release"
 )]
-fn optimizer_rides_straight_at_10_15_20_and_25_kmh() {
-    for kmh in [10.0, 15.0, 20.0, 25.0] {
+fn optimizer_rides_straight_at_10_and_25_kmh() {
+    for kmh in [10.0, 25.0] {
         common::assert_rides_straight_for_20_seconds(&mut planner_at(
             kmh,
             ControllerKind::OPTIMIZER,
