@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -16,6 +17,8 @@ from .rows import FIELDS, ScenarioRows
 PROJECT_ROOT = Path(__file__).resolve().parents[2]
 BINARY = PROJECT_ROOT / "native" / "target" / "release" / "cpbp-scenarios"
 ROWS = "scenarios.csv"
+# The planners' settings a folder's rows were ridden with, where they are not the defaults.
+SETTINGS = "settings.json"
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -25,10 +28,11 @@ def main(argv: list[str] | None = None) -> int:
     rows = ScenarioRows(out / ROWS)
     try:
         rows.load()
+        settings = _settings(args, out, rows)
         if args.command in ("run", "all"):
             ride(args, rows)
         if args.command in ("report", "all"):
-            write_report(rows.load(), out, args.bike)
+            write_report(rows.load(), out, args.bike, settings)
             print(f"planner-scenarios: report written to {out / 'scenarios.md'}", file=sys.stderr)
             if args.compare:
                 other = Path(args.compare)
@@ -41,6 +45,28 @@ def main(argv: list[str] | None = None) -> int:
         print(f"planner-scenarios: {error}", file=sys.stderr)
         return 2
     return 0
+
+
+def _settings(args: argparse.Namespace, out: Path, rows: ScenarioRows) -> dict[str, str]:
+    """The planners' settings of OUT's rows: a run's `--set` NAME=VALUE pairs, kept in
+    OUT/settings.json so that rows ridden with one horizon never join a folder of another
+    (a folder without the file holds rows ridden at the defaults)."""
+    path = out / SETTINGS
+    kept = json.loads(path.read_text("utf-8")) if path.exists() else {}
+    if args.command == "report" and not args.set:
+        return kept
+    given = {}
+    for assignment in args.set:
+        name, equals, value = assignment.partition("=")
+        if not equals:
+            raise ValueError(f"--set takes NAME=VALUE, not {assignment}")
+        given[name] = value
+    if given != kept and (kept or rows.path.exists()):
+        raise ValueError(f"{out}'s rows were ridden with {kept or 'the defaults'}, not "
+                         f"{given or 'the defaults'}: give each setting its own --out")
+    if given and not path.exists():
+        path.write_text(json.dumps(given, indent=1, sort_keys=True) + "\n", "utf-8")
+    return given
 
 
 def _table_name(folder: Path) -> str:
@@ -80,6 +106,10 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--model", default=None, help="the network learned and guided "
                         "ride (default: the bike's own, models/policy-<bike>.safetensors): "
                         "another bike's, to see how far it carries")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="plan with a planner's setting other than its default "
+                             "(horizon=0.6), repeatable; kept in OUT/settings.json, and a "
+                             "folder holds rows of one set of settings only")
     parser.add_argument("--compare", default=None, help="report: another table's directory "
                         "(another bike's), compared side by side in OUT/comparison.md")
     return parser
@@ -97,6 +127,8 @@ def ride(args: argparse.Namespace, rows: ScenarioRows) -> None:
         command += ["--bike", args.bike]
     if args.model:
         command += ["--model", args.model]
+    for assignment in args.set:
+        command += ["--set", assignment]
     if rows.path.exists():
         command += ["--skip", str(rows.path)]
     with subprocess.Popen(command, stdout=subprocess.PIPE, text=True) as process:

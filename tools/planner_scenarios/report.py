@@ -130,13 +130,17 @@ def measures_table(rows: list[dict], scenario: str) -> str:
     return "\n".join(lines)
 
 
-def write_report(rows: list[dict], out: Path, bike: str | None = None) -> None:
+def write_report(rows: list[dict], out: Path, bike: str | None = None,
+                 settings: dict[str, str] | None = None) -> None:
     scenarios = [s for s in METRICS if any(r["scenario"] == s for r in rows)]
     physics = sorted({r["physics"] for r in rows})
+    changed = ", ".join(f"{name} = {value}" for name, value in sorted((settings or {}).items()))
     parts = [
         "# Planners side by side on scripted rides",
         "",
         *([f"On the bike {bike}.", ""] if bike else []),
+        *([f"The planners planned with {changed} (`--set`), every other setting at its "
+           "default.", ""] if changed else []),
         "Made by `tools/planner-scenarios` from `scenarios.csv` "
         f"({len(rows)} rides, {', '.join(physics) or 'no'} physics, on flat ground unless "
         "the scenario names a slope). Seed *i* "

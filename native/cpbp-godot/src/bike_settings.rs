@@ -3,13 +3,10 @@
 //! time, in any order; before every physics tick they are read, clamped to the core's
 //! limits, and handed to the ride when they differ from what it has.
 
-use std::time::Duration;
-
 use cpbp_core::control::learned::LoadedPolicy;
-use cpbp_core::control::{CostTolerances, PlanWait, PlanningConfig};
-use cpbp_core::physics::{PhysicsModel, RolloutStepping};
+use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::PlannerSettings;
-use cpbp_core::settings::*;
+use cpbp_core::settings::WAIT_FOR_THROTTLE;
 
 use godot::global::godot_warn;
 
@@ -56,41 +53,12 @@ impl BikeSimulation {
         }
     }
 
-    /// The planners' settings the node's settings ask for (each already within its
-    /// range: `SettingValues` clamps what is set).
+    /// The planners' settings the node's settings ask for, rolling out in the built
+    /// ride's physics (a change of the export waits for the next build).
     fn planner_settings(&self) -> PlannerSettings {
-        let values = &self.settings;
-        // The built ride's physics: a change of the export waits for the next build.
         let physics = self
             .sim()
             .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
-        let mut planning = PlanningConfig {
-            trajectories: values.count(&TRAJECTORIES),
-            horizon: values.number(&HORIZON_S),
-            tolerances: CostTolerances {
-                lean: values.number(&LEAN_TOLERANCE_DEG).to_radians(),
-                rider: values.number(&RIDER_TOLERANCE_CM) / 100.0,
-            },
-            threads: values.count(&PLANNING_THREADS),
-            seed: values.integer(&PLANNER_SEED) as u64,
-            parameters: values.clone(),
-            ..PlanningConfig::default()
-        }
-        .rolling_out_in(physics);
-        let rollout_substeps = values.count(&ROLLOUT_SUBSTEPS);
-        if rollout_substeps > 0 {
-            planning.rollout_stepping = RolloutStepping::uniform(rollout_substeps);
-        }
-        PlannerSettings {
-            planning,
-            network: self.policy(),
-            auto_trajectories: values.flag(&AUTO_TRAJECTORIES),
-            wait: if values.flag(&WAIT_FOR_EVERY_PLAN) {
-                PlanWait::EveryPlan
-            } else {
-                let wait_ms = values.number(&PLAN_WAIT_MS);
-                PlanWait::AtMost(Duration::from_secs_f64(wait_ms / 1000.0))
-            },
-        }
+        PlannerSettings::from_values(&self.settings, physics, self.policy())
     }
 }

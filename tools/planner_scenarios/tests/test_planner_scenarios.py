@@ -129,9 +129,6 @@ class ReportTest(unittest.TestCase):
             self.assertGreater((Path(tmp) / "scenarios.png").stat().st_size, 10_000)
 
 
-if __name__ == "__main__":
-    unittest.main()
-
 
 class BrakeCurveTest(unittest.TestCase):
     def test_a_steady_one_g_stop_sums_to_its_distance(self):
@@ -167,3 +164,46 @@ class CompareTest(unittest.TestCase):
         self.assertIn("| arcade | 0 | 3 | 0 | 1 |", table, "seed 3 is on one side only")
         self.assertIn("−3.50", table.replace("-", "−"), "paired over seeds 0 and 2: 7−10, 8−12")
         self.assertNotIn("15° turn", table, "a scenario on one side only is left out")
+
+
+class SettingsTest(unittest.TestCase):
+    """A folder's rows are ridden with one set of planner settings (`--set`)."""
+
+    def _settings(self, out, *assignments, command="run"):
+        import argparse
+
+        from planner_scenarios.cli import _settings
+        args = argparse.Namespace(command=command, set=list(assignments))
+        return _settings(args, out, ScenarioRows(out / "scenarios.csv"))
+
+    def test_a_folder_keeps_its_settings_and_refuses_rows_of_others(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = Path(tmp)
+            self.assertEqual(self._settings(out, "horizon=0.6"), {"horizon": "0.6"})
+            self.assertIn("0.6", (out / "settings.json").read_text())
+            self.assertEqual(self._settings(out, "horizon=0.6"), {"horizon": "0.6"}, "resumes")
+            self.assertEqual(self._settings(out, command="report"), {"horizon": "0.6"})
+            with self.assertRaisesRegex(ValueError, "its own --out"):
+                self._settings(out, "horizon=0.4")
+            with self.assertRaisesRegex(ValueError, "its own --out"):
+                self._settings(out)
+            with self.assertRaisesRegex(ValueError, "NAME=VALUE"):
+                self._settings(Path(tmp) / "x", "horizon")
+
+    def test_rows_at_the_defaults_take_no_settings_after_them(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = Path(tmp)
+            ScenarioRows(out / "scenarios.csv").append(line("turn", "arcade", 0, 0, False, 1))
+            self.assertEqual(self._settings(out), {})
+            with self.assertRaisesRegex(ValueError, "the defaults"):
+                self._settings(out, "horizon=0.6")
+
+    def test_the_report_names_the_settings(self):
+        rows = [parse(line("turn", "combined", 5, s, False, 1.0)) for s in range(3)]
+        with tempfile.TemporaryDirectory() as tmp:
+            report.write_report(rows, Path(tmp), settings={"horizon": "0.6"})
+            self.assertIn("planned with horizon = 0.6", (Path(tmp) / "scenarios.md").read_text())
+
+
+if __name__ == "__main__":
+    unittest.main()

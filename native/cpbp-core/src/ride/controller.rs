@@ -3,12 +3,9 @@
 //! forgets what it remembered when the ride jumps. The registry (`registry.rs`) names
 //! them.
 
-use std::time::Duration;
-
+use super::PlannerSettings;
 use crate::bike::{Controls, DriveInput, RiderPosition};
-use crate::control::learned::LoadedPolicy;
-use crate::control::{Goal, HandoverStats, Plan, PlanWait, PlanningConfig};
-use crate::settings;
+use crate::control::{Goal, HandoverStats, Plan};
 use crate::simulation::Simulation;
 
 /// What the player asks for.
@@ -86,47 +83,5 @@ pub trait Controller: Send {
     /// choice's.
     fn trajectories(&self) -> Option<usize> {
         None
-    }
-}
-
-/// How the planners plan: the planning settings, the learned network and how long the
-/// ride waits for a plan.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PlannerSettings {
-    /// Every planner's settings; `planning.trajectories` is N, or where the automatic
-    /// choice starts from.
-    pub planning: PlanningConfig,
-    /// The learned network: the learned controller drives with it, and the ride hands it
-    /// to a planner that follows it (guided mode).
-    pub network: LoadedPolicy,
-    pub wait: PlanWait,
-    /// Move N while riding to what this machine plans in time (`AutoTrajectories`).
-    /// Only where the ride waits at most a while for a plan: a ride that waits for every
-    /// plan is never late, and must repeat exactly whatever the machine.
-    pub auto_trajectories: bool,
-}
-
-impl PlannerSettings {
-    /// Whether N moves with the machine's speed.
-    pub fn picks_trajectories(&self) -> bool {
-        self.auto_trajectories && matches!(self.wait, PlanWait::AtMost(_))
-    }
-}
-
-/// Longest the game waits at a control step for a plan: a frame of 60 Hz less what
-/// the step itself and the drawing need, so a slow plan never stalls the game.
-pub const GAME_PLAN_WAIT: Duration =
-    Duration::from_millis(settings::PLAN_WAIT_MS.default_number() as u64);
-
-impl Default for PlannerSettings {
-    /// The game's: the planners' defaults, no network, waiting at most `GAME_PLAN_WAIT`
-    /// at a step.
-    fn default() -> Self {
-        Self {
-            planning: PlanningConfig::default(),
-            network: LoadedPolicy::default(),
-            wait: PlanWait::AtMost(GAME_PLAN_WAIT),
-            auto_trajectories: settings::AUTO_TRAJECTORIES.default_number() != 0.0,
-        }
     }
 }

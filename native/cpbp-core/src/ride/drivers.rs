@@ -2,7 +2,8 @@
 //! the arcade controller, manual driving and the planning thread.
 
 use super::auto_trajectories::AutoTrajectories;
-use super::controller::{Controller, Intent, PlannerSettings, RideState};
+use super::controller::{Controller, Intent, RideState};
+use super::PlannerSettings;
 use crate::bike::{manual_controls, Controls};
 use crate::control::learned::{LeanTrim, LoadedPolicy, NonFiniteFeature, FEATURE_NAMES};
 use crate::control::{ArcadeController, Follows, HandoverStats, Plan, PlannerSpec, PlanningThread};

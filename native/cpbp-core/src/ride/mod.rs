@@ -8,11 +8,13 @@ mod controller;
 mod drivers;
 pub mod fidelity;
 pub mod limits;
+mod planner_settings;
 mod registry;
 pub mod schema;
 
 pub use auto_trajectories::AutoTrajectories;
-pub use controller::{Controller, Intent, PlannerSettings, RideState, GAME_PLAN_WAIT};
+pub use controller::{Controller, Intent, RideState};
+pub use planner_settings::{PlannerSettings, GAME_PLAN_WAIT};
 pub use registry::{ControllerEntry, ControllerKind, Drives};
 
 use std::sync::Arc;

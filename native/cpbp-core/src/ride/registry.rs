@@ -12,9 +12,10 @@ use std::fmt;
 use std::hash::{Hash, Hasher};
 use std::sync::{PoisonError, RwLock};
 
-use super::controller::{Controller, PlannerSettings};
+use super::controller::Controller;
 use super::drivers::{ArcadeDriver, LearnedDriver, ManualDriver, PlannerDriver};
 use super::schema;
+use super::PlannerSettings;
 use crate::control::{cpbp, mppi, sampling, PlannerSpec};
 use crate::settings::Setting;
 use crate::simulation::Simulation;

@@ -128,6 +128,30 @@ impl Setting {
         }
     }
 
+    /// `text` as this setting's value (a tool's command line): `true` or `false` for a
+    /// switch, a number for a number, the name itself for a name; checked as `check`
+    /// checks, so a value out of range is refused rather than clamped.
+    pub fn parse(&self, text: &str) -> Result<Value, String> {
+        let value = match self.default {
+            DefaultValue::Bool(_) => match text {
+                "true" => Value::Bool(true),
+                "false" => Value::Bool(false),
+                _ => return Err(format!("{} is true or false, not '{text}'", self.name)),
+            },
+            DefaultValue::Int(_) => Value::Int(
+                text.parse()
+                    .map_err(|_| format!("{} takes a whole number, not '{text}'", self.name))?,
+            ),
+            DefaultValue::Float(_) => Value::Float(
+                text.parse()
+                    .map_err(|_| format!("{} takes a number, not '{text}'", self.name))?,
+            ),
+            DefaultValue::Text(_) => Value::Text(text.to_owned()),
+        };
+        self.check(&value)?;
+        Ok(value)
+    }
+
     /// Whether `value` may be this setting's value: the right type, and a number within
     /// the range.
     pub fn check(&self, value: &Value) -> Result<(), String> {

@@ -5,7 +5,8 @@ use std::collections::HashSet;
 use std::path::PathBuf;
 
 use cpbp_core::physics::PhysicsModel;
-use cpbp_core::ride::ControllerKind;
+use cpbp_core::ride::{schema, ControllerKind};
+use cpbp_core::settings::{Owner, SettingValues, PLANNER_SEED, TRAJECTORIES};
 
 use super::{scenario_names, MANOEUVRES};
 
@@ -21,12 +22,16 @@ pub(crate) struct Args {
     pub model: Option<PathBuf>,
     /// The bike file ridden (a game's scenes/bike/bikes/*.tres); none: the reference bike.
     pub bike: Option<PathBuf>,
+    /// The planners' settings (`--set NAME=VALUE`, the rest at their defaults).
+    pub planner_settings: SettingValues,
 }
 
 pub(crate) const USAGE: &str =
     "cpbp-scenarios [--controllers K,K…] [--counts N,N…] [--seeds FIRST-LAST] \
-[--scenarios S,S…|all] [--physics classic|exact] [--skip FILE] [--model FILE] [--bike FILE]";
-const FLAGS: [&str; 8] = [
+[--scenarios S,S…|all] [--physics classic|exact] [--skip FILE] [--model FILE] [--bike FILE] \
+[--set NAME=VALUE]…";
+const FLAGS: [&str; 9] = [
+    "--set",
     "--model",
     "--bike",
     "--controllers",
@@ -124,12 +129,39 @@ pub(crate) fn parse(arguments: Vec<String>) -> Result<Args, String> {
         skip,
         model: value("--model")?.map(PathBuf::from),
         bike: value("--bike")?.map(PathBuf::from),
+        planner_settings: planner_settings(&arguments)?,
     })
+}
+
+/// The planners' settings with each `--set NAME=VALUE` (repeatable) applied: a planner's
+/// setting of the schema (the horizon, a tolerance, a planner's own parameter), its value
+/// checked against its entry and refused, not clamped, when it does not fit. N and the
+/// seed have flags of their own.
+fn planner_settings(arguments: &[String]) -> Result<SettingValues, String> {
+    let mut values = schema::values_of(|s| s.owner == Owner::Planner);
+    let assignments = arguments
+        .windows(2)
+        .filter(|pair| pair[0] == "--set")
+        .map(|pair| pair[1].as_str());
+    for assignment in assignments {
+        let (name, text) = assignment
+            .split_once('=')
+            .ok_or(format!("--set takes NAME=VALUE, not {assignment}"))?;
+        let setting = schema::find(name)
+            .filter(|s| s.owner == Owner::Planner)
+            .ok_or(format!("{name} is not a planner's setting"))?;
+        if [TRAJECTORIES.name, PLANNER_SEED.name].contains(&name) {
+            return Err(format!("{name} is set by --counts and --seeds"));
+        }
+        values.set(name, setting.parse(text)?)?;
+    }
+    Ok(values)
 }
 
 #[cfg(test)]
 mod tests {
     use super::parse;
+    use cpbp_core::settings::Value;
 
     fn words(line: &str) -> Vec<String> {
         line.split_whitespace().map(String::from).collect()
@@ -143,7 +175,21 @@ mod tests {
         assert_eq!(args.scenarios, vec!["stop40"]);
         let all = parse(words("--scenarios all")).unwrap().scenarios;
         assert_eq!(all, super::scenario_names());
+        let set = parse(words("--set horizon=0.6 --set mutation_scale=0.3")).unwrap();
+        assert_eq!(
+            set.planner_settings.get("horizon"),
+            Some(&Value::Float(0.6))
+        );
+        assert_eq!(
+            set.planner_settings.get("mutation_scale"),
+            Some(&Value::Float(0.3))
+        );
         for wrong in [
+            "--set horizon",
+            "--set horizon=9",
+            "--set trajectories=8",
+            "--set max_speed_kmh=20",
+            "--set no_such=1",
             "--seed 3",
             "stop40",
             "--counts 0",

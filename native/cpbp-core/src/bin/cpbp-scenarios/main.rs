@@ -17,7 +17,9 @@
 //! stops and hill starts of `stops.rs`; the full brakes of `brakes.rs`, which report more
 //! than their metric in the row's `extra` column; `logs`, the test level's ride (`logs.rs`).
 //! `arcade` and `learned` ride too, once per seed, as N = 0; `learned` and `guided` with
-//! the network in `--model` (the bike's own by default, `models/policy-<bike>`).
+//! the network in `--model` (the bike's own by default, `models/policy-<bike>`). `--set
+//! NAME=VALUE` plans with a planner's setting other than its default (`--set horizon=0.6`),
+//! through the mapping the game's node uses (`PlannerSettings::from_values`).
 
 mod args;
 mod bends;
@@ -33,7 +35,8 @@ use cpbp_core::bike::{read_bike_file, BikeParams, DriveInput, Placement, REFEREN
 use cpbp_core::control::learned::{project_policy, LoadedPolicy};
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
-use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::ride::{ControllerKind, Intent, PlannerSettings, Ride};
+use cpbp_core::settings::SettingValues;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
@@ -59,6 +62,8 @@ fn scenario_names() -> Vec<&'static str> {
 static POLICY: OnceLock<LoadedPolicy> = OnceLock::new();
 /// The bike every ride rides (`--bike`; the reference bike without it).
 static BIKE: OnceLock<BikeParams> = OnceLock::new();
+/// The planners' settings every ride plans with (`--set`; the defaults without it).
+static PLANNER_SETTINGS: OnceLock<SettingValues> = OnceLock::new();
 
 /// Who rides a scenario: the controller, its trajectory count N (0 for arcade), the seed
 /// (heading, planner and the scenario's draw) and the physics.
@@ -115,6 +120,7 @@ fn main() {
         }
         POLICY.get_or_init(|| policy);
     }
+    PLANNER_SETTINGS.get_or_init(|| args.planner_settings.clone());
     println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms,extra");
     for &scenario in &args.scenarios {
         for &kind in &args.controllers {
@@ -372,10 +378,14 @@ pub(crate) fn ride_bike_on(
         ..SimulationConfig::default()
     };
     let mut ride = Ride::new(Simulation::new(config, Arc::new(terrain), spawn), kind);
+    let values = PLANNER_SETTINGS.get_or_init(SettingValues::none);
+    let network = POLICY.get().cloned().unwrap_or_default();
+    ride.planner = PlannerSettings {
+        wait: PlanWait::EveryPlan,
+        ..PlannerSettings::from_values(values, physics, network)
+    };
     ride.planner.planning.trajectories = n;
     ride.planner.planning.seed = seed;
-    ride.planner.network = POLICY.get().cloned().unwrap_or_default();
-    ride.planner.wait = PlanWait::EveryPlan;
     ride.set_intent(Intent::cruise(kmh));
     ride
 }

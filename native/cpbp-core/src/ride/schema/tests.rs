@@ -103,3 +103,42 @@ fn a_name_with_choices_holds_only_one_of_them() {
     };
     assert!(extend(default_not_a_choice).is_err(), "its default is one");
 }
+
+#[test]
+fn a_tool_parses_a_setting_from_text_and_refuses_what_does_not_fit() {
+    assert_eq!(HORIZON_S.parse("0.6"), Ok(Value::Float(0.6)));
+    assert!(
+        HORIZON_S.parse("9").unwrap_err().contains("within"),
+        "refused, not clamped"
+    );
+    assert!(HORIZON_S.parse("short").unwrap_err().contains("a number"));
+    let trajectories = find("trajectories").unwrap();
+    assert_eq!(trajectories.parse("12"), Ok(Value::Int(12)));
+    assert!(trajectories.parse("1.5").is_err(), "a whole number");
+    let waits = find("wait_for_every_plan").unwrap();
+    assert_eq!(waits.parse("true"), Ok(Value::Bool(true)));
+    assert!(waits.parse("yes").is_err());
+    let quality = find("graphics_quality").unwrap();
+    assert_eq!(quality.parse("low"), Ok(Value::Text("low".into())));
+    assert!(quality.parse("ultra").is_err(), "not one of its choices");
+}
+
+#[test]
+fn the_planners_settings_from_the_defaults_are_the_games_defaults() {
+    use crate::control::learned::LoadedPolicy;
+    use crate::physics::PhysicsModel;
+    use crate::ride::PlannerSettings;
+
+    let mut values = values_of(|s| s.owner.on_the_node());
+    let physics = PhysicsModel::Exact;
+    let from_values = PlannerSettings::from_values(&values, physics, LoadedPolicy::default());
+    let mut default = PlannerSettings::default();
+    default.planning = default.planning.rolling_out_in(physics);
+    // The default holds no planner parameters (each reads its default); the values hold
+    // them all at their defaults, which plans the same.
+    default.planning.parameters = values.clone();
+    assert_eq!(from_values, default);
+    values.set("horizon", Value::Float(0.6)).unwrap();
+    let shorter = PlannerSettings::from_values(&values, physics, LoadedPolicy::default());
+    assert_eq!(shorter.planning.horizon, 0.6);
+}
