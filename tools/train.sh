@@ -11,6 +11,9 @@
 #  4. The last network becomes the bike's model (models/policy-<bike>.safetensors, <bike>
 #     the bike file's name: street_350, the reference, without BIKE) and the
 #     training report is written (docs/learned/training.md, losses.png).
+#     Every round's expert also recorded its plans for the planners' learned cost-to-go
+#     (issue 59; `generate --values`): it is trained on all of them (cpbp-learn
+#     train-value) into models/value-<bike>.safetensors. VALUES=0 leaves it out.
 #  5. Unless EVALUATE=0: learned and guided ride the test-level experiment and the
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
 #     are written again (docs/experiment, docs/scenarios).
@@ -40,11 +43,14 @@ DAGGER_LOG_EPISODES="${DAGGER_LOG_EPISODES:-20}"
 CARVING_EPISODES="${CARVING_EPISODES:-40}"
 DAGGER_CARVING_EPISODES="${DAGGER_CARVING_EPISODES:-20}"
 EVALUATE="${EVALUATE:-1}"
+VALUES="${VALUES:-1}"
 BRAKING_SECONDS=24
 LEARN_DATA="${LEARN_DATA:-$CACHE_ROOT/learn}"
 MODEL=models/policy-street_350.safetensors
 REPORT=docs/learned
 bike=()
+values=()
+[ "$VALUES" != 0 ] && values=(--values)
 if [ -n "${BIKE:-}" ]; then
   [ -f "$BIKE" ] || die "BIKE=$BIKE: no such bike file"
   name=$(basename "$BIKE" .tres)
@@ -54,6 +60,8 @@ if [ -n "${BIKE:-}" ]; then
   BRAKING_EPISODES="${BRAKING_EPISODES:-30}"
   DAGGER_BRAKING_EPISODES="${DAGGER_BRAKING_EPISODES:-10}"
 fi
+# The cost-to-go beside the policy: models/value-<bike>.safetensors.
+VALUE_MODEL="models/value-${name:-street_350}.safetensors"
 BRAKING_EPISODES="${BRAKING_EPISODES:-0}"
 DAGGER_BRAKING_EPISODES="${DAGGER_BRAKING_EPISODES:-0}"
 learn=native/target/release/cpbp-learn
@@ -77,14 +85,17 @@ ride_round() {
   local base=$(($1 * 100000)) learner=()
   [ -n "${7:-}" ] && learner=(--learner "$7")
   "$learn" generate --out "$2" --episodes "$((base + 1))-$((base + $3))" "${learner[@]}" \
-    "${bike[@]}"
+    "${bike[@]}" "${values[@]}"
   "$learn" generate --out "$2-logs" --family logs \
-    --episodes "$((base + 50001))-$((base + 50000 + $4))" "${learner[@]}" "${bike[@]}"
+    --episodes "$((base + 50001))-$((base + 50000 + $4))" "${learner[@]}" "${bike[@]}" \
+    "${values[@]}"
   "$learn" generate --out "$2-carving" --family carving \
-    --episodes "$((base + 70001))-$((base + 70000 + $5))" "${learner[@]}" "${bike[@]}"
+    --episodes "$((base + 70001))-$((base + 70000 + $5))" "${learner[@]}" "${bike[@]}" \
+    "${values[@]}"
   [ "$6" -gt 0 ] || return 0
   "$learn" generate --out "$2-braking" --family braking --seconds "$BRAKING_SECONDS" \
-    --episodes "$((base + 90001))-$((base + 90000 + $6))" "${learner[@]}" "${bike[@]}"
+    --episodes "$((base + 90001))-$((base + 90000 + $6))" "${learner[@]}" "${bike[@]}" \
+    "${values[@]}"
 }
 
 # Round $1's folders (the expert's or a DAgger round's, $2), comma-separated.
@@ -109,6 +120,15 @@ done
 
 cp "$LEARN_DATA/round-$ROUNDS.safetensors" "$MODEL.partial"
 mv "$MODEL.partial" "$MODEL"
+# The cost-to-go, on every round's recorded plans (unless it is trained already).
+if [ "$VALUES" != 0 ]; then
+  if [ ! -f "$LEARN_DATA/value.safetensors" ]; then
+    "$learn" train-value --data "$folders" --model "$LEARN_DATA/value.safetensors" \
+      --losses "$LEARN_DATA/value.losses.csv" ${EPOCHS:+--epochs "$EPOCHS"} ${SEED:+--seed "$SEED"}
+  fi
+  cp "$LEARN_DATA/value.safetensors" "$VALUE_MODEL.partial"
+  mv "$VALUE_MODEL.partial" "$VALUE_MODEL"
+fi
 minutes=$(( ($(date +%s) - started + 59) / 60 ))
 
 report() {

@@ -115,6 +115,7 @@ impl BikePlanner for StillBar {
             blowups: 0,
             warm: None,
             diagnostics: Diagnostics::default(),
+            value_samples: Vec::new(),
         }
     }
 

@@ -3,10 +3,10 @@
 //! time, in any order; before every physics tick they are read, clamped to the core's
 //! limits, and handed to the ride when they differ from what it has.
 
-use cpbp_core::control::learned::LoadedPolicy;
+use cpbp_core::control::learned::{LoadedPolicy, LoadedValue};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::PlannerSettings;
-use cpbp_core::settings::WAIT_FOR_THROTTLE;
+use cpbp_core::settings::{TERMINAL_VALUE, WAIT_FOR_THROTTLE};
 
 use godot::global::godot_warn;
 
@@ -53,12 +53,24 @@ impl BikeSimulation {
         }
     }
 
+    /// The bike's learned cost-to-go, read only while the settings ask the planners to
+    /// end their plans with it (`terminal_value`).
+    fn value(&self) -> LoadedValue {
+        if !self.settings.flag(&TERMINAL_VALUE) {
+            return LoadedValue::default();
+        }
+        match crate::policy_model::bike_value(self.bike.as_ref()) {
+            Ok(path) => crate::policy_model::value_at(&path),
+            Err(why) => LoadedValue::missing(why),
+        }
+    }
+
     /// The planners' settings the node's settings ask for, rolling out in the built
     /// ride's physics (a change of the export waits for the next build).
     fn planner_settings(&self) -> PlannerSettings {
         let physics = self
             .sim()
             .map_or(PhysicsModel::from(self.physics), |sim| sim.config().physics);
-        PlannerSettings::from_values(&self.settings, physics, self.policy())
+        PlannerSettings::from_values(&self.settings, physics, self.policy(), self.value())
     }
 }

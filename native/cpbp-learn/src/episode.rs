@@ -10,13 +10,15 @@ use std::sync::Arc;
 use cpbp_core::bike::{BikeParams, Controls, DriveInput, Placement, RiderPosition};
 use cpbp_core::control::cpbp::COMBINED;
 use cpbp_core::control::learned::{
-    features, output_entries, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT,
+    features, output_entries, value_target, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT,
+    VALUE_INPUT_COUNT,
 };
 use cpbp_core::control::{Goal, PlanningConfig, PlanningSession, TurnIntent};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::{Terrain, TerrainPiece};
 use glam::{DQuat, DVec3};
+use rand::seq::IndexedRandom;
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
@@ -34,7 +36,17 @@ pub enum Stream {
     Script = 1,
     Bumps = 2,
     Noise = 3,
+    /// Which of a plan's cost-to-go samples are kept.
+    Values = 4,
 }
+
+/// Planning steps after which the expert records its trajectories for a learned
+/// cost-to-go: 0.4, 0.6 and 0.9 s into its 1.2 s horizon (36 steps), so one network
+/// stands for the rest after any of the horizons measured.
+pub const VALUE_SPLITS: [usize; 3] = [12, 18, 27];
+/// Of the up to 3·N states a plan records, how many a control step keeps (drawn at
+/// random): enough to see the states the trajectories reach, not 48 near-copies a step.
+pub const VALUE_SAMPLES_PER_STEP: usize = 6;
 
 pub fn stream(seed: u64, which: Stream) -> Pcg64 {
     Pcg64::seed_from_u64(seed.wrapping_mul(4).wrapping_add(which as u64))
@@ -54,6 +66,8 @@ pub struct ExpertSettings {
     pub family: Family,
     /// The bike every episode rides (`--bike FILE`; the reference bike without it).
     pub bike: BikeParams,
+    /// Whether the expert's plans are recorded for a learned cost-to-go too (`--values`).
+    pub values: bool,
 }
 
 impl Default for ExpertSettings {
@@ -64,6 +78,7 @@ impl Default for ExpertSettings {
             noise: 0.03,
             family: Family::Mixed,
             bike: BikeParams::default(),
+            values: false,
         }
     }
 }
@@ -174,6 +189,11 @@ impl Episode {
 pub struct Records {
     pub features: Vec<[f32; FEATURE_COUNT]>,
     pub labels: Vec<[f32; OUTPUT_COUNT]>,
+    /// States the expert's trajectories reached, each as the cost-to-go's inputs (the
+    /// features and the seconds of horizon left) and target (`value_target`); empty
+    /// unless the settings record them.
+    pub value_inputs: Vec<[f32; VALUE_INPUT_COUNT]>,
+    pub value_targets: Vec<f32>,
     /// Whether the ride ended in a crash (the rows up to it stay: they are the expert's).
     pub crashed: bool,
     /// Who chose the applied controls: the expert, or the learner (DAgger).
@@ -193,10 +213,16 @@ pub fn ride(
         trajectories: settings.trajectories,
         seed: episode.seed,
         threads: 1,
+        record_values_after: if settings.values {
+            VALUE_SPLITS.to_vec()
+        } else {
+            Vec::new()
+        },
         ..PlanningConfig::default().rolling_out_in(PhysicsModel::Exact)
     };
     let mut expert = PlanningSession::new(&sim, &COMBINED, config);
     let mut noise = stream(episode.seed, Stream::Noise);
+    let mut keep = stream(episode.seed, Stream::Values);
     let (turn, entries) = (TurnIntent::for_bike(&settings.bike), output_entries());
     let mut records = Records {
         driver: learner.map_or_else(
@@ -231,6 +257,19 @@ pub fn ride(
         };
         let seen = features(bike, world, &goal, up);
         let label = expert.controls(&sim, &goal);
+        if let Some(plan) = expert.last_plan().filter(|_| settings.values) {
+            let dt = sim.config().control_dt;
+            let samples = plan.value_samples.sample(&mut keep, VALUE_SAMPLES_PER_STEP);
+            for sample in samples {
+                let mut inputs = [0.0; VALUE_INPUT_COUNT];
+                for (input, &feature) in inputs.iter_mut().zip(&sample.features) {
+                    *input = feature as f32;
+                }
+                inputs[FEATURE_COUNT] = (sample.remaining_steps as f64 * dt) as f32;
+                records.value_inputs.push(inputs);
+                records.value_targets.push(value_target(sample.cost_to_go));
+            }
+        }
         // A state the network cannot read (non-finite) is the expert's to drive.
         let driven = learner
             .and_then(|net| net.controls(bike, world, &goal, up).ok())

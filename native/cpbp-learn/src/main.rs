@@ -5,7 +5,9 @@
 //! printed as episodes end. With `--learner MODEL` the network drives and the planner
 //! labels the states it leads to (a DAgger round). With `--bike FILE` (a bike file, as
 //! the game reads it) the episodes ride that bike; `train` then records it in the model
-//! and refuses data of two bikes.
+//! and refuses data of two bikes. With `--values` the expert's plans are recorded for a
+//! learned cost-to-go too (the states its trajectories reach, with what the rest of the
+//! horizon cost from them), which `train-value` trains on (`training_run.rs`).
 //!
 //! `cpbp-learn summary --out DIR`: what the saved episodes hold (rows, the speeds they
 //! cover, each output's mean and spread), every shard checked against this build's
@@ -16,6 +18,7 @@ mod family;
 mod grounds;
 mod shard;
 mod train;
+mod training_run;
 
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -31,9 +34,9 @@ use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
 [--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves|braking] \
-[--bike FILE]\n       \
-cpbp-learn train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S] \
-[--hidden W,W…] [--weight-decay D]\n       \
+[--bike FILE] [--values]\n       \
+cpbp-learn train|train-value --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] \
+[--seed S] [--hidden W,W…] [--weight-decay D]\n       \
 cpbp-learn summary --out DIR";
 
 struct Generate {
@@ -53,7 +56,8 @@ fn main() {
     }
     let result = match arguments[0].as_str() {
         "generate" => parse(&arguments[1..]).and_then(generate),
-        "train" => train_command(&arguments[1..]),
+        "train" => training_run::train_command(&arguments[1..], training_run::Kind::Policy),
+        "train-value" => training_run::train_command(&arguments[1..], training_run::Kind::Value),
         "summary" => match &arguments[1..] {
             [flag, dir] if flag == "--out" => summary(&PathBuf::from(dir)),
             _ => Err(format!("summary needs --out DIR\nusage: {USAGE}")),
@@ -72,6 +76,10 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
     if let Some(bike) = take_bike_argument(&mut arguments)? {
         println!("riding {}", bike.name);
         settings.bike = bike.params;
+    }
+    if let Some(at) = arguments.iter().position(|a| a == "--values") {
+        arguments.remove(at);
+        settings.values = true;
     }
     let mut out = None;
     let mut seeds = None;
@@ -218,129 +226,6 @@ fn summary(dir: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
-/// Control steps before a crash left out of training (one second).
-const FALL_STEPS: usize = 30;
-
-/// `train --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] [--seed S]`: trains
-/// on every shard in the folders (seeds ending in 0 held out; the last second before a
-/// crash left out), prints each epoch's losses (and saves them as CSV), writes the model
-/// aside and renames it into place.
-fn train_command(arguments: &[String]) -> Result<(), String> {
-    let (mut data, mut model, mut settings) = (Vec::new(), None, train::TrainSettings::default());
-    let mut losses_path = None;
-    for pair in arguments.chunks(2) {
-        let [flag, value] = pair else {
-            return Err(format!("{} needs a value", pair[0]));
-        };
-        let count = || {
-            value
-                .parse::<usize>()
-                .map_err(|_| format!("{flag}: bad number '{value}'"))
-        };
-        match flag.as_str() {
-            "--data" => data.extend(value.split(',').map(PathBuf::from)),
-            "--model" => model = Some(PathBuf::from(value)),
-            "--losses" => losses_path = Some(PathBuf::from(value)),
-            "--epochs" => settings.epochs = count()?,
-            "--seed" => settings.seed = count()? as u64,
-            "--hidden" => {
-                settings.hidden = value
-                    .split(',')
-                    .map(|w| w.parse::<usize>().ok().filter(|&w| w > 0))
-                    .collect::<Option<_>>()
-                    .ok_or_else(|| format!("--hidden is widths like 128,128, not '{value}'"))?;
-            }
-            "--weight-decay" => {
-                settings.weight_decay = value
-                    .parse::<f64>()
-                    .ok()
-                    .filter(|w| w.is_finite() && *w >= 0.0)
-                    .ok_or_else(|| format!("--weight-decay must be a number ≥ 0, not '{value}'"))?;
-            }
-            other => return Err(format!("unknown option '{other}'")),
-        }
-    }
-    let model = model.ok_or("--model is required")?;
-    if data.is_empty() {
-        return Err("--data is required".into());
-    }
-    let (mut fit, mut held_out) = (train::Dataset::default(), train::Dataset::default());
-    let mut episodes = 0;
-    // One network is one bike's: the shards must all have ridden the same one.
-    let mut bike: Option<(String, PathBuf)> = None;
-    for dir in &data {
-        for path in shard::shard_paths(dir)? {
-            let shard = shard::read(&path)?.without_the_fall(FALL_STEPS);
-            match &bike {
-                Some((first, from)) if *first != shard.bike => {
-                    return Err(format!(
-                        "{} rode another bike ({}) than {} ({first}): train one bike's \
-                         episodes at a time",
-                        path.display(),
-                        shard.bike,
-                        from.display()
-                    ));
-                }
-                Some(_) => {}
-                None => bike = Some((shard.bike.clone(), path.clone())),
-            }
-            let seed = shard::seed_of(&path)
-                .ok_or_else(|| format!("{}: no seed in its name", path.display()))?;
-            let set = if seed % 10 == 0 {
-                &mut held_out
-            } else {
-                &mut fit
-            };
-            set.extend(&shard.features, &shard.labels);
-            episodes += 1;
-        }
-    }
-    println!(
-        "{episodes} episodes: {} rows to train on, {} held out",
-        fit.rows(),
-        held_out.rows()
-    );
-    let folders: Vec<String> = data
-        .iter()
-        .filter_map(|d| d.file_name().map(|n| n.to_string_lossy().into_owned()))
-        .collect();
-    let description = format!(
-        "cpbp-learn train: {episodes} episodes ({}), {} rows, hidden {:?}, {} epochs, batch {}, \
-         AdamW lr {}, seed {}",
-        folders.join(" + "),
-        fit.rows(),
-        settings.hidden,
-        settings.epochs,
-        settings.batch,
-        settings.learning_rate,
-        settings.seed
-    );
-    let mut losses = String::from("epoch,train,held_out\n");
-    let bike = bike.map(|(identity, _)| identity).unwrap_or_default();
-    let network = train::train(
-        &fit,
-        &held_out,
-        &settings,
-        &description,
-        &bike,
-        |epoch, loss| {
-            println!(
-                "epoch {epoch:>3}: train {:.4} · held out {:.4}",
-                loss.train, loss.validation
-            );
-            losses += &format!("{epoch},{:.6},{:.6}\n", loss.train, loss.validation);
-        },
-    )?;
-    if let Some(path) = losses_path {
-        std::fs::write(&path, losses).map_err(|e| format!("{}: {e}", path.display()))?;
-    }
-    let aside = model.with_extension("partial");
-    std::fs::write(&aside, network.to_bytes()).map_err(|e| format!("{}: {e}", aside.display()))?;
-    std::fs::rename(&aside, &model).map_err(|e| format!("{}: {e}", model.display()))?;
-    println!("model written to {}", model.display());
-    Ok(())
-}
-
 fn clock(seconds: f64) -> String {
     let s = seconds.round() as u64;
     format!("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
@@ -348,3 +233,5 @@ fn clock(seconds: f64) -> String {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod value_tests;

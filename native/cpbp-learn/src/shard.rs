@@ -1,6 +1,7 @@
 //! An episode's records on disk: one safetensors file per episode (`features` and
-//! `labels`, float32, one row per control step) whose metadata says what made it, so a
-//! trainer can refuse data of another feature list. A file is written whole or not at
+//! `labels`, float32, one row per control step, and when the episode recorded them the
+//! cost-to-go's `value_inputs` and `value_targets`) whose metadata says what made it, so
+//! a trainer can refuse data of another feature list. A file is written whole or not at
 //! all (written aside, synced, renamed), so a killed generator leaves no half file and
 //! its next run rides only the episodes missing.
 
@@ -11,7 +12,7 @@ use std::path::{Path, PathBuf};
 use cpbp_core::bike::BikeParams;
 use cpbp_core::control::learned::{
     f32_bytes, f32_values, output_names, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES,
-    OUTPUT_COUNT,
+    OUTPUT_COUNT, VALUE_INPUT_COUNT,
 };
 use safetensors::tensor::TensorView;
 use safetensors::{Dtype, SafeTensors};
@@ -36,7 +37,10 @@ pub fn write(
     let rows = records.features.len();
     let features = f32_bytes(records.features.as_flattened());
     let labels = f32_bytes(records.labels.as_flattened());
-    let views = [
+    let value_rows = records.value_targets.len();
+    let value_inputs = f32_bytes(records.value_inputs.as_flattened());
+    let value_targets = f32_bytes(&records.value_targets);
+    let mut views = vec![
         (
             "features",
             TensorView::new(Dtype::F32, vec![rows, FEATURE_COUNT], &features),
@@ -45,8 +49,24 @@ pub fn write(
             "labels",
             TensorView::new(Dtype::F32, vec![rows, OUTPUT_COUNT], &labels),
         ),
-    ]
-    .map(|(name, view)| (name, view.expect("rows of fixed width")));
+    ];
+    if value_rows > 0 {
+        views.push((
+            "value_inputs",
+            TensorView::new(
+                Dtype::F32,
+                vec![value_rows, VALUE_INPUT_COUNT],
+                &value_inputs,
+            ),
+        ));
+        views.push((
+            "value_targets",
+            TensorView::new(Dtype::F32, vec![value_rows, 1], &value_targets),
+        ));
+    }
+    let views = views
+        .into_iter()
+        .map(|(name, view)| (name, view.expect("rows of fixed width")));
     let meta = HashMap::from([
         ("format".to_string(), SHARD_FORMAT.to_string()),
         ("features_version".into(), FEATURES_VERSION.to_string()),
@@ -79,6 +99,9 @@ pub struct ShardRows {
     pub features: Vec<f32>,
     pub labels: Vec<f32>,
     pub rows: usize,
+    /// The cost-to-go's rows (none when the episode did not record them).
+    pub value_inputs: Vec<f32>,
+    pub value_targets: Vec<f32>,
     /// Whether the episode ended in a crash.
     pub crashed: bool,
     /// The identity of the bike it rode (`BikeParams::identity`).
@@ -127,10 +150,22 @@ pub fn read(path: &Path) -> Result<ShardRows, String> {
     if rows != label_rows {
         return Err(fail("features and labels differ in length".into()));
     }
+    let (value_inputs, value_targets) = if file.names().contains(&"value_targets") {
+        let (inputs, input_rows) = floats("value_inputs", VALUE_INPUT_COUNT)?;
+        let (targets, target_rows) = floats("value_targets", 1)?;
+        if input_rows != target_rows {
+            return Err(fail("value inputs and targets differ in length".into()));
+        }
+        (inputs, targets)
+    } else {
+        (Vec::new(), Vec::new())
+    };
     Ok(ShardRows {
         features,
         labels,
         rows,
+        value_inputs,
+        value_targets,
         crashed: field("crashed") == "true",
         // Shards from before bikes were recorded rode the reference bike.
         bike: meta

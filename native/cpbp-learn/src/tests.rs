@@ -9,13 +9,14 @@ use super::train::{train, Dataset, Layers, TrainSettings};
 use cpbp_core::bike::{read_bike_file, BikeParams, LOWER, UPPER};
 use cpbp_core::control::learned::{output_entries, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT};
 
-fn short() -> ExpertSettings {
+pub(crate) fn short() -> ExpertSettings {
     ExpertSettings {
         trajectories: 4,
         seconds: 1.0,
         noise: 0.05,
         family: Family::Mixed,
         bike: BikeParams::default(),
+        values: false,
     }
 }
 
@@ -103,6 +104,7 @@ fn a_ridden_episode_repeats_and_reads_back_from_its_shard() {
         rows,
         crashed,
         bike,
+        ..
     } = shard::read(&path).unwrap();
     assert_eq!(crashed, records.crashed);
     assert_eq!(bike, BikeParams::default().identity());
@@ -140,7 +142,7 @@ fn tiny_run() -> (PolicyNetwork, Dataset) {
         batch: 32,
         ..TrainSettings::default()
     };
-    let network = train(
+    let parts = train(
         &data,
         &Dataset::default(),
         &training,
@@ -151,7 +153,7 @@ fn tiny_run() -> (PolicyNetwork, Dataset) {
         },
     )
     .expect("it trains");
-    (network, data)
+    (PolicyNetwork::new(parts).expect("a policy"), data)
 }
 
 #[test]
@@ -342,9 +344,15 @@ fn episodes_ride_the_bike_asked_and_a_network_is_one_bikes() {
         root.join("pit").display(),
         root.join("street").display()
     );
-    let refused = super::train_command(&arguments(&both)).unwrap_err();
+    let refused =
+        super::training_run::train_command(&arguments(&both), super::training_run::Kind::Policy)
+            .unwrap_err();
     assert!(refused.contains("another bike"), "{refused}");
-    super::train_command(&arguments(&root.join("pit").to_string_lossy())).unwrap();
+    super::training_run::train_command(
+        &arguments(&root.join("pit").to_string_lossy()),
+        super::training_run::Kind::Policy,
+    )
+    .unwrap();
     let model = PolicyNetwork::load(&root.join("model.safetensors")).unwrap();
     assert_eq!(model.parts().bike, pit_bike.params.identity());
     std::fs::remove_dir_all(&root).unwrap();

@@ -1,12 +1,13 @@
-//! Training the policy network on the recorded episodes with candle: a tanh MLP on
-//! normalised features regressing the planner's normalised controls (mean squared
-//! error, AdamW). Weights start from a seeded generator and batches are drawn from it,
+//! Training a network on the recorded episodes with candle: a tanh MLP on normalised
+//! inputs regressing normalised targets (mean squared error, AdamW): the policy the
+//! planner's controls from the features, the cost-to-go the log of what the rest of the
+//! planner's horizon cost from the features and the time left. Weights start from a seeded generator and batches are drawn from it,
 //! on one thread, so a run repeats exactly. Episodes whose seed is a multiple of ten are
 //! held out for validation, never trained on.
 
 use candle_core::{DType, Device, Tensor, Var};
 use candle_nn::{AdamW, Optimizer, ParamsAdamW};
-use cpbp_core::control::learned::{NetworkParts, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT};
+use cpbp_core::control::learned::{NetworkParts, FEATURE_COUNT, OUTPUT_COUNT};
 use rand::seq::SliceRandom;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -35,16 +36,36 @@ impl Default for TrainSettings {
     }
 }
 
-/// Rows of features and labels, flattened.
-#[derive(Clone, Debug, Default)]
+/// Rows of inputs (`features`) and targets (`labels`), flattened, `inputs` and `outputs`
+/// wide.
+#[derive(Clone, Debug)]
 pub struct Dataset {
+    pub inputs: usize,
+    pub outputs: usize,
     pub features: Vec<f32>,
     pub labels: Vec<f32>,
 }
 
+/// The policy's rows: the features, the planner's controls.
+impl Default for Dataset {
+    fn default() -> Self {
+        Self::new(FEATURE_COUNT, OUTPUT_COUNT)
+    }
+}
+
 impl Dataset {
+    /// No rows yet, of `inputs` inputs and `outputs` targets.
+    pub fn new(inputs: usize, outputs: usize) -> Self {
+        Self {
+            inputs,
+            outputs,
+            features: Vec::new(),
+            labels: Vec::new(),
+        }
+    }
+
     pub fn rows(&self) -> usize {
-        self.features.len() / FEATURE_COUNT
+        self.features.len() / self.inputs
     }
 
     pub fn extend(&mut self, features: &[f32], labels: &[f32]) {
@@ -170,16 +191,22 @@ impl Layers {
     }
 }
 
-/// Mean squared error of `layers` over `rows` normalised rows.
-fn loss(layers: &Layers, x: &[f32], y: &[f32], device: &Device) -> candle_core::Result<Tensor> {
-    let rows = x.len() / FEATURE_COUNT;
-    let x = Tensor::from_slice(x, (rows, FEATURE_COUNT), device)?;
-    let y = Tensor::from_slice(y, (rows, OUTPUT_COUNT), device)?;
+/// Mean squared error of `layers` over normalised rows `inputs` and `outputs` wide.
+fn loss(
+    layers: &Layers,
+    (x, inputs): (&[f32], usize),
+    (y, outputs): (&[f32], usize),
+    device: &Device,
+) -> candle_core::Result<Tensor> {
+    let rows = x.len() / inputs;
+    let x = Tensor::from_slice(x, (rows, inputs), device)?;
+    let y = Tensor::from_slice(y, (rows, outputs), device)?;
     (layers.forward(&x)? - y)?.sqr()?.mean_all()
 }
 
-/// Trains on `train`, reporting each epoch's losses to `report`; returns the network of
-/// the epoch that did best on `validation` (the last epoch's when there is none).
+/// Trains on `train`, reporting each epoch's losses to `report`; returns the parts of the
+/// network of the epoch that did best on `validation` (the last epoch's when there is
+/// none), for the caller to check as the kind of network it trained.
 pub fn train(
     train: &Dataset,
     validation: &Dataset,
@@ -187,22 +214,23 @@ pub fn train(
     description: &str,
     bike: &str,
     mut report: impl FnMut(usize, EpochLoss),
-) -> Result<PolicyNetwork, String> {
+) -> Result<NetworkParts, String> {
     let fail = |e: candle_core::Error| e.to_string();
     if train.rows() == 0 {
         return Err("no training rows".into());
     }
+    let (inputs, outputs) = (train.inputs, train.outputs);
     let device = Device::Cpu;
-    let (in_mean, in_std) = moments(&train.features, FEATURE_COUNT, 1e-3);
-    let (out_mean, out_std) = moments(&train.labels, OUTPUT_COUNT, 1e-3);
+    let (in_mean, in_std) = moments(&train.features, inputs, 1e-3);
+    let (out_mean, out_std) = moments(&train.labels, outputs, 1e-3);
     let x = normalised(&train.features, &in_mean, &in_std);
     let y = normalised(&train.labels, &out_mean, &out_std);
     let vx = normalised(&validation.features, &in_mean, &in_std);
     let vy = normalised(&validation.labels, &out_mean, &out_std);
     let mut rng = Pcg64::seed_from_u64(settings.seed);
-    let widths: Vec<usize> = std::iter::once(FEATURE_COUNT)
+    let widths: Vec<usize> = std::iter::once(inputs)
         .chain(settings.hidden.iter().copied())
-        .chain(std::iter::once(OUTPUT_COUNT))
+        .chain(std::iter::once(outputs))
         .collect();
     let layers = Layers::new(&widths, &mut rng, &device).map_err(fail)?;
     let params = ParamsAdamW {
@@ -221,10 +249,10 @@ pub fn train(
             bx.clear();
             by.clear();
             for &r in chunk {
-                bx.extend_from_slice(&x[r * FEATURE_COUNT..(r + 1) * FEATURE_COUNT]);
-                by.extend_from_slice(&y[r * OUTPUT_COUNT..(r + 1) * OUTPUT_COUNT]);
+                bx.extend_from_slice(&x[r * inputs..(r + 1) * inputs]);
+                by.extend_from_slice(&y[r * outputs..(r + 1) * outputs]);
             }
-            let batch_loss = loss(&layers, &bx, &by, &device).map_err(fail)?;
+            let batch_loss = loss(&layers, (&bx, inputs), (&by, outputs), &device).map_err(fail)?;
             optimizer.backward_step(&batch_loss).map_err(fail)?;
             total += f64::from(batch_loss.to_scalar::<f32>().map_err(fail)?);
             batches += 1;
@@ -232,7 +260,7 @@ pub fn train(
         let validation = if vx.is_empty() {
             f64::NAN
         } else {
-            let v = loss(&layers, &vx, &vy, &device).map_err(fail)?;
+            let v = loss(&layers, (&vx, inputs), (&vy, outputs), &device).map_err(fail)?;
             f64::from(v.to_scalar::<f32>().map_err(fail)?)
         };
         report(
@@ -255,7 +283,7 @@ pub fn train(
             layers.weights().map_err(fail)?,
         ),
     };
-    PolicyNetwork::new(NetworkParts {
+    Ok(NetworkParts {
         input_mean: in_mean,
         input_std: in_std,
         layers: parts_layers,
@@ -264,5 +292,4 @@ pub fn train(
         training: format!("{description}, weights of epoch {best_epoch}"),
         bike: bike.to_owned(),
     })
-    .map_err(|e| e.to_string())
 }

@@ -20,7 +20,7 @@ use super::lean::{
     current_lean_vector, desired_lean_vector, fall_time_scale, frame_roll_cost, grip_lean_limit,
     lean_ahead, lean_cost, lean_on_the_way, roll_lean_cost,
 };
-use super::learned::PolicyNetwork;
+use super::learned::{self, PolicyNetwork, ValueNetwork};
 use super::Goal;
 use crate::bike::{
     index, rider_position_cost, Bike, Controls, ForceClass, CONTROL_DIM, DRIVE_ENTRIES,
@@ -71,6 +71,16 @@ pub struct BikeRollout {
     /// Where the plan starts, read at its first step on a bike with
     /// `planners_lean_reference`: the lean goal approaches the asked lean from there.
     pub start: PlanStart,
+    /// The learned cost-to-go that ends a shortened horizon, if the plan's is.
+    pub value: Option<TerminalValue>,
+}
+
+/// A learned cost-to-go standing for the seconds a shortened horizon leaves out.
+#[derive(Clone)]
+pub struct TerminalValue {
+    pub network: Arc<ValueNetwork>,
+    /// The full horizon less the planned one (s).
+    pub remaining_s: f64,
 }
 
 /// The costed lean where a plan starts and the time scale of the bike's fall from it.
@@ -271,6 +281,19 @@ impl RolloutSystem for BikeRollout {
 
     fn trace_point(&self) -> Option<[f64; 3]> {
         Some(self.bike.center_of_mass(&self.world).to_array())
+    }
+
+    /// The learned cost-to-go of the rest of the full horizon, when the plan's is
+    /// shortened (`BikeRollout::value`); a state it cannot read (non-finite) gets none:
+    /// its steps' costs already condemn it.
+    fn terminal_cost(&self) -> Option<f64> {
+        let value = self.value.as_ref()?;
+        let seen = learned::features(&self.bike, &self.world, &self.goal, self.up);
+        value.network.cost_to_go(&seen, value.remaining_s).ok()
+    }
+
+    fn value_features(&self) -> Vec<f64> {
+        learned::features(&self.bike, &self.world, &self.goal, self.up).to_vec()
     }
 
     /// The pose prior (thesis §4.3.1): rider joints towards the riding pose (offset where

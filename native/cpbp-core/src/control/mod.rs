@@ -19,7 +19,7 @@ pub use goal::Goal;
 pub use lean::{
     current_lean_vector, desired_lean, desired_lean_vector, lean_cost, rodrigues, TurnIntent,
 };
-pub use plan_result::{Diagnostics, PlanPhases, PlanResult, Trajectory};
+pub use plan_result::{Diagnostics, PlanPhases, PlanResult, Trajectory, ValueSample};
 pub use planner::{BikePlanner, Follows, PlannerSpec};
 pub use planning_session::{PlanningConfig, PlanningSession};
 pub use planning_thread::{HandoverStats, Plan, PlanWait, PlanningThread};

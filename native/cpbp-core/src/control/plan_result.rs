@@ -79,6 +79,21 @@ pub struct PlanResult {
     /// refinement), if one did.
     pub warm: Option<usize>,
     pub diagnostics: Diagnostics,
+    /// States a trajectory passed, each with the cost its plan then added by the horizon
+    /// (when the planner was asked to record them: the data of a learned cost-to-go).
+    pub value_samples: Vec<ValueSample>,
+}
+
+/// A state a plan's trajectory passed and what the rest of the horizon cost from it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ValueSample {
+    /// The system's features there (`RolloutSystem::value_features`).
+    pub features: Vec<f64>,
+    /// Planning steps from there to the horizon.
+    pub remaining_steps: usize,
+    /// The least total (state + control) cost any trajectory through that state added
+    /// from there to the horizon.
+    pub cost_to_go: f64,
 }
 
 impl PlanResult {

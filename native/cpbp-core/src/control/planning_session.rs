@@ -6,8 +6,8 @@
 use std::sync::Arc;
 
 use super::arcade::ArcadeController;
-use super::bike_rollout::{BikeRollout, CostTolerances, PlanStart, RolloutPolicy};
-use super::learned::PolicyNetwork;
+use super::bike_rollout::{BikeRollout, CostTolerances, PlanStart, RolloutPolicy, TerminalValue};
+use super::learned::{LoadedValue, PolicyNetwork};
 use super::plan_result::{PlanPhases, PlanResult};
 use super::planner::{BikePlanner, Follows, PlannerSpec};
 use super::Goal;
@@ -44,6 +44,17 @@ pub struct PlanningConfig {
     /// The planners' own parameters by name (`PlannerSpec::parameters`): each planner
     /// reads its own, at its default where this holds none.
     pub parameters: SettingValues,
+    /// Whether a learned cost-to-go ends the plans: with `value` loaded the planners plan
+    /// `value_horizon` and cost the rest of `horizon` with it (`planned`).
+    pub terminal_value: bool,
+    /// The horizon planned when the cost-to-go ends it (s).
+    pub value_horizon: f64,
+    /// The learned cost-to-go, or why there is none.
+    pub value: LoadedValue,
+    /// Planning steps after which a planner that can records its trajectories' states
+    /// with what the rest of the horizon cost from them (`PlanResult::value_samples`, a
+    /// cost-to-go's training data); empty: none.
+    pub record_values_after: Vec<usize>,
 }
 
 impl Default for PlanningConfig {
@@ -58,11 +69,38 @@ impl Default for PlanningConfig {
             seed: settings::PLANNER_SEED.default_number() as u64,
             threads: 0,
             parameters: SettingValues::none(),
+            terminal_value: settings::TERMINAL_VALUE.default_number() != 0.0,
+            value_horizon: settings::VALUE_HORIZON_S.default_number(),
+            value: LoadedValue::default(),
+            record_values_after: Vec::new(),
         }
     }
 }
 
 impl PlanningConfig {
+    /// The seconds the planners plan, and the cost-to-go that stands for the rest of the
+    /// horizon after them: the value horizon and the rest while the terminal value is on
+    /// and its network loaded (and the value horizon the shorter), the whole horizon and
+    /// none otherwise.
+    pub fn planned(&self) -> (f64, Option<TerminalValue>) {
+        match self.value.network() {
+            Some(network) if self.terminal_value && self.value_horizon < self.horizon => (
+                self.value_horizon,
+                Some(TerminalValue {
+                    network: Arc::clone(network),
+                    remaining_s: self.horizon - self.value_horizon,
+                }),
+            ),
+            _ => (self.horizon, None),
+        }
+    }
+
+    /// Why the plans are not shortened as asked (the terminal value is on, its network
+    /// missing or unusable), as the HUD says it.
+    pub fn value_problem(&self) -> Option<&str> {
+        self.value.problem().filter(|_| self.terminal_value)
+    }
+
     /// This configuration rolling out as `physics` prescribes (solver and stepping).
     pub fn rolling_out_in(self, physics: PhysicsModel) -> Self {
         Self {
@@ -98,7 +136,7 @@ impl PlanningSession {
     /// The planner `spec` builds, with N rollout worlds like the master of `sim`.
     pub fn new(sim: &Simulation, spec: &'static PlannerSpec, config: PlanningConfig) -> Self {
         let dt = sim.config().control_dt;
-        let steps = (config.horizon / dt).round().max(1.0) as usize;
+        let steps = (config.planned().0 / dt).round().max(1.0) as usize;
         let mut optimizer = Self {
             planner: (spec.build)(&config, steps),
             spec,
@@ -123,6 +161,7 @@ impl PlanningSession {
     /// Rollout worlds like the master of `sim` until there is one per trajectory.
     fn add_rollouts(&mut self, sim: &Simulation, step_dt: f64) {
         let config = &self.config;
+        let value = config.planned().1;
         while self.rollouts.len() < config.trajectories.max(1) {
             let mut world = sim.new_world();
             world.set_solver(config.rollout_solver);
@@ -137,6 +176,7 @@ impl PlanningSession {
                 tolerances: config.tolerances,
                 policy: None,
                 start: PlanStart::default(),
+                value: value.clone(),
             });
         }
     }

@@ -6,7 +6,9 @@ use super::controller::{Controller, Intent, RideState};
 use super::PlannerSettings;
 use crate::bike::{manual_controls, Controls};
 use crate::control::learned::{LeanTrim, LoadedPolicy, NonFiniteFeature, FEATURE_NAMES};
-use crate::control::{ArcadeController, Follows, HandoverStats, Plan, PlannerSpec, PlanningThread};
+use crate::control::{
+    ArcadeController, Follows, HandoverStats, Plan, PlannerSpec, PlanningConfig, PlanningThread,
+};
 use crate::simulation::Simulation;
 
 /// The arcade controller (thesis §4.3.2) on the master.
@@ -139,9 +141,9 @@ pub struct PlannerDriver {
     /// Whether trajectory 1 follows the learned network (guided mode).
     follows_network: bool,
     /// What keeps it from planning as itself, as the HUD says it, and whether that is a
-    /// dead thread and a missing model.
+    /// dead thread, a missing model and a missing cost-to-go.
     failure: Option<String>,
-    failure_state: (bool, bool),
+    failure_state: (bool, bool, bool),
 }
 
 impl PlannerDriver {
@@ -153,7 +155,7 @@ impl PlannerDriver {
             trajectories: planner.planning.trajectories,
             follows_network: spec.follows == Follows::Network,
             failure: None,
-            failure_state: (false, false),
+            failure_state: (false, false, false),
         }
     }
 
@@ -174,18 +176,24 @@ impl PlannerDriver {
 
     /// Keeps the HUD's sentence on what stops the planner being itself up to date; the
     /// sentence is formatted only when that changes (this runs every control step).
-    fn note_failure(&mut self, policy: &LoadedPolicy) {
+    fn note_failure(&mut self, policy: &LoadedPolicy, config: &PlanningConfig) {
         let died = self.anytime.failure();
         let missing = policy.problem().filter(|_| self.follows_network);
-        let state = (died.is_some(), missing.is_some());
+        let no_value = config.value_problem();
+        let state = (died.is_some(), missing.is_some(), no_value.is_some());
         if state == self.failure_state {
             return;
         }
         self.failure_state = state;
-        self.failure = match (died, missing) {
-            (Some(died), _) => Some(format!("the planner stopped ({died}); arcade steers")),
-            (None, Some(why)) => Some(format!("{why}; the arcade controller guides the planner")),
-            (None, None) => None,
+        if let Some(died) = died {
+            self.failure = Some(format!("the planner stopped ({died}); arcade steers"));
+            return;
+        }
+        let guided = missing.map(|why| format!("{why}; the arcade controller guides the planner"));
+        let whole = no_value.map(|why| format!("{why}; it plans its whole horizon"));
+        self.failure = match (guided, whole) {
+            (Some(guided), Some(whole)) => Some(format!("{guided}. {whole}")),
+            (guided, whole) => guided.or(whole),
         };
     }
 
@@ -230,7 +238,7 @@ impl Controller for PlannerDriver {
         let radius = state.sim.bike().params().wheel_radius;
         state.goal.drive.apply(radius, &mut controls);
         self.note_step(self.anytime.stats.late > late_before);
-        self.note_failure(&state.planner.network);
+        self.note_failure(&state.planner.network, &config);
         controls
     }
 

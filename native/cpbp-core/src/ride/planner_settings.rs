@@ -5,7 +5,7 @@
 
 use std::time::Duration;
 
-use crate::control::learned::LoadedPolicy;
+use crate::control::learned::{LoadedPolicy, LoadedValue};
 use crate::control::{CostTolerances, PlanWait, PlanningConfig};
 use crate::physics::{PhysicsModel, RolloutStepping};
 use crate::settings::{self, SettingValues};
@@ -35,12 +35,14 @@ impl PlannerSettings {
 
     /// The planners' settings `values` ask for (each already within its range:
     /// `SettingValues` clamps what is set), rolling out as `physics` prescribes unless
-    /// the rollout substeps are set, with `network` for the controllers that follow one.
-    /// A setting `values` does not hold plans at its default.
+    /// the rollout substeps are set, with `network` for the controllers that follow one
+    /// and `value` to end the plans with when the settings ask (`terminal_value`). A
+    /// setting `values` does not hold plans at its default.
     pub fn from_values(
         values: &SettingValues,
         physics: PhysicsModel,
         network: LoadedPolicy,
+        value: LoadedValue,
     ) -> Self {
         let mut planning = PlanningConfig {
             trajectories: values.count(&settings::TRAJECTORIES),
@@ -52,6 +54,9 @@ impl PlannerSettings {
             threads: values.count(&settings::PLANNING_THREADS),
             seed: values.integer(&settings::PLANNER_SEED) as u64,
             parameters: values.clone(),
+            terminal_value: values.flag(&settings::TERMINAL_VALUE),
+            value_horizon: values.number(&settings::VALUE_HORIZON_S),
+            value,
             ..PlanningConfig::default()
         }
         .rolling_out_in(physics);

@@ -124,6 +124,25 @@ pub const HORIZON_S: Setting = Setting {
     range: Some(Range::new(0.2, 3.0, 0.1)),
     ..BASE
 };
+pub const TERMINAL_VALUE: Setting = Setting {
+    name: "terminal_value",
+    label: "Learned cost-to-go",
+    description: "Plan the value horizon and cost the rest of the horizon with the bike's \
+                  learned cost-to-go (models/value-<bike>): less to simulate. Without the \
+                  network the planners plan the whole horizon and say so.",
+    default: D::Bool(false),
+    ..BASE
+};
+pub const VALUE_HORIZON_S: Setting = Setting {
+    name: "value_horizon",
+    label: "Value horizon",
+    description: "How far ahead the planners simulate when the learned cost-to-go costs \
+                  the rest of the horizon.",
+    unit: "s",
+    default: D::Float(0.6),
+    range: Some(Range::new(0.1, 3.0, 0.1)),
+    ..BASE
+};
 pub const LEAN_TOLERANCE_DEG: Setting = Setting {
     name: "lean_tolerance_deg",
     label: "Lean tolerance",
@@ -324,6 +343,8 @@ pub const ENTRIES: &[Setting] = &[
     TRAJECTORIES,
     AUTO_TRAJECTORIES,
     HORIZON_S,
+    TERMINAL_VALUE,
+    VALUE_HORIZON_S,
     LEAN_TOLERANCE_DEG,
     RIDER_TOLERANCE_CM,
     ROLLOUT_SUBSTEPS,

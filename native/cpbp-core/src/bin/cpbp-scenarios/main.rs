@@ -32,7 +32,7 @@ mod stops;
 use std::sync::{Arc, OnceLock};
 
 use cpbp_core::bike::{read_bike_file, BikeParams, DriveInput, Placement, REFERENCE_BIKE};
-use cpbp_core::control::learned::{project_policy, LoadedPolicy};
+use cpbp_core::control::learned::{project_policy, project_value, LoadedPolicy, LoadedValue};
 use cpbp_core::control::PlanWait;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{ControllerKind, Intent, PlannerSettings, Ride};
@@ -64,6 +64,8 @@ static POLICY: OnceLock<LoadedPolicy> = OnceLock::new();
 static BIKE: OnceLock<BikeParams> = OnceLock::new();
 /// The planners' settings every ride plans with (`--set`; the defaults without it).
 static PLANNER_SETTINGS: OnceLock<SettingValues> = OnceLock::new();
+/// The bike's learned cost-to-go, loaded when `--set terminal_value=true` asks for it.
+static VALUE: OnceLock<LoadedValue> = OnceLock::new();
 
 /// Who rides a scenario: the controller, its trajectory count N (0 for arcade), the seed
 /// (heading, planner and the scenario's draw) and the physics.
@@ -120,7 +122,13 @@ fn main() {
         }
         POLICY.get_or_init(|| policy);
     }
-    PLANNER_SETTINGS.get_or_init(|| args.planner_settings.clone());
+    let settings = PLANNER_SETTINGS.get_or_init(|| args.planner_settings.clone());
+    if settings.flag(&cpbp_core::settings::TERMINAL_VALUE) {
+        let value = VALUE.get_or_init(|| project_value(&key));
+        if let Some(why) = value.problem() {
+            eprintln!("cpbp-scenarios: {why}");
+        }
+    }
     println!("scenario,controller,trajectories,seed,physics,fell,metric,planning_ms,extra");
     for &scenario in &args.scenarios {
         for &kind in &args.controllers {
@@ -382,7 +390,12 @@ pub(crate) fn ride_bike_on(
     let network = POLICY.get().cloned().unwrap_or_default();
     ride.planner = PlannerSettings {
         wait: PlanWait::EveryPlan,
-        ..PlannerSettings::from_values(values, physics, network)
+        ..PlannerSettings::from_values(
+            values,
+            physics,
+            network,
+            VALUE.get().cloned().unwrap_or_default(),
+        )
     };
     ride.planner.planning.trajectories = n;
     ride.planner.planning.seed = seed;

@@ -50,6 +50,7 @@ fn standing_rollout(bike: BikeParams) -> BikeRollout {
         tolerances: CostTolerances::default(),
         policy: None,
         start: PlanStart::default(),
+        value: None,
     };
     rollout.restore(&sim.world().snapshot());
     rollout

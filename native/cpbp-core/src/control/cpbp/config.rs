@@ -1,6 +1,6 @@
 //! The planner's settings, what particle 1 replays, and what a frame returns.
 
-use crate::control::{Diagnostics, PlanResult};
+use crate::control::{Diagnostics, PlanResult, ValueSample};
 
 /// The name C-PBP's plans give their resampling count among the diagnostics.
 pub const RESAMPLES: &str = "resamples";
@@ -32,6 +32,10 @@ pub struct CpbpConfig {
     /// dimensions and one costed state feature, the prior terms can outweigh the state
     /// cost that the choice of the best trajectory is about.
     pub control_cost_weight: f64,
+    /// Steps after which every particle's state is recorded with the cost its lineage
+    /// then adds by the horizon (`FrameResult::value_samples`), the data a learned
+    /// cost-to-go is trained on; empty (the default) records none.
+    pub record_values_after: Vec<usize>,
 }
 
 /// The planners' seed unless told otherwise, the seed setting's default: the same seed,
@@ -51,6 +55,7 @@ impl Default for CpbpConfig {
             refine: true,
             ridge: 1e-3,
             control_cost_weight: 1.0,
+            record_values_after: Vec::new(),
         }
     }
 }
@@ -99,6 +104,8 @@ pub struct FrameResult {
     pub paths: Vec<Vec<[f64; 3]>>,
     /// Whether particle 1 replayed a warm start.
     pub warm_started: bool,
+    /// The states recorded for a cost-to-go (`CpbpConfig::record_values_after`).
+    pub value_samples: Vec<ValueSample>,
 }
 
 impl FrameResult {
@@ -114,6 +121,7 @@ impl FrameResult {
             // Particle 1 replays the warm start (`WarmStart`).
             warm: self.warm_started.then_some(1),
             diagnostics: Diagnostics(vec![(RESAMPLES, self.resamples as f64)]),
+            value_samples: self.value_samples,
         }
     }
 }

@@ -5,6 +5,8 @@
 use rand::RngExt;
 use rand_pcg::Pcg64;
 
+use crate::control::ValueSample;
+
 /// What one particle's step produced.
 pub(super) struct Outcome<State> {
     pub state: State,
@@ -14,6 +16,9 @@ pub(super) struct Outcome<State> {
     pub state_cost: f64,
     pub control_cost: f64,
     pub blew_up: bool,
+    /// The state's features for a cost-to-go, after a step that records them (empty
+    /// otherwise: `CpbpConfig::record_values_after`).
+    pub value_features: Vec<f64>,
 }
 
 /// What one particle did in one planning step: the particle (at the step before) it
@@ -28,6 +33,10 @@ pub(super) struct ParticleStep {
     pub point: Option<[f64; 3]>,
     pub potential: f64,
     pub weight: f64,
+    /// Its lineage's total (state + control) cost after the step.
+    pub total: f64,
+    /// `Outcome::value_features`.
+    pub value_features: Vec<f64>,
 }
 
 /// One planning step: every particle's, in particle order.
@@ -139,10 +148,11 @@ impl<State: Clone> Particles<State> {
                 old.weight * potential
             };
             record.blowups += usize::from(outcome.blew_up);
+            let total = old.total + outcome.state_cost + outcome.control_cost;
             next.push(Particle {
                 state: outcome.state,
                 weight,
-                total: old.total + outcome.state_cost + outcome.control_cost,
+                total,
                 previous: outcome.control.clone(),
                 before_previous: old.previous.clone(),
             });
@@ -153,6 +163,8 @@ impl<State: Clone> Particles<State> {
                 point: outcome.point,
                 potential,
                 weight,
+                total,
+                value_features: outcome.value_features,
             });
         }
         self.all = next;
@@ -189,6 +201,42 @@ pub(super) fn lineages(records: &[StepRecord]) -> (Vec<Vec<f64>>, Vec<Vec<[f64; 
             (sequence, path)
         })
         .unzip()
+}
+
+/// The states recorded for a cost-to-go (steps whose particles hold value features),
+/// each with the least cost a final particle descending from it added after it: the best
+/// continuation the frame found from there. A particle no final one descends from was
+/// given up by resampling and teaches nothing.
+pub(super) fn value_samples(records: &[StepRecord]) -> Vec<ValueSample> {
+    let Some(last) = records.last() else {
+        return Vec::new();
+    };
+    let steps = records.len();
+    let ancestries: Vec<Vec<usize>> = (0..last.particles.len())
+        .map(|end| ancestry(records, end))
+        .collect();
+    let mut samples = Vec::new();
+    for (k, record) in records.iter().enumerate() {
+        for (i, step) in record.particles.iter().enumerate() {
+            if step.value_features.is_empty() {
+                continue;
+            }
+            let cost_to_go = ancestries
+                .iter()
+                .zip(&last.particles)
+                .filter(|(line, _)| line[k] == i)
+                .map(|(_, end)| end.total - step.total)
+                .fold(f64::INFINITY, f64::min);
+            if cost_to_go.is_finite() {
+                samples.push(ValueSample {
+                    features: step.value_features.clone(),
+                    remaining_steps: steps - k - 1,
+                    cost_to_go,
+                });
+            }
+        }
+    }
+    samples
 }
 
 /// The backward pass: β_K = 1/N, β_k(parent) = Σ over its children of ψ·β_{k+1}; the

@@ -9,7 +9,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use super::config::{CpbpConfig, FrameResult, WarmStart};
-use super::frame::{draw, lineages, mix, smoothed_beliefs};
+use super::frame::{draw, lineages, mix, smoothed_beliefs, value_samples};
 use super::frame::{Particles, StepRecord};
 use super::priors::{AppliedControls, Priors};
 use super::refinement::{refine, StepSamples};
@@ -178,6 +178,11 @@ impl CpbpPlanner {
             beliefs: end_weights,
             paths,
             warm_started,
+            value_samples: if self.config.record_values_after.is_empty() {
+                Vec::new()
+            } else {
+                value_samples(&records)
+            },
         }
     }
 

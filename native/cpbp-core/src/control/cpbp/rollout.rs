@@ -34,4 +34,15 @@ pub trait RolloutSystem: Send {
     fn trace_point(&self) -> Option<[f64; 3]> {
         None
     }
+    /// The cost of the rest of a longer horizon from the current state (a learned
+    /// cost-to-go), added to the cost of a plan's last step; None (the default): a plan
+    /// ends with its last step.
+    fn terminal_cost(&self) -> Option<f64> {
+        None
+    }
+    /// What a cost-to-go is learned from at the current state (the policy's features);
+    /// empty (the default): the system records no samples for one.
+    fn value_features(&self) -> Vec<f64> {
+        Vec::new()
+    }
 }

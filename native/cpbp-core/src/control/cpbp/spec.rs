@@ -70,6 +70,7 @@ impl Cpbp {
             // mode would cost without being used.
             refine: warm == WarmRoute::Refinement,
             control_cost_weight: config.control_cost_weight,
+            record_values_after: config.record_values_after.clone(),
             ..CpbpConfig::default()
         };
         let priors = Priors {

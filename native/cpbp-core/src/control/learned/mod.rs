@@ -4,21 +4,32 @@
 //! generator share: the features the network sees and the network itself.
 
 mod features;
+mod mlp;
 mod network;
 mod shared;
 mod sorted_header;
 #[cfg(test)]
 mod tests;
 mod trim;
+mod value;
 
 pub use features::{features, FEATURES_VERSION, FEATURE_COUNT, FEATURE_NAMES};
-pub use network::{
-    f32_bytes, f32_values, output_entries, output_names, ModelError, NetworkParts,
-    NonFiniteFeature, PolicyNetwork, MODEL_FORMAT, MODEL_FORMAT_VERSION, OUTPUT_COUNT,
+pub use mlp::{
+    f32_bytes, f32_values, Mlp, ModelError, NetworkParts, NetworkShape, NonFiniteFeature,
+    MODEL_FORMAT_VERSION,
 };
-pub use shared::{model_path, no_model_of_its_own, project_model, project_policy, LoadedPolicy};
+pub use network::{
+    output_entries, output_names, policy_shape, PolicyNetwork, MODEL_FORMAT, OUTPUT_COUNT,
+};
+pub use shared::{
+    model_path, no_model_of_its_own, project_model, project_policy, project_value,
+    value_model_path, LearnedModel, Loaded, LoadedPolicy, LoadedValue,
+};
 pub use sorted_header::{serialize_sorted, sort_header};
 pub use trim::{LeanTrim, TRIM_GAIN, TRIM_LIMIT, TRIM_MIN_SPEED, TRIM_WINDOW};
+pub use value::{
+    value_shape, value_target, ValueNetwork, REMAINING_INPUT, VALUE_FORMAT, VALUE_INPUT_COUNT,
+};
 
 use glam::DVec3;
 

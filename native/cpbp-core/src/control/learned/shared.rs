@@ -1,13 +1,49 @@
-//! The policy network as the controllers hold it: loaded once, shared by the ride and
+//! The learned networks as the controllers hold them: loaded once, shared by the ride and
 //! every rollout world, or the reason there is none (the `learned` and `guided`
-//! controllers then say so and drive as arcade and combined do).
+//! controllers then say so and drive as arcade and combined do; a planner without its
+//! cost-to-go plans its full horizon).
 
 use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
-use super::{ModelError, PolicyNetwork};
+use super::{ModelError, NetworkParts, PolicyNetwork, ValueNetwork};
 use crate::bike::BikeParams;
+
+/// A kind of learned network the game loads.
+pub trait LearnedModel: Sized {
+    /// What messages call it ("learned model", "learned cost-to-go").
+    const NAME: &'static str;
+    fn load(path: &Path) -> Result<Self, ModelError>;
+    fn parse(bytes: &[u8]) -> Result<Self, ModelError>;
+    fn parts(&self) -> &NetworkParts;
+}
+
+impl LearnedModel for PolicyNetwork {
+    const NAME: &'static str = "learned model";
+    fn load(path: &Path) -> Result<Self, ModelError> {
+        PolicyNetwork::load(path)
+    }
+    fn parse(bytes: &[u8]) -> Result<Self, ModelError> {
+        PolicyNetwork::parse(bytes)
+    }
+    fn parts(&self) -> &NetworkParts {
+        PolicyNetwork::parts(self)
+    }
+}
+
+impl LearnedModel for ValueNetwork {
+    const NAME: &'static str = "learned cost-to-go";
+    fn load(path: &Path) -> Result<Self, ModelError> {
+        ValueNetwork::load(path)
+    }
+    fn parse(bytes: &[u8]) -> Result<Self, ModelError> {
+        ValueNetwork::parse(bytes)
+    }
+    fn parts(&self) -> &NetworkParts {
+        ValueNetwork::parts(self)
+    }
+}
 
 /// Where a bike's learned model lives in the project, by the bike file's name without
 /// `.tres` (`BikeFile::key`; `REFERENCE_BIKE` for the reference bike): a model belongs
@@ -18,30 +54,66 @@ pub fn model_path(bike: &str) -> String {
     format!("models/policy-{bike}.safetensors")
 }
 
+/// Where a bike's learned cost-to-go lives in the project, beside its policy
+/// (`model_path`).
+pub fn value_model_path(bike: &str) -> String {
+    format!("models/value-{bike}.safetensors")
+}
+
 /// The model file of the bike called `bike` in this source tree: what the headless
 /// tools (the scenario tool, the benchmarks, the fingerprint) ride with.
 pub fn project_model(bike: &str) -> PathBuf {
+    project_file(&model_path(bike))
+}
+
+fn project_file(path: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../..")
-        .join(model_path(bike))
+        .join(path)
 }
 
 /// The network of the bike called `bike` (`project_model`), loaded on the first call and
 /// shared after; a bike without a model of its own gets the reason, naming the bike.
 pub fn project_policy(bike: &str) -> LoadedPolicy {
     static POLICIES: Mutex<Vec<(String, LoadedPolicy)>> = Mutex::new(Vec::new());
-    let mut loaded = POLICIES.lock().unwrap_or_else(|p| p.into_inner());
-    if let Some((_, policy)) = loaded.iter().find(|(name, _)| name == bike) {
-        return policy.clone();
+    load_once(&POLICIES, bike, &model_path(bike), || {
+        no_model_of_its_own(bike)
+    })
+}
+
+/// The cost-to-go of the bike called `bike` in this source tree (`value_model_path`),
+/// loaded on the first call and shared after.
+pub fn project_value(bike: &str) -> LoadedValue {
+    static VALUES: Mutex<Vec<(String, LoadedValue)>> = Mutex::new(Vec::new());
+    let path = value_model_path(bike);
+    load_once(&VALUES, bike, &path, || {
+        format!(
+            "the bike {bike} has no learned cost-to-go ({path} is missing; make train \
+             BIKE=<its file> trains one): the planners plan their whole horizon"
+        )
+    })
+}
+
+/// The network at the project's `path` for `bike`, from `cache` or loaded into it; the
+/// reason `missing` gives when there is no such file.
+fn load_once<N: LearnedModel>(
+    cache: &Mutex<Vec<(String, Loaded<N>)>>,
+    bike: &str,
+    path: &str,
+    missing: impl FnOnce() -> String,
+) -> Loaded<N> {
+    let mut loaded = cache.lock().unwrap_or_else(|p| p.into_inner());
+    if let Some((_, network)) = loaded.iter().find(|(name, _)| name == bike) {
+        return network.clone();
     }
-    let path = project_model(bike);
-    let policy = if path.exists() {
-        LoadedPolicy::load(&path)
+    let file = project_file(path);
+    let network = if file.exists() {
+        Loaded::load(&file)
     } else {
-        LoadedPolicy::missing(no_model_of_its_own(bike))
+        Loaded::missing(missing())
     };
-    loaded.push((bike.to_owned(), policy.clone()));
-    policy
+    loaded.push((bike.to_owned(), network.clone()));
+    network
 }
 
 /// What a bike without a model of its own is told, where the game and the tools load it.
@@ -54,12 +126,22 @@ pub fn no_model_of_its_own(bike: &str) -> String {
 }
 
 /// A loaded network, or why none could be.
-#[derive(Clone)]
-pub struct LoadedPolicy(Result<Arc<PolicyNetwork>, Arc<str>>);
+pub struct Loaded<N>(Result<Arc<N>, Arc<str>>);
 
-impl LoadedPolicy {
+/// The policy network, or why there is none.
+pub type LoadedPolicy = Loaded<PolicyNetwork>;
+/// The cost-to-go network, or why there is none.
+pub type LoadedValue = Loaded<ValueNetwork>;
+
+impl<N> Clone for Loaded<N> {
+    fn clone(&self) -> Self {
+        Self(self.0.clone())
+    }
+}
+
+impl<N: LearnedModel> Loaded<N> {
     /// A network ready to drive.
-    pub fn ready(network: PolicyNetwork) -> Self {
+    pub fn ready(network: N) -> Self {
         Self(Ok(Arc::new(network)))
     }
 
@@ -70,7 +152,7 @@ impl LoadedPolicy {
 
     /// The model file's bytes (`source` names it in the reason when they are refused).
     pub fn parse(bytes: &[u8], source: &str) -> Self {
-        match PolicyNetwork::parse(bytes) {
+        match N::parse(bytes) {
             Ok(network) => Self::ready(network),
             Err(e) => Self::refused(source, &e),
         }
@@ -78,18 +160,18 @@ impl LoadedPolicy {
 
     /// The model file at `path`.
     pub fn load(path: &Path) -> Self {
-        match PolicyNetwork::load(path) {
+        match N::load(path) {
             Ok(network) => Self::ready(network),
             Err(e) => Self::refused(&path.display().to_string(), &e),
         }
     }
 
     fn refused(source: &str, error: &ModelError) -> Self {
-        Self::missing(format!("the learned model {source} is unusable: {error}"))
+        Self::missing(format!("the {} {source} is unusable: {error}", N::NAME))
     }
 
     /// The network, if there is one.
-    pub fn network(&self) -> Option<&Arc<PolicyNetwork>> {
+    pub fn network(&self) -> Option<&Arc<N>> {
         self.0.as_ref().ok()
     }
 
@@ -105,22 +187,23 @@ impl LoadedPolicy {
         let trained_on = &network.parts().bike;
         (*trained_on != bike.identity()).then(|| {
             format!(
-                "the learned model was trained on another bike ({trained_on}, this one is {}): \
+                "the {} was trained on another bike ({trained_on}, this one is {}): \
                  it may ride it badly; `make train` trains one for this bike",
+                N::NAME,
                 bike.identity()
             )
         })
     }
 }
 
-impl Default for LoadedPolicy {
+impl<N: LearnedModel> Default for Loaded<N> {
     fn default() -> Self {
-        Self::missing("no learned model was loaded")
+        Self::missing(format!("no {} was loaded", N::NAME))
     }
 }
 
 /// The same network (not an equal copy), or the same reason.
-impl PartialEq for LoadedPolicy {
+impl<N> PartialEq for Loaded<N> {
     fn eq(&self, other: &Self) -> bool {
         match (&self.0, &other.0) {
             (Ok(a), Ok(b)) => Arc::ptr_eq(a, b),
@@ -130,11 +213,11 @@ impl PartialEq for LoadedPolicy {
     }
 }
 
-impl fmt::Debug for LoadedPolicy {
+impl<N: LearnedModel> fmt::Debug for Loaded<N> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.0 {
-            Ok(network) => write!(f, "LoadedPolicy({})", network.parts().training),
-            Err(why) => write!(f, "LoadedPolicy(none: {why})"),
+            Ok(network) => write!(f, "Loaded({}: {})", N::NAME, network.parts().training),
+            Err(why) => write!(f, "Loaded(no {}: {why})", N::NAME),
         }
     }
 }

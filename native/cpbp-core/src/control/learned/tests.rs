@@ -130,7 +130,7 @@ fn broken_parts_are_refused() {
     for parts in [short, zero_spread, nan_weight, wrong_width, no_layers] {
         assert!(matches!(
             PolicyNetwork::new(parts),
-            Err(ModelError::NotAModel(_))
+            Err(ModelError::NotAModel(..))
         ));
     }
 }
@@ -169,7 +169,7 @@ fn a_corrupt_or_missing_file_is_refused_with_a_reason() {
     for broken in [&bytes[..bytes.len() / 2], &b"not a model"[..], &[][..]] {
         assert!(matches!(
             PolicyNetwork::parse(broken),
-            Err(ModelError::NotAModel(_))
+            Err(ModelError::NotAModel(..))
         ));
     }
     let mut flipped = bytes.clone();
@@ -293,4 +293,36 @@ fn a_bike_without_a_model_of_its_own_is_told_so() {
     assert!(why.contains("make train BIKE="), "{why}");
     let reference = super::project_policy(crate::bike::REFERENCE_BIKE);
     assert!(reference.network().is_some(), "{:?}", reference.problem());
+}
+
+#[test]
+fn a_policy_is_not_a_cost_to_go_nor_a_cost_to_go_a_policy() {
+    let policy = PolicyNetwork::new(pass_through()).unwrap().to_bytes();
+    let error = ValueNetwork::parse(&policy).err().unwrap().to_string();
+    assert!(
+        error.contains("not a Counter-Steer cost-to-go")
+            && error.contains("its format is 'counter-steer-policy'"),
+        "{error}"
+    );
+    let value = ValueNetwork::new(NetworkParts {
+        input_mean: vec![0.0; VALUE_INPUT_COUNT],
+        input_std: vec![1.0; VALUE_INPUT_COUNT],
+        layers: vec![(vec![0.1; VALUE_INPUT_COUNT], vec![0.0])],
+        output_mean: vec![0.0],
+        output_std: vec![1.0],
+        training: "by hand".into(),
+        bike: crate::bike::BikeParams::default().identity(),
+    })
+    .unwrap();
+    let error = PolicyNetwork::parse(&value.to_bytes())
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(error.contains("not a Counter-Steer policy"), "{error}");
+    let back = ValueNetwork::parse(&value.to_bytes()).unwrap();
+    assert_eq!(back.parts(), value.parts());
+    // A state it cannot read is reported, not answered.
+    let mut features = [0.0; FEATURE_COUNT];
+    features[2] = f64::NAN;
+    assert_eq!(value.cost_to_go(&features, 0.6), Err(NonFiniteFeature(2)));
 }

@@ -194,6 +194,7 @@ impl SamplingPlanner {
             blowups,
             warm: None,
             diagnostics,
+            value_samples: Vec::new(),
         }
     }
 
@@ -277,6 +278,12 @@ impl SamplingPlanner {
             rollout.path.extend(point);
             rollout.controls.extend_from_slice(&u);
             before = std::mem::replace(&mut previous, u.clone());
+        }
+        // A shortened horizon is costed with the rest of the longer one, as C-PBP's.
+        if !rollout.blew_up {
+            if let Some(rest) = system.terminal_cost().filter(|c| c.is_finite()) {
+                rollout.total += rest;
+            }
         }
         rollout
     }

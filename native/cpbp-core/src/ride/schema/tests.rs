@@ -125,13 +125,14 @@ fn a_tool_parses_a_setting_from_text_and_refuses_what_does_not_fit() {
 
 #[test]
 fn the_planners_settings_from_the_defaults_are_the_games_defaults() {
-    use crate::control::learned::LoadedPolicy;
+    use crate::control::learned::{LoadedPolicy, LoadedValue};
     use crate::physics::PhysicsModel;
     use crate::ride::PlannerSettings;
 
     let mut values = values_of(|s| s.owner.on_the_node());
     let physics = PhysicsModel::Exact;
-    let from_values = PlannerSettings::from_values(&values, physics, LoadedPolicy::default());
+    let (policy, value) = (LoadedPolicy::default(), LoadedValue::default());
+    let from_values = PlannerSettings::from_values(&values, physics, policy.clone(), value.clone());
     let mut default = PlannerSettings::default();
     default.planning = default.planning.rolling_out_in(physics);
     // The default holds no planner parameters (each reads its default); the values hold
@@ -139,6 +140,6 @@ fn the_planners_settings_from_the_defaults_are_the_games_defaults() {
     default.planning.parameters = values.clone();
     assert_eq!(from_values, default);
     values.set("horizon", Value::Float(0.6)).unwrap();
-    let shorter = PlannerSettings::from_values(&values, physics, LoadedPolicy::default());
+    let shorter = PlannerSettings::from_values(&values, physics, policy, value);
     assert_eq!(shorter.planning.horizon, 0.6);
 }

@@ -113,12 +113,23 @@ impl CpbpPlanner {
         (previous, before_previous): (&[f64], &[f64]),
         k: usize,
     ) -> Outcome<S::State> {
-        let (state_cost, blew_up) = match system.step(&control, k) {
+        let (mut state_cost, blew_up) = match system.step(&control, k) {
             Some(c) if c.is_finite() => (c, false),
             _ => {
                 system.restore(parent_state);
                 (self.config.blowup_cost, true)
             }
+        };
+        // A shortened horizon's last step is costed with the rest of the longer one.
+        if k + 1 == self.config.steps.max(1) && !blew_up {
+            if let Some(rest) = system.terminal_cost().filter(|c| c.is_finite()) {
+                state_cost += rest;
+            }
+        }
+        let value_features = if self.config.record_values_after.contains(&(k + 1)) && !blew_up {
+            system.value_features()
+        } else {
+            Vec::new()
         };
         Outcome {
             control_cost: self.config.control_cost_weight
@@ -133,6 +144,7 @@ impl CpbpPlanner {
             control,
             state_cost,
             blew_up,
+            value_features,
         }
     }
 
