@@ -81,10 +81,11 @@ func _process(delta: float) -> void:
 		controller += "  ·  %s" % failure
 	elif BikeSimulation.controller_plans(bike.controller):
 		controller += (
-			"  ·  %s%d trajectories  ·  planning %.1f ms  ·  %d late/s"
+			"  ·  %s%d trajectories × %s  ·  planning %.1f ms  ·  %d late/s"
 			% [
 				"auto: " if bike.auto_trajectories else "",
 				bike.get_trajectories_in_use(),
+				_horizon_text(bike),
 				bike.get_planning_ms(),
 				_late_per_second(bike, delta),
 			]
@@ -102,6 +103,15 @@ func _process(delta: float) -> void:
 	# The bike on a line of its own below: the line above is full on a track.
 	_status.text = "%s\n%s" % [status, _game.bike_name()]
 	_hint.text = _hint_text(bike)
+
+
+## How far the plans look: "1.2 s", or "0.6 s + learned cost-to-go" when the network
+## costs the rest of the horizon (the automatic N then fits more trajectories in a frame).
+static func _horizon_text(bike: BikeSimulation) -> String:
+	var text := "%.1f s" % bike.get_planned_horizon()
+	if bike.is_horizon_ended_by_value():
+		text += " + learned cost-to-go"
+	return text
 
 
 ## A planner's diagnostics as the HUD shows them after the frame rate: "  ·  resamples 3"

@@ -4,6 +4,8 @@ extends TestCase
 ## controller steers and nothing crashes.
 
 const CORRUPT := "user://corrupt_policy.safetensors"
+## A bike with no learned networks of its own, nor ever will have.
+const PIT_BIKE := preload("res://tests/fixtures/bikes/pit_bike.tres")
 
 var _level: Node3D
 var _bike: BikeSimulation
@@ -71,7 +73,7 @@ func test_a_corrupt_model_is_refused_and_guided_plans_with_arcade() -> void:
 
 func test_a_bike_without_a_model_of_its_own_offers_no_learned_and_guided_plans_without() -> void:
 	var pit := BikeSimulation.new()
-	pit.bike = load("res://tests/fixtures/bikes/pit_bike.tres")
+	pit.bike = PIT_BIKE
 	pit.transform = Transform3D(Basis(), Vector3(3, 0.02, 0))
 	_level.add_child(pit)
 	await wait_physics_frames(1)
@@ -91,3 +93,31 @@ func test_a_bike_without_a_model_of_its_own_offers_no_learned_and_guided_plans_w
 	assert_eq(reasons.size(), 1, "reported once: %s" % [reasons])
 	assert_has(pit.get_controller_failure(), "pit_bike has no learned model of its own")
 	assert_gt(pit.get_trajectory_paths().size(), 0, "the planner still plans")
+
+
+func test_without_its_cost_to_go_a_planner_plans_its_whole_horizon_and_says_so() -> void:
+	var pit := BikeSimulation.new()
+	pit.bike = PIT_BIKE
+	pit.transform = Transform3D(Basis(), Vector3(3, 0.02, 0))
+	_level.add_child(pit)
+	await wait_physics_frames(1)
+	pit.set_physics_process(false)
+	var reasons: Array[String] = []
+	pit.controller_failed.connect(func(reason: String) -> void: reasons.append(reason))
+	pit.controller = "combined"
+	pit.trajectories = 4
+	pit.wait_for_every_plan = true
+	pit.terminal_value = true
+	pit.value_horizon = 0.6
+	pit.set_drive(1.0, 0.0)
+	pit.advance(30)
+	assert_eq(reasons.size(), 1, "reported once: %s" % [reasons])
+	assert_has(pit.get_controller_failure(), "value-pit_bike.safetensors is missing")
+	assert_has(pit.get_controller_failure(), "it plans its whole horizon")
+	assert_almost_eq(pit.get_planned_horizon(), 1.2, 1e-9)
+	assert_false(pit.is_horizon_ended_by_value())
+	assert_eq(pit.get_trajectory_paths()[0].size(), 36, "the whole 1.2 s is planned")
+	assert_false(pit.is_crashed())
+	pit.terminal_value = false
+	pit.advance(2)
+	assert_eq(pit.get_controller_failure(), "", "asked for none: nothing to say")

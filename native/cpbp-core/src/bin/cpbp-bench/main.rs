@@ -4,11 +4,13 @@
 //! builds run alternately; `cpbp-bench learned` only the learned controller's cost;
 //! `cpbp-bench auto-n` only the automatic N under load; `cpbp-bench planners` only the
 //! planners side by side, with their diagnostics; `cpbp-bench fidelity` only the rollout
-//! fidelity tables.
+//! fidelity tables; `cpbp-bench horizon` only what shorter horizons and the learned
+//! cost-to-go save (issue 59).
 //! `--bike FILE` (`make bench BIKE=FILE`) measures another bike than the reference.
 
 mod auto_n;
 mod fidelity;
+mod horizon;
 mod learned;
 mod planning;
 
@@ -20,7 +22,7 @@ use std::time::{Duration, Instant};
 use cpbp_core::bike::{
     take_bike_argument, BikeParams, Controls, DriveInput, Placement, REFERENCE_BIKE,
 };
-use cpbp_core::control::learned::{project_policy, LoadedPolicy};
+use cpbp_core::control::learned::{project_policy, project_value, LoadedPolicy, LoadedValue};
 use cpbp_core::control::PlanWait;
 use cpbp_core::grounds::RollingBumps;
 use cpbp_core::ode::{Mass, World};
@@ -43,6 +45,12 @@ static BIKE_KEY: OnceLock<String> = OnceLock::new();
 /// The learned network of the bike ridden (guided plans without one, and says so).
 fn bike_policy() -> LoadedPolicy {
     project_policy(BIKE_KEY.get().map_or(REFERENCE_BIKE, String::as_str))
+}
+
+/// The learned cost-to-go of the bike ridden (the horizon table leaves its rows out
+/// without one, and says so).
+fn bike_value() -> LoadedValue {
+    project_value(BIKE_KEY.get().map_or(REFERENCE_BIKE, String::as_str))
 }
 
 fn main() {
@@ -78,6 +86,10 @@ fn main() {
             return learned::inference_cost(&sim, row);
         }
         Some("auto-n") => return auto_n::under_load(),
+        Some("horizon") => {
+            let sim = rolling_bike(Arc::new(Terrain::flat()), PhysicsModel::default());
+            return horizon::horizon_table(&sim, row);
+        }
         Some("planners") => return planners_side_by_side(),
         Some("fidelity") => {
             return PhysicsModel::ALL
@@ -122,6 +134,7 @@ fn main() {
     }
 
     planners_side_by_side();
+    horizon::horizon_table(&game_flat, row);
 
     for model in PhysicsModel::ALL {
         fidelity::rollout_fidelity(model, &bump_field());

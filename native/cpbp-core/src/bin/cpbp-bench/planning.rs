@@ -152,14 +152,27 @@ pub struct Timed {
 /// Planning controller `kind` with `n` trajectories, rolling out in the simulation's
 /// physics model, timed over several control steps.
 pub fn planning_ms(sim: &Simulation, kind: ControllerKind, n: usize, threads: usize) -> Timed {
+    planning_ms_with(sim, kind, n, threads, |_| {})
+}
+
+/// `planning_ms` with the planning configuration changed by `adjust` (a horizon, the
+/// cost-to-go).
+pub fn planning_ms_with(
+    sim: &Simulation,
+    kind: ControllerKind,
+    n: usize,
+    threads: usize,
+    adjust: impl FnOnce(&mut PlanningConfig),
+) -> Timed {
     let model = sim.config().physics;
     let spec = kind.planner().expect("a planning controller");
-    let config = PlanningConfig {
+    let mut config = PlanningConfig {
         trajectories: n,
         threads,
         ..PlanningConfig::default()
     }
     .rolling_out_in(model);
+    adjust(&mut config);
     let mut optimizer = PlanningSession::new(sim, spec, config);
     optimizer.follow(crate::bike_policy().network().cloned());
     let drive = DriveInput {
