@@ -125,7 +125,9 @@ impl BikeSimulation {
     /// cost-to-go ends their plans (`is_horizon_ended_by_value`), the whole horizon else.
     #[func]
     fn get_planned_horizon(&self) -> f64 {
-        self.ride.as_ref().map_or(0.0, |r| r.planner.planning.planned().0)
+        self.ride
+            .as_ref()
+            .map_or(0.0, |r| r.planner.planning.planned().0)
     }
 
     /// Whether the learned cost-to-go costs the rest of the horizon after the plans.

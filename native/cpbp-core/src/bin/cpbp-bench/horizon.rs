@@ -7,8 +7,8 @@ use cpbp_core::bike::DriveInput;
 use cpbp_core::control::learned::features;
 use cpbp_core::control::{Goal, PlanningConfig};
 use cpbp_core::ride::ControllerKind;
-use cpbp_core::simulation::Simulation;
 use cpbp_core::settings::HORIZON_S;
+use cpbp_core::simulation::Simulation;
 
 use super::planning::planning_ms_with;
 use super::{median, time_per_call};
@@ -65,7 +65,11 @@ pub fn horizon_table(sim: &Simulation, row: impl Fn(&str, String)) {
                 }))
             })
             .collect();
-        println!("{:<26} {}", format!("{horizon} s + cost-to-go"), ended.join(" "));
+        println!(
+            "{:<26} {}",
+            format!("{horizon} s + cost-to-go"),
+            ended.join(" ")
+        );
     }
     let Some(network) = value.network() else {
         row(
