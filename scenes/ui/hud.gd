@@ -81,11 +81,10 @@ func _process(delta: float) -> void:
 		controller += "  ·  %s" % failure
 	elif BikeSimulation.controller_plans(bike.controller):
 		controller += (
-			"  ·  %s%d trajectories × %s  ·  planning %.1f ms  ·  %d late/s"
+			"  ·  %s%d trajectories  ·  planning %.1f ms  ·  %d late/s"
 			% [
 				"auto: " if bike.auto_trajectories else "",
 				bike.get_trajectories_in_use(),
-				_horizon_text(bike),
 				bike.get_planning_ms(),
 				_late_per_second(bike, delta),
 			]
@@ -94,6 +93,7 @@ func _process(delta: float) -> void:
 	# The planner's own numbers go on the line below, which has the room.
 	_performance.text = "%d fps" % Engine.get_frames_per_second()
 	if failure.is_empty() and BikeSimulation.controller_plans(bike.controller):
+		_performance.text += "  ·  " + _horizon_text(bike)
 		_performance.text += _diagnostics_text(bike.get_plan_diagnostics())
 	var status := "%s   ·   %s" % [_game.level.title, _game.level.status_line()]
 	if _game.level.automatic:
@@ -105,10 +105,11 @@ func _process(delta: float) -> void:
 	_hint.text = _hint_text(bike)
 
 
-## How far the plans look: "1.2 s", or "0.6 s + learned cost-to-go" when the network
-## costs the rest of the horizon (the automatic N then fits more trajectories in a frame).
+## How far the plans look: "1.2 s ahead", or "0.6 s ahead + learned cost-to-go" when the
+## network costs the rest of the horizon (the automatic N then fits more trajectories in a
+## frame).
 static func _horizon_text(bike: BikeSimulation) -> String:
-	var text := "%.1f s" % bike.get_planned_horizon()
+	var text := "%.1f s ahead" % bike.get_planned_horizon()
 	if bike.is_horizon_ended_by_value():
 		text += " + learned cost-to-go"
 	return text
