@@ -19,6 +19,8 @@ var timing := false
 var platform_only := false
 var warm_up := ""
 var steps := 150
+## Planner settings other than their defaults (`--set=NAME=VALUE`, repeatable), by name.
+var settings := {}
 var error := ""
 
 
@@ -72,6 +74,12 @@ static func parse(arguments: PackedStringArray) -> ExperimentArgs:
 				args.timing = true
 			"platform":
 				args.platform_only = true
+			"set":
+				var assignment := SettingsSchema.planner_assignment(value)
+				if assignment.has("error"):
+					args._fail("--set=%s: %s" % [value, assignment.error])
+				else:
+					args.settings[assignment.name] = assignment.value
 			"warm-up":
 				if not BikeSimulation.controller_names().has(value):
 					args._fail("--warm-up must be one of %s, not '%s'" % [_choices(), value])

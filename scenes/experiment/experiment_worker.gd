@@ -9,7 +9,9 @@ extends Node
 ## Arguments (after `--`): --speed=KMH --controller=NAME (a name of the controller registry)
 ## --trajectories=N[,N...] --seed=BASE --first=I --count=K --threads=T [--timing --steps=S]
 ## [--physics=classic|exact] [--bike=res://FILE] [--model=res://FILE] [--warm-up=CONTROLLER]
-## [--platform]
+## [--set=NAME=VALUE …] [--platform]
+## `--set` plans with a planner's setting other than its default (the horizon, the learned
+## cost-to-go), as the game's node would with that property set.
 ## Attempt i uses bump seed BASE + i and a planner seed drawn from it, so every controller
 ## meets the same bumps at attempt i and a rerun of an attempt repeats it exactly.
 ## Before any attempt it prints one `PLATFORM {json}` line (NativeModule.platform()), what
@@ -73,6 +75,8 @@ func _build(args: ExperimentArgs) -> bool:
 	_bike.controller = args.controller
 	_bike.physics = args.physics
 	_bike.planning_threads = args.threads
+	for name: String in args.settings:
+		_bike.set(name, args.settings[name])
 	# Wait for every plan: no step uses a late plan, and a ride repeats exactly.
 	_bike.wait_for_every_plan = true
 	# Nothing is heard either.

@@ -72,6 +72,24 @@ func test_another_bikes_network_can_be_ridden() -> void:
 		)
 
 
+func test_a_planners_settings_are_checked_and_ridden_as_asked() -> void:
+	var args := ExperimentArgs.parse(
+		PackedStringArray(["--set=horizon=0.6", "--set=terminal_value=true"])
+	)
+	assert_eq(args.error, "")
+	assert_eq(args.settings, {"horizon": 0.6, "terminal_value": true})
+	assert_eq(ExperimentArgs.parse(PackedStringArray()).settings, {}, "the defaults")
+	var cases := {
+		"--set=horizon=9": "horizon must be within",
+		"--set=horizon": "a planner's setting is NAME=VALUE",
+		"--set=max_speed_kmh=20": "max_speed_kmh is not a planner's setting",
+		"--set=trajectories=8": "trajectories is set by the tool's own options",
+	}
+	for argument: String in cases:
+		var error := ExperimentArgs.parse(PackedStringArray([argument])).error
+		assert_has(error, cases[argument], "%s gave '%s'" % [argument, error])
+
+
 func test_bad_values_are_explained() -> void:
 	var cases := {
 		"--speed=fast": "--speed needs a number",

@@ -39,7 +39,7 @@ def main(argv: list[str] | None = None) -> int:
     args.chosen_configs = set(args.planned) if named else None
     out = Path(args.out)
     try:
-        args.bike = Bike.of_file(PROJECT_ROOT, args.bike, args.model)
+        args.bike = Bike.of_file(PROJECT_ROOT, args.bike, args.model, args.set)
         if args.command in ("timing", "all") and (args.command == "timing" or
                                                   not (out / TIMING).exists()):
             timing(args, out)
@@ -130,6 +130,10 @@ def _parser() -> argparse.ArgumentParser:
                         help="the learned controllers' network, a model file in the project "
                         "(default: the bike's own, models/policy-<bike>.safetensors): ride a "
                         "bike with another bike's network")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="plan with a planner's setting other than its default "
+                        "(horizon=0.6, terminal_value=true), repeatable; the rows name "
+                        "them (street_390@horizon=0.6) and keep to an --out of their own")
     parser.add_argument("--allow-mixed", action="store_true",
                         help="append to results made on another platform (the report "
                         "notes the mix)")

@@ -34,7 +34,8 @@ PLATFORM_FIELDS = LEGACY_FIELDS + ("planner_seed", "late_plans", "platform")
 # `physics` is the physics model the row was ridden in (earlier files: all classic).
 PHYSICS_FIELDS = PLATFORM_FIELDS + ("physics",)
 # `bike` is the name of the bike file ridden, with "+" and another bike's name when the
-# learned controllers rode that bike's network (earlier files: all the reference bike's).
+# learned controllers rode that bike's network, and "@" and the planner settings asked
+# when they were not the defaults (earlier files: all the reference bike's).
 FIELDS = PHYSICS_FIELDS + ("bike",)
 OUTDATED_LAYOUTS = (LEGACY_FIELDS, PLATFORM_FIELDS, PHYSICS_FIELDS)
 # The thesis's bike, which a run rides unless given another (scenes/bike/bikes/).

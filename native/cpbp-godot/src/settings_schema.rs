@@ -45,6 +45,22 @@ impl SettingsSchema {
         }
     }
 
+    /// `NAME=VALUE` as a tool sets a planner's setting (the experiment worker's `--set`):
+    /// `{"name": …, "value": …}` with the value of the setting's type, or `{"error": …}`
+    /// saying why not (not a planner's setting, a value that does not fit).
+    #[func]
+    fn planner_assignment(text: GString) -> VarDictionary {
+        let mut answer = VarDictionary::new();
+        match schema::planner_assignment(&text.to_string()) {
+            Ok((setting, value)) => {
+                answer.set("name", setting.name);
+                answer.set("value", &crate::node_settings::to_variant(&value));
+            }
+            Err(why) => answer.set("error", why.as_str()),
+        }
+        answer
+    }
+
     /// Length of one control step (s): the period every controller acts at.
     #[func]
     fn control_period() -> f64 {

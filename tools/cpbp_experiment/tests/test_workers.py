@@ -107,6 +107,16 @@ class BikeTest(unittest.TestCase):
         self.assertEqual(bike.arguments(), ["--bike=res://tests/fixtures/bikes/pit_bike.tres",
                                             "--model=res://models/policy-street_390.safetensors"])
 
+    def test_planner_settings_are_passed_sorted_and_named_in_the_label(self):
+        bike = Bike.of_file(ROOT, str(ROOT / "scenes/bike/bikes/street_390.tres"), None,
+                            ["terminal_value=true", "horizon=0.6", "horizon=0.4"])
+        self.assertEqual(bike.label, "street_390@horizon=0.4,terminal_value=true",
+                         "the last of a name counts")
+        self.assertEqual(bike.arguments()[1:], ["--set=horizon=0.4", "--set=terminal_value=true"])
+        self.assertEqual(Bike.of_file(ROOT, None, None, []).label, "street_350")
+        with self.assertRaisesRegex(ValueError, "NAME=VALUE"):
+            Bike.of_file(ROOT, None, None, ["horizon"])
+
     def test_a_missing_file_or_one_outside_the_project_is_refused(self):
         with self.assertRaisesRegex(ValueError, "no such bike file"):
             Bike.of_file(ROOT, "scenes/bike/bikes/moped_50.tres")

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{schema, ControllerKind};
-use cpbp_core::settings::{Owner, SettingValues, PLANNER_SEED, TRAJECTORIES};
+use cpbp_core::settings::{Owner, SettingValues};
 
 use super::{scenario_names, MANOEUVRES};
 
@@ -133,10 +133,9 @@ pub(crate) fn parse(arguments: Vec<String>) -> Result<Args, String> {
     })
 }
 
-/// The planners' settings with each `--set NAME=VALUE` (repeatable) applied: a planner's
-/// setting of the schema (the horizon, a tolerance, a planner's own parameter), its value
-/// checked against its entry and refused, not clamped, when it does not fit. N and the
-/// seed have flags of their own.
+/// The planners' settings with each `--set NAME=VALUE` (repeatable) applied
+/// (`schema::planner_assignment`: a planner's setting, its value checked against its
+/// entry; N and the seed have flags of their own).
 fn planner_settings(arguments: &[String]) -> Result<SettingValues, String> {
     let mut values = schema::values_of(|s| s.owner == Owner::Planner);
     let assignments = arguments
@@ -144,16 +143,8 @@ fn planner_settings(arguments: &[String]) -> Result<SettingValues, String> {
         .filter(|pair| pair[0] == "--set")
         .map(|pair| pair[1].as_str());
     for assignment in assignments {
-        let (name, text) = assignment
-            .split_once('=')
-            .ok_or(format!("--set takes NAME=VALUE, not {assignment}"))?;
-        let setting = schema::find(name)
-            .filter(|s| s.owner == Owner::Planner)
-            .ok_or(format!("{name} is not a planner's setting"))?;
-        if [TRAJECTORIES.name, PLANNER_SEED.name].contains(&name) {
-            return Err(format!("{name} is set by --counts and --seeds"));
-        }
-        values.set(name, setting.parse(text)?)?;
+        let (setting, value) = schema::planner_assignment(assignment)?;
+        values.set(setting.name, value)?;
     }
     Ok(values)
 }

@@ -15,7 +15,9 @@ pub use json::schema_json;
 use std::sync::{PoisonError, RwLock};
 
 use super::ControllerKind;
-use crate::settings::{DefaultValue, Setting, SettingValues, Value, ENTRIES};
+use crate::settings::{
+    DefaultValue, Owner, Setting, SettingValues, Value, ENTRIES, PLANNER_SEED, TRAJECTORIES,
+};
 
 /// Entries added at run time (`extend`).
 static EXTENDED: RwLock<Vec<Setting>> = RwLock::new(Vec::new());
@@ -41,6 +43,24 @@ pub fn find(name: &str) -> Option<Setting> {
 /// The values of every setting `keep` accepts, at their defaults.
 pub fn values_of(keep: impl Fn(&Setting) -> bool) -> SettingValues {
     SettingValues::holding(all().into_iter().filter(|s| keep(s)))
+}
+
+/// `NAME=VALUE` as a tool sets a planner's setting (`--set horizon=0.6`): the setting and
+/// its value, checked against its entry and refused, not clamped, when it does not fit.
+/// N and the planner's seed are not among them: the tools set those by flags of their own.
+pub fn planner_assignment(text: &str) -> Result<(Setting, Value), String> {
+    let (name, value) = text
+        .split_once('=')
+        .ok_or(format!("a planner's setting is NAME=VALUE, not {text}"))?;
+    let setting = find(name)
+        .filter(|s| s.owner == Owner::Planner)
+        .ok_or(format!("{name} is not a planner's setting"))?;
+    if [TRAJECTORIES.name, PLANNER_SEED.name].contains(&name) {
+        return Err(format!(
+            "{name} is set by the tool's own options (N, the seeds)"
+        ));
+    }
+    Ok((setting, setting.parse(value)?))
 }
 
 /// Adds `setting` to the schema for the rest of the process (a mod's setting, or a
