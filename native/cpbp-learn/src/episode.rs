@@ -10,8 +10,8 @@ use std::sync::Arc;
 use cpbp_core::bike::{BikeParams, Controls, DriveInput, Placement, RiderPosition};
 use cpbp_core::control::cpbp::COMBINED;
 use cpbp_core::control::learned::{
-    features, output_entries, value_target, PolicyNetwork, FEATURE_COUNT, OUTPUT_COUNT,
-    VALUE_INPUT_COUNT,
+    features, output_entries, value_target, LoadedValue, PolicyNetwork, FEATURE_COUNT,
+    OUTPUT_COUNT, VALUE_INPUT_COUNT,
 };
 use cpbp_core::control::{Goal, PlanningConfig, PlanningSession, TurnIntent};
 use cpbp_core::physics::PhysicsModel;
@@ -68,7 +68,22 @@ pub struct ExpertSettings {
     pub bike: BikeParams,
     /// Whether the expert's plans are recorded for a learned cost-to-go too (`--values`).
     pub values: bool,
+    /// The planner that drives while the expert labels, planning a short horizon ended by
+    /// a learned cost-to-go (`--short-planner`; a DAgger round of the cost-to-go: it is
+    /// taught the states its own short plans lead to).
+    pub short_planner: Option<ShortPlanner>,
 }
+
+/// The game's planner on a shortened horizon: combined C-PBP, `SHORT_PLANNER_N`
+/// trajectories, planning `horizon` and costing the rest of the 1.2 s with `value`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShortPlanner {
+    pub value: LoadedValue,
+    pub horizon: f64,
+}
+
+/// The short planner's trajectories: the game's default N.
+pub const SHORT_PLANNER_N: usize = 5;
 
 impl Default for ExpertSettings {
     fn default() -> Self {
@@ -79,6 +94,7 @@ impl Default for ExpertSettings {
             family: Family::Mixed,
             bike: BikeParams::default(),
             values: false,
+            short_planner: None,
         }
     }
 }
@@ -220,15 +236,32 @@ pub fn ride(
         },
         ..PlanningConfig::default().rolling_out_in(PhysicsModel::Exact)
     };
+    let mut short = settings.short_planner.as_ref().map(|short| {
+        let config = PlanningConfig {
+            trajectories: SHORT_PLANNER_N,
+            seed: episode.seed,
+            threads: 1,
+            terminal_value: true,
+            value_horizon: short.horizon,
+            value: short.value.clone(),
+            ..PlanningConfig::default().rolling_out_in(PhysicsModel::Exact)
+        };
+        PlanningSession::new(&sim, &COMBINED, config)
+    });
     let mut expert = PlanningSession::new(&sim, &COMBINED, config);
     let mut noise = stream(episode.seed, Stream::Noise);
     let mut keep = stream(episode.seed, Stream::Values);
     let (turn, entries) = (TurnIntent::for_bike(&settings.bike), output_entries());
-    let mut records = Records {
-        driver: learner.map_or_else(
-            || "expert".to_string(),
-            |net| format!("learner ({})", net.parts().training),
+    let driver = match (&settings.short_planner, learner) {
+        (Some(short), _) => format!(
+            "short planner (combined N = {SHORT_PLANNER_N}, {} s + cost-to-go: {:?})",
+            short.horizon, short.value
         ),
+        (None, Some(net)) => format!("learner ({})", net.parts().training),
+        (None, None) => "expert".to_string(),
+    };
+    let mut records = Records {
+        driver,
         ..Records::default()
     };
     let mut segment = episode.segments[0];
@@ -271,9 +304,12 @@ pub fn ride(
             }
         }
         // A state the network cannot read (non-finite) is the expert's to drive.
-        let driven = learner
-            .and_then(|net| net.controls(bike, world, &goal, up).ok())
-            .map_or(label, |c| Controls::sanitized(c.values()).0);
+        let driven = match &mut short {
+            Some(short) => short.controls(&sim, &goal),
+            None => learner
+                .and_then(|net| net.controls(bike, world, &goal, up).ok())
+                .map_or(label, |c| Controls::sanitized(c.values()).0),
+        };
         let mut applied = driven;
         if settings.noise > 0.0 {
             for &i in &entries {
@@ -284,6 +320,9 @@ pub fn ride(
         }
         if applied != label {
             expert.note_applied(&applied);
+        }
+        if let Some(short) = short.as_mut().filter(|_| applied != driven) {
+            short.note_applied(&applied);
         }
         records.features.push(seen.map(|x| x as f32));
         records.labels.push(entries.map(|i| label.get(i) as f32));

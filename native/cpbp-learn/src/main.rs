@@ -7,7 +7,10 @@
 //! the game reads it) the episodes ride that bike; `train` then records it in the model
 //! and refuses data of two bikes. With `--values` the expert's plans are recorded for a
 //! learned cost-to-go too (the states its trajectories reach, with what the rest of the
-//! horizon cost from them), which `train-value` trains on (`training_run.rs`).
+//! horizon cost from them), which `train-value` trains on (`training_run.rs`). With
+//! `--short-planner VALUE_MODEL` the game's planner (combined, N = 5) drives on a short
+//! horizon (`--short-horizon`, 0.6 s) ended by that cost-to-go while the expert labels: a
+//! DAgger round of the cost-to-go.
 //!
 //! `cpbp-learn summary --out DIR`: what the saved episodes hold (rows, the speeds they
 //! cover, each output's mean and spread), every shard checked against this build's
@@ -28,13 +31,13 @@ use rayon::prelude::*;
 
 use cpbp_core::bike::take_bike_argument;
 use cpbp_core::control::learned::{
-    output_entries, PolicyNetwork, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT,
+    output_entries, LoadedValue, PolicyNetwork, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT,
 };
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
 [--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves|braking] \
-[--bike FILE] [--values]\n       \
+[--bike FILE] [--values] [--short-planner VALUE_MODEL [--short-horizon S]]\n       \
 cpbp-learn train|train-value --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] \
 [--seed S] [--hidden W,W…] [--weight-decay D]\n       \
 cpbp-learn summary --out DIR";
@@ -85,6 +88,7 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
     let mut seeds = None;
     let mut jobs = std::thread::available_parallelism().map_or(1, |n| n.get());
     let mut learner = None;
+    let (mut short_value, mut short_horizon) = (None, 0.6);
     let mut it = arguments.iter();
     while let Some(flag) = it.next() {
         let value = it
@@ -117,6 +121,21 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
                 })?;
             }
             "--jobs" => jobs = number("--jobs")?.max(1.0) as usize,
+            "--short-planner" => {
+                let value = LoadedValue::load(std::path::Path::new(value));
+                if let Some(why) = value.problem() {
+                    return Err(format!("--short-planner: {why}"));
+                }
+                short_value = Some(value);
+            }
+            "--short-horizon" => {
+                short_horizon = number("--short-horizon")?;
+                if !(0.1..1.2).contains(&short_horizon) {
+                    return Err(format!(
+                        "--short-horizon is 0.1–1.2 s (the expert plans 1.2), not {value}"
+                    ));
+                }
+            }
             "--learner" => {
                 let network = PolicyNetwork::load(std::path::Path::new(value))
                     .map_err(|e| format!("--learner {value}: {e}"))?;
@@ -125,6 +144,10 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
             other => return Err(format!("unknown option '{other}'\nusage: {USAGE}")),
         }
     }
+    settings.short_planner = short_value.map(|value| episode::ShortPlanner {
+        value,
+        horizon: short_horizon,
+    });
     Ok(Generate {
         out: out.ok_or("--out is required")?,
         seeds: seeds.ok_or("--episodes is required")?,

@@ -17,6 +17,7 @@ pub(crate) fn short() -> ExpertSettings {
         family: Family::Mixed,
         bike: BikeParams::default(),
         values: false,
+        short_planner: None,
     }
 }
 

@@ -144,3 +144,49 @@ fn the_game_computes_the_cost_to_go_training_made() {
         assert!((log - cost.ln_1p()).abs() < 1e-5);
     }
 }
+
+#[test]
+fn a_short_planner_with_a_cost_to_go_drives_while_the_expert_labels() {
+    use super::episode::ShortPlanner;
+    use cpbp_core::control::learned::{LoadedValue, NetworkParts};
+
+    let constant = ValueNetwork::new(NetworkParts {
+        input_mean: vec![0.0; VALUE_INPUT_COUNT],
+        input_std: vec![1.0; VALUE_INPUT_COUNT],
+        layers: vec![(vec![0.0; VALUE_INPUT_COUNT], vec![0.0])],
+        output_mean: vec![2.0],
+        output_std: vec![1.0],
+        training: "by hand".into(),
+        bike: BikeParams::default().identity(),
+    })
+    .unwrap();
+    let settings = ExpertSettings {
+        short_planner: Some(ShortPlanner {
+            value: LoadedValue::ready(constant),
+            horizon: 0.4,
+        }),
+        ..with_values()
+    };
+    let episode = Episode::draw(3, &settings);
+    let driven = ride(&episode, &settings, None);
+    assert!(
+        driven.driver.starts_with("short planner"),
+        "{}",
+        driven.driver
+    );
+    assert!(
+        driven.driver.contains("0.4 s + cost-to-go"),
+        "{}",
+        driven.driver
+    );
+    let expert = ridden(3);
+    assert_eq!(driven.features[0], expert.features[0], "the same start");
+    assert_ne!(
+        driven.features, expert.features,
+        "another driver, other states"
+    );
+    assert!(
+        !driven.value_targets.is_empty(),
+        "the expert's plans still recorded"
+    );
+}
