@@ -29,7 +29,7 @@ bench: build ## Print the performance figures, planning and frame time (see docs
 experiment: build ## The thesis's evaluation on the game's physics, headless (docs/experiment.md; ARGS="--out docs/experiment")
 	@tools/experiment all $(ARGS)
 
-train: build ## Train the learned controller from nothing and evaluate it (docs/learned-controller.md)
+train: build ## Train the learned controller from nothing and evaluate it (docs/learned-controller.md); BIKE=FILE for a bike's, BIKE=all for every bike's
 	@tools/train.sh
 
 export: build ## Export the Linux build into build/linux/ (a portable engine: built once, ~40 min)

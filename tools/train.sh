@@ -21,8 +21,9 @@
 # episodes from R*100000 + 50001, carving from R*100000 + 70001 and braking from
 # R*100000 + 90001, so no two episodes of a run share a seed.
 # EPOCHS and SEED override the trainer's defaults (cpbp-learn train --help).
-# BIKE=FILE (a bike file) trains a network of that bike: its episodes, checkpoints and
-# report go to a folder and a model of the bike's own (models/policy-<name>.safetensors,
+# BIKE=all trains every bike's (below). BIKE=FILE (a bike file) trains a network of that
+# bike: its episodes, checkpoints and report go to a folder and a model of the bike's own
+# (models/policy-<name>.safetensors,
 # docs/learned/<name>, <name> the bike file's, which the game and the tools load for that
 # bike), and the game's evaluation, which rides the reference bike, is left out. A game's
 # bike rides the game's speeds, up to 90 km/h: its run adds braking episodes (24 s each,
@@ -34,6 +35,17 @@
 # removes them.
 source "$(dirname "$0")/common.sh"
 cd "$PROJECT_ROOT"
+
+# BIKE=all: what the game ships, every bike's network: the reference's, then each bike file
+# in scenes/bike/bikes/ (the ones a player chooses), one after another, each resuming as a
+# run of its own does.
+if [ "${BIKE:-}" = all ]; then
+  BIKE= "$0"
+  for file in scenes/bike/bikes/*.tres; do
+    [ "$(basename "$file" .tres)" = street_350 ] || BIKE="$file" "$0"
+  done
+  exit 0
+fi
 
 EPISODES="${EPISODES:-150}"
 LOG_EPISODES="${LOG_EPISODES:-60}"
