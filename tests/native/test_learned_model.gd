@@ -37,6 +37,17 @@ func _ride_reporting(model: String, controller: String, steps: int) -> Array[Str
 	return reasons
 
 
+## The pit bike beside the reference one, stepped by the test alone.
+func _pit_bike() -> BikeSimulation:
+	var pit := BikeSimulation.new()
+	pit.bike = PIT_BIKE
+	pit.transform = Transform3D(Basis(), Vector3(3, 0.02, 0))
+	_level.add_child(pit)
+	await wait_physics_frames(1)
+	pit.set_physics_process(false)
+	return pit
+
+
 func test_the_project_ships_a_model_and_the_learned_controller_rides_with_it() -> void:
 	var own := _bike.get_policy_model_path()
 	assert_eq(own, "res://models/policy-street_350.safetensors", "the reference bike's own")
@@ -72,12 +83,7 @@ func test_a_corrupt_model_is_refused_and_guided_plans_with_arcade() -> void:
 
 
 func test_a_bike_without_a_model_of_its_own_offers_no_learned_and_guided_plans_without() -> void:
-	var pit := BikeSimulation.new()
-	pit.bike = PIT_BIKE
-	pit.transform = Transform3D(Basis(), Vector3(3, 0.02, 0))
-	_level.add_child(pit)
-	await wait_physics_frames(1)
-	pit.set_physics_process(false)
+	var pit := await _pit_bike()
 	assert_eq(pit.get_policy_model_path(), "", "no model of its own")
 	var offered := pit.get_offered_controller_names()
 	assert_false(offered.has("learned"), "learned is not offered: %s" % [offered])
@@ -96,12 +102,7 @@ func test_a_bike_without_a_model_of_its_own_offers_no_learned_and_guided_plans_w
 
 
 func test_without_its_cost_to_go_a_planner_plans_its_whole_horizon_and_says_so() -> void:
-	var pit := BikeSimulation.new()
-	pit.bike = PIT_BIKE
-	pit.transform = Transform3D(Basis(), Vector3(3, 0.02, 0))
-	_level.add_child(pit)
-	await wait_physics_frames(1)
-	pit.set_physics_process(false)
+	var pit := await _pit_bike()
 	var reasons: Array[String] = []
 	pit.controller_failed.connect(func(reason: String) -> void: reasons.append(reason))
 	pit.controller = "combined"

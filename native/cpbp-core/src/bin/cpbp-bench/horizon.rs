@@ -3,9 +3,8 @@
 //! combined N = 5 over the whole 1.2 s in the same run; and what one evaluation of the
 //! cost-to-go costs (it runs once per trajectory per plan).
 
-use cpbp_core::bike::DriveInput;
 use cpbp_core::control::learned::features;
-use cpbp_core::control::{Goal, PlanningConfig};
+use cpbp_core::control::PlanningConfig;
 use cpbp_core::ride::ControllerKind;
 use cpbp_core::settings::HORIZON_S;
 use cpbp_core::simulation::Simulation;
@@ -78,14 +77,7 @@ pub fn horizon_table(sim: &Simulation, row: impl Fn(&str, String)) {
         );
         return;
     };
-    let goal = Goal::riding(
-        0.0,
-        DriveInput {
-            throttle: 0.6,
-            brake: 0.0,
-            max_speed: 15.0 / 3.6,
-        },
-    );
+    let goal = super::cruising_goal();
     let us = median(|| {
         time_per_call(20_000, || {
             let seen = features(sim.bike(), sim.world(), &goal, sim.up());

@@ -1,9 +1,7 @@
 //! The learned controller's cost (issue 34): one control step's features and network
 //! against a plan's, with the bike's own model as `make train` left it.
 
-use cpbp_core::bike::DriveInput;
 use cpbp_core::control::learned::features;
-use cpbp_core::control::Goal;
 use cpbp_core::ride::ControllerKind;
 use cpbp_core::simulation::Simulation;
 
@@ -20,14 +18,7 @@ pub fn inference_cost(sim: &Simulation, row: impl Fn(&str, String)) {
         );
         return;
     };
-    let goal = Goal::riding(
-        0.0,
-        DriveInput {
-            throttle: 0.6,
-            brake: 0.0,
-            max_speed: 15.0 / 3.6,
-        },
-    );
+    let goal = super::cruising_goal();
     let step_us = median(|| {
         time_per_call(20_000, || {
             std::hint::black_box(network.controls(sim.bike(), sim.world(), &goal, sim.up())).ok();

@@ -276,6 +276,19 @@ fn bump_field() -> Arc<Terrain> {
     Arc::new(Terrain::new(vec![mesh]).expect("valid mesh"))
 }
 
+/// What every timed plan and network is asked: upright at 15 km/h on part throttle, as
+/// `rolling_bike` rides.
+fn cruising_goal() -> cpbp_core::control::Goal {
+    cpbp_core::control::Goal::riding(
+        0.0,
+        DriveInput {
+            throttle: 0.6,
+            brake: 0.0,
+            max_speed: 15.0 / 3.6,
+        },
+    )
+}
+
 /// A simulation in `physics` whose bike is riding at 15 km/h with the rider holding the
 /// pose.
 fn rolling_bike(terrain: Arc<Terrain>, physics: PhysicsModel) -> Simulation {

@@ -5,8 +5,8 @@
 use std::sync::Arc;
 use std::time::Instant;
 
-use cpbp_core::bike::{Controls, DriveInput};
-use cpbp_core::control::{Goal, PlanningConfig, PlanningSession};
+use cpbp_core::bike::Controls;
+use cpbp_core::control::{PlanningConfig, PlanningSession};
 use cpbp_core::ode::World;
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::ControllerKind;
@@ -175,20 +175,16 @@ pub fn planning_ms_with(
     adjust(&mut config);
     let mut optimizer = PlanningSession::new(sim, spec, config);
     optimizer.follow(crate::bike_policy().network().cloned());
-    let drive = DriveInput {
-        throttle: 0.6,
-        brake: 0.0,
-        max_speed: 15.0 / 3.6,
-    };
+    let goal = crate::cruising_goal();
     for _ in 0..3 {
-        optimizer.controls(sim, &Goal::riding(0.0, drive)); // warm-up: memory, thread pool
+        optimizer.controls(sim, &goal); // warm-up: memory, thread pool
     }
     const PLANS: usize = 9;
     let mut diagnostics: Vec<(&'static str, f64)> = Vec::new();
     let mut samples: Vec<f64> = (0..PLANS)
         .map(|_| {
             let start = Instant::now();
-            optimizer.controls(sim, &Goal::riding(0.0, drive));
+            optimizer.controls(sim, &goal);
             let ms = start.elapsed().as_secs_f64() * 1000.0;
             for &(name, value) in optimizer.last_plan().map_or(&[][..], |p| &p.diagnostics.0) {
                 match diagnostics.iter_mut().find(|(n, _)| *n == name) {
