@@ -42,7 +42,7 @@ fn each_step_keeps_a_few_states_with_the_time_left_and_a_cost_of_at_least_nothin
     let samples = records.value_targets.len();
     assert_eq!(records.value_inputs.len(), samples);
     // Four trajectories recorded at three splits: up to 12 a plan, of which those a
-    // final trajectory descends from count (resampling drops some), 6 kept.
+    // final trajectory descends from count (resampling drops some), 2 kept.
     assert!(samples <= steps * VALUE_SAMPLES_PER_STEP, "{samples}");
     assert!(
         samples >= steps * VALUE_SAMPLES_PER_STEP * 9 / 10,
