@@ -13,8 +13,15 @@ for round in $(seq "$rounds"); do
   tools/godot --headless --path . --audio-driver Dummy res://tests/saves/save_stress.tscn -- --write $fresh \
     >build/logs/kill-test-writer.log 2>&1 &
   writer=$!
-  # Let it start and save for a while: 1.5 to 4 s.
-  sleep "$(awk -v r="$RANDOM" 'BEGIN { printf "%.2f", 1.5 + 2.5 * r / 32767 }')"
+  # Once it saves (Godot's start takes seconds on a busy machine: a fixed wait killed it
+  # before its first save when make test ran beside a training run), let it save for a
+  # while: 0.2 to 2.5 s more.
+  for _ in $(seq 600); do
+    grep -q "^saved round" build/logs/kill-test-writer.log && break
+    kill -0 "$writer" 2>/dev/null || break
+    sleep 0.1
+  done
+  sleep "$(awk -v r="$RANDOM" 'BEGIN { printf "%.2f", 0.2 + 2.3 * r / 32767 }')"
   kill -9 "$writer"
   wait "$writer" 2>/dev/null || true
   saved=$(grep -c "^saved round" build/logs/kill-test-writer.log || true)
