@@ -165,6 +165,38 @@ class CompareTest(unittest.TestCase):
         self.assertIn("−3.50", table.replace("-", "−"), "paired over seeds 0 and 2: 7−10, 8−12")
         self.assertNotIn("15° turn", table, "a scenario on one side only is left out")
 
+    def test_a_real_difference_is_flagged_after_holm_and_noise_is_not(self):
+        from planner_scenarios.compare import pairings, side_by_side
+        noise = [0.3, -0.2, 0.1, -0.4, 0.25, -0.05, 0.15, -0.1, 0.2, -0.3]
+        first = [parse(line("slalom", "combined", 5, s, False, 2.0 + d))
+                 for s, d in enumerate(noise)]
+        first += [parse(line("walk", "combined", 5, s, False, 8.0 + d))
+                  for s, d in enumerate(noise)]
+        # The slalom's error doubles on every seed; the walk's moves by noise alone.
+        second = [parse(line("slalom", "combined", 5, s, False, 4.0 + d * 0.9))
+                  for s, d in enumerate(noise)]
+        second += [parse(line("walk", "combined", 5, s, False, 8.0 + noise[::-1][s]))
+                   for s in range(len(noise))]
+        slalom, walk = pairings(first, second)
+        self.assertLess(slalom.metric_p, 1e-6)
+        self.assertGreater(walk.metric_p, 0.5)
+        self.assertEqual((slalom.falls_p, walk.falls_p), (1.0, 1.0), "nobody fell")
+        self.assertAlmostEqual(slalom.planning_ratio, 1.0)
+        table = side_by_side(first, second, ("1.2 s", "0.6 s"))
+        self.assertIn("1 of 4 paired tests", table)
+        self.assertIn("planning 0.6 s / 1.2 s", table)
+
+    def test_falls_pair_by_seed_and_a_constant_shift_still_counts(self):
+        from planner_scenarios.compare import pairings
+        first = [parse(line("push", "guided", 5, s, False, 10.0)) for s in range(12)]
+        second = [parse(line("push", "guided", 5, s, s < 10, 11.0)) for s in range(12)]
+        (push,) = pairings(first, second)
+        self.assertEqual(push.falls, (0, 10))
+        self.assertLess(push.falls_p, 0.01, "10 discordant pairs all one way")
+        self.assertEqual(push.metric_p, 0.0, "the two seeds up differ by 1 each")
+        same = pairings(first, first)[0]
+        self.assertEqual((same.falls_p, same.metric_p), (1.0, 1.0))
+
 
 class SettingsTest(unittest.TestCase):
     """A folder's rows are ridden with one set of planner settings (`--set`)."""
