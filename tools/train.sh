@@ -13,7 +13,10 @@
 #     training report is written (docs/learned/training.md, losses.png).
 #     Every round's expert also recorded its plans for the planners' learned cost-to-go
 #     (issue 59; `generate --values`): it is trained on all of them (cpbp-learn
-#     train-value) into models/value-<bike>.safetensors. VALUES=0 leaves it out.
+#     train-value), then VALUE_ROUNDS (1) DAgger rounds of its own where the planner
+#     drives on the short horizon it ends (DAGGER_EPISODES mixed and
+#     DAGGER_CARVING_EPISODES carving, seeds from (ROUNDS + R)*100000 + 1), into
+#     models/value-<bike>.safetensors. VALUES=0 leaves it out.
 #  5. Unless EVALUATE=0: learned and guided ride the test-level experiment and the
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
 #     are written again (docs/experiment, docs/scenarios).
@@ -56,6 +59,7 @@ CARVING_EPISODES="${CARVING_EPISODES:-40}"
 DAGGER_CARVING_EPISODES="${DAGGER_CARVING_EPISODES:-20}"
 EVALUATE="${EVALUATE:-1}"
 VALUES="${VALUES:-1}"
+VALUE_ROUNDS="${VALUE_ROUNDS:-1}"
 BRAKING_SECONDS=24
 LEARN_DATA="${LEARN_DATA:-$CACHE_ROOT/learn}"
 MODEL=models/policy-street_350.safetensors
@@ -132,20 +136,37 @@ done
 
 cp "$LEARN_DATA/round-$ROUNDS.safetensors" "$MODEL.partial"
 mv "$MODEL.partial" "$MODEL"
-# The cost-to-go, on every round's recorded plans (unless it is trained already).
+# The cost-to-go: trained on every round's recorded plans (value-0), then VALUE_ROUNDS
+# DAgger rounds of its own, where the game's planner drives on the short horizon that the
+# latest cost-to-go ends (the states its own short plans lead to) while the full-horizon
+# expert records its plans; the last is the bike's. Each network trained is kept.
 if [ "$VALUES" != 0 ]; then
-  if [ ! -f "$LEARN_DATA/value.safetensors" ]; then
-    "$learn" train-value --data "$folders" --model "$LEARN_DATA/value.safetensors" \
-      --losses "$LEARN_DATA/value.losses.csv" ${EPOCHS:+--epochs "$EPOCHS"} ${SEED:+--seed "$SEED"}
-  fi
-  cp "$LEARN_DATA/value.safetensors" "$VALUE_MODEL.partial"
+  value_folders=$folders
+  for round in $(seq 0 "$VALUE_ROUNDS"); do
+    if [ "$round" -gt 0 ]; then
+      base=$(((ROUNDS + round) * 100000))
+      short=(--short-planner "$LEARN_DATA/value-$((round - 1)).safetensors")
+      "$learn" generate --out "$LEARN_DATA/short-$round" --values "${short[@]}" "${bike[@]}" \
+        --episodes "$((base + 1))-$((base + DAGGER_EPISODES))"
+      "$learn" generate --out "$LEARN_DATA/short-$round-carving" --family carving --values \
+        "${short[@]}" "${bike[@]}" \
+        --episodes "$((base + 70001))-$((base + 70000 + DAGGER_CARVING_EPISODES))"
+      value_folders="$value_folders,$LEARN_DATA/short-$round,$LEARN_DATA/short-$round-carving"
+    fi
+    value="$LEARN_DATA/value-$round.safetensors"
+    [ -f "$value" ] || "$learn" train-value --data "$value_folders" --model "$value" \
+      --losses "$LEARN_DATA/value-$round.losses.csv" ${EPOCHS:+--epochs "$EPOCHS"} \
+      ${SEED:+--seed "$SEED"}
+  done
+  cp "$value" "$VALUE_MODEL.partial"
   mv "$VALUE_MODEL.partial" "$VALUE_MODEL"
 fi
 minutes=$(( ($(date +%s) - started + 59) / 60 ))
 
 report() {
   .venv/bin/learned-report --data "$LEARN_DATA" --rounds "$ROUNDS" \
-    --model "$MODEL" --out "$REPORT" --minutes "$minutes" ${name:+--bike "$name"}
+    --model "$MODEL" --out "$REPORT" --minutes "$minutes" ${name:+--bike "$name"} \
+    $([ "$VALUES" != 0 ] && echo --value-model "$VALUE_MODEL")
 }
 report
 

@@ -32,10 +32,13 @@ def model_metadata(path: Path) -> dict:
     return json.loads(data[8:8 + length]).get("__metadata__", {})
 
 
-def losses(data: Path, rounds: int) -> dict[int, list[tuple[int, float, float]]]:
+def losses(data: Path, rounds: int, prefix: str = "round") -> dict[int, list[tuple[int, float,
+                                                                                   float]]]:
+    """Each round's curve from PREFIX-R.losses.csv (round: the policy's; value: the
+    cost-to-go's), for the rounds that have one."""
     curves = {}
     for r in range(rounds + 1):
-        path = data / f"round-{r}.losses.csv"
+        path = data / f"{prefix}-{r}.losses.csv"
         if path.exists():
             with path.open() as f:
                 curves[r] = [(int(row["epoch"]), float(row["train"]), float(row["held_out"]))
@@ -179,6 +182,37 @@ def evaluation_of_bike(bike: str) -> list[str]:
     ]
 
 
+def _value_data(round_: int) -> str:
+    """What the cost-to-go of round R was trained on."""
+    if round_ == 0:
+        return "the expert's and the policy rounds' recorded plans"
+    return f"those and {round_} round{'s' if round_ > 1 else ''} the short-horizon planner drove"
+
+
+def value_section(data: Path, model: Path | None) -> list[str]:
+    """The cost-to-go trained beside the policy (issue 59): its model and each round's
+    last losses; nothing when the run trained none."""
+    curves = losses(data, len(list(data.glob("value-*.losses.csv"))), "value")
+    if model is None or not model.exists() or not curves:
+        return []
+    meta = model_metadata(model)
+    return [
+        "## The cost-to-go",
+        "",
+        f"- Model: `{model}` ({model.stat().st_size / 1024:.0f} KiB), format "
+        f"{meta.get('format')} v{meta.get('format_version')}, {meta.get('layers')} layers, "
+        f"{meta.get('activation')}; it predicts ln(1 + the planner's cost over the rest of "
+        "its horizon).",
+        f"- Training run: {meta.get('training')}.",
+        "",
+        "| round | trained on | epochs | training loss | held-out loss |",
+        "|---|---|---|---|---|",
+        *[f"| {r} | {_value_data(r)} | {c[-1][0] + 1} | {c[-1][1]:.4f} | {c[-1][2]:.4f} |"
+          for r, c in curves.items() if c],
+        "",
+    ]
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--data", type=Path, required=True)
@@ -186,6 +220,7 @@ def main() -> int:
     parser.add_argument("--model", type=Path, required=True)
     parser.add_argument("--out", type=Path, required=True)
     parser.add_argument("--minutes", type=int, required=True)
+    parser.add_argument("--value-model", type=Path, help="the cost-to-go the run trained")
     parser.add_argument("--bike", help="the bike file's name when the model is another bike's "
                         "than the reference (its evaluation is its own scenario table)")
     args = parser.parse_args()
@@ -216,6 +251,7 @@ def main() -> int:
         "|---|---|---|---|",
         *[f"| {r} | {c[0] + 1} | {c[1]:.4f} | {c[2]:.4f} |" for r, c in last.items()],
         "",
+        *value_section(args.data, args.value_model),
         *(evaluation_of_bike(args.bike) if args.bike else reference_evaluation()),
     ]
     (args.out / "training.md").write_text("\n".join(lines))

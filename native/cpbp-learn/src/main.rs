@@ -33,6 +33,7 @@ use cpbp_core::bike::take_bike_argument;
 use cpbp_core::control::learned::{
     output_entries, LoadedValue, PolicyNetwork, FEATURE_COUNT, FEATURE_NAMES, OUTPUT_COUNT,
 };
+use cpbp_core::settings;
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
@@ -88,7 +89,9 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
     let mut seeds = None;
     let mut jobs = std::thread::available_parallelism().map_or(1, |n| n.get());
     let mut learner = None;
-    let (mut short_value, mut short_horizon) = (None, 0.6);
+    // The planner's own setting: the game's default value horizon, below the expert's.
+    let (mut short_value, mut short_horizon) = (None, settings::VALUE_HORIZON_S.default_number());
+    let expert_horizon = settings::HORIZON_S.default_number();
     let mut it = arguments.iter();
     while let Some(flag) = it.next() {
         let value = it
@@ -130,9 +133,11 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
             }
             "--short-horizon" => {
                 short_horizon = number("--short-horizon")?;
-                if !(0.1..1.2).contains(&short_horizon) {
+                let shortest = settings::VALUE_HORIZON_S.limit().min;
+                if !(shortest..expert_horizon).contains(&short_horizon) {
                     return Err(format!(
-                        "--short-horizon is 0.1–1.2 s (the expert plans 1.2), not {value}"
+                        "--short-horizon is {shortest}–{expert_horizon} s (the expert plans \
+                         {expert_horizon}), not {value}"
                     ));
                 }
             }
@@ -173,10 +178,14 @@ fn generate(run: Generate) -> Result<(), String> {
         run.out.display(),
         run.settings.trajectories,
         run.settings.noise,
-        if run.learner.is_some() {
-            "the learner drives"
-        } else {
-            "the expert drives"
+        match (&run.settings.short_planner, &run.learner) {
+            (Some(short), _) => format!(
+                "combined N = {} drives on {} s ended by the cost-to-go",
+                episode::SHORT_PLANNER_N,
+                short.horizon
+            ),
+            (None, Some(_)) => "the learner drives".to_string(),
+            (None, None) => "the expert drives".to_string(),
         },
         run.jobs
     );

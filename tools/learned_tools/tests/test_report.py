@@ -62,6 +62,19 @@ class ReportTest(unittest.TestCase):
         path.write_bytes(struct.pack("<Q", len(header)) + header)
         self.assertEqual(report.model_metadata(path), {"training": "2 rounds"})
 
+    def test_the_cost_to_go_reports_each_round_and_nothing_when_none_was_trained(self):
+        header = json.dumps({"__metadata__": {"format": "counter-steer-value"}}).encode()
+        model = self.folder / "value.safetensors"
+        self.assertEqual(report.value_section(self.folder, model), [], "no model, no losses")
+        model.write_bytes(struct.pack("<Q", len(header)) + header)
+        self.write("value-0.losses.csv", "epoch,train,held_out\n0,0.5,0.6\n1,0.4,0.5\n")
+        self.write("value-1.losses.csv", "epoch,train,held_out\n0,0.3,0.45\n")
+        text = "\n".join(report.value_section(self.folder, model))
+        self.assertIn("counter-steer-value", text)
+        self.assertIn("| 0 | the expert's and the policy rounds' recorded plans | 2 | 0.4000 | "
+                      "0.5000 |", text)
+        self.assertIn("| 1 | those and 1 round the short-horizon planner drove | 1 |", text)
+
 
 if __name__ == "__main__":
     unittest.main()
