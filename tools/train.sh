@@ -16,7 +16,10 @@
 #     train-value), then VALUE_ROUNDS (1) DAgger rounds of its own where the planner
 #     drives on the short horizon it ends (DAGGER_EPISODES mixed and
 #     DAGGER_CARVING_EPISODES carving, seeds from (ROUNDS + R)*100000 + 1), into
-#     models/value-<bike>.safetensors. VALUES=0 leaves it out.
+#     models/value-<bike>.safetensors. VALUES=0 leaves it out. POLICY=0 trains the
+#     cost-to-go alone, for a bike whose network landed before it did: the expert's round
+#     only (ROUNDS=0), recorded, then the cost-to-go's rounds; the shipped policy and its
+#     report stay, and the report's cost-to-go section is written anew.
 #  5. Unless EVALUATE=0: learned and guided ride the test-level experiment and the
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
 #     are written again (docs/experiment, docs/scenarios).
@@ -50,6 +53,12 @@ if [ "${BIKE:-}" = all ]; then
   exit 0
 fi
 
+POLICY="${POLICY:-1}"
+if [ "$POLICY" = 0 ]; then
+  [ "${VALUES:-1}" != 0 ] || die "POLICY=0 trains the cost-to-go alone; VALUES=0 leaves nothing"
+  [ "${ROUNDS:-0}" = 0 ] || die "POLICY=0 rides the expert's round alone, not ROUNDS=$ROUNDS"
+  ROUNDS=0 EVALUATE=0
+fi
 EPISODES="${EPISODES:-150}"
 LOG_EPISODES="${LOG_EPISODES:-60}"
 ROUNDS="${ROUNDS:-3}"
@@ -125,7 +134,7 @@ round_folders() {
 ride_round 0 "$LEARN_DATA/expert" "$EPISODES" "$LOG_EPISODES" "$CARVING_EPISODES" \
   "$BRAKING_EPISODES"
 folders=$(round_folders 0 "$LEARN_DATA/expert")
-train_round 0 "$folders"
+[ "$POLICY" = 0 ] || train_round 0 "$folders"
 for round in $(seq 1 "$ROUNDS"); do
   ride_round "$round" "$LEARN_DATA/dagger-$round" "$DAGGER_EPISODES" "$DAGGER_LOG_EPISODES" \
     "$DAGGER_CARVING_EPISODES" "$DAGGER_BRAKING_EPISODES" \
@@ -134,8 +143,10 @@ for round in $(seq 1 "$ROUNDS"); do
   train_round "$round" "$folders"
 done
 
-cp "$LEARN_DATA/round-$ROUNDS.safetensors" "$MODEL.partial"
-mv "$MODEL.partial" "$MODEL"
+if [ "$POLICY" != 0 ]; then
+  cp "$LEARN_DATA/round-$ROUNDS.safetensors" "$MODEL.partial"
+  mv "$MODEL.partial" "$MODEL"
+fi
 # The cost-to-go: trained on every round's recorded plans (value-0), then VALUE_ROUNDS
 # DAgger rounds of its own, where the game's planner drives on the short horizon that the
 # latest cost-to-go ends (the states its own short plans lead to) while the full-horizon
@@ -164,6 +175,11 @@ fi
 minutes=$(( ($(date +%s) - started + 59) / 60 ))
 
 report() {
+  if [ "$POLICY" = 0 ]; then
+    .venv/bin/learned-report --value-only --data "$LEARN_DATA" --rounds 0 --model "$MODEL" \
+      --out "$REPORT" --minutes "$minutes" --value-model "$VALUE_MODEL"
+    return
+  fi
   .venv/bin/learned-report --data "$LEARN_DATA" --rounds "$ROUNDS" \
     --model "$MODEL" --out "$REPORT" --minutes "$minutes" ${name:+--bike "$name"} \
     $([ "$VALUES" != 0 ] && echo --value-model "$VALUE_MODEL")
@@ -187,4 +203,5 @@ if [ "$EVALUATE" != 0 ]; then
   tools/planner-scenarios report --out docs/scenarios
   report
 fi
+[ "$POLICY" = 0 ] && MODEL=$VALUE_MODEL
 echo "make train: done in $(( ($(date +%s) - started + 59) / 60 )) min; the model is $MODEL"

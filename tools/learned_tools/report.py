@@ -9,6 +9,7 @@ import argparse
 import csv
 import json
 import struct
+import sys
 from collections import defaultdict
 from pathlib import Path
 
@@ -182,22 +183,27 @@ def evaluation_of_bike(bike: str) -> list[str]:
     ]
 
 
-def _value_data(round_: int) -> str:
+VALUE_HEADING = "## The cost-to-go"
+
+
+def _value_data(round_: int, policy_rounds: bool) -> str:
     """What the cost-to-go of round R was trained on."""
     if round_ == 0:
-        return "the expert's and the policy rounds' recorded plans"
+        return ("the expert's and the policy rounds' recorded plans" if policy_rounds
+                else "the expert's recorded plans")
     return f"those and {round_} round{'s' if round_ > 1 else ''} the short-horizon planner drove"
 
 
-def value_section(data: Path, model: Path | None) -> list[str]:
+def value_section(data: Path, model: Path | None, policy_rounds: bool = True) -> list[str]:
     """The cost-to-go trained beside the policy (issue 59): its model and each round's
-    last losses; nothing when the run trained none."""
+    last losses; nothing when the run trained none. POLICY_ROUNDS: whether the run's
+    policy rounds' plans were among its data (not in a cost-to-go-only run)."""
     curves = losses(data, len(list(data.glob("value-*.losses.csv"))), "value")
     if model is None or not model.exists() or not curves:
         return []
     meta = model_metadata(model)
     return [
-        "## The cost-to-go",
+        VALUE_HEADING,
         "",
         f"- Model: `{model}` ({model.stat().st_size / 1024:.0f} KiB), format "
         f"{meta.get('format')} v{meta.get('format_version')}, {meta.get('layers')} layers, "
@@ -207,10 +213,40 @@ def value_section(data: Path, model: Path | None) -> list[str]:
         "",
         "| round | trained on | epochs | training loss | held-out loss |",
         "|---|---|---|---|---|",
-        *[f"| {r} | {_value_data(r)} | {c[-1][0] + 1} | {c[-1][1]:.4f} | {c[-1][2]:.4f} |"
+        *[f"| {r} | {_value_data(r, policy_rounds)} | {c[-1][0] + 1} | {c[-1][1]:.4f} | {c[-1][2]:.4f} |"
           for r, c in curves.items() if c],
         "",
     ]
+
+
+def with_value_section(report: str, section: list[str]) -> str:
+    """REPORT with its cost-to-go section replaced by SECTION, or SECTION put before the
+    section after the losses (the evaluation) when it had none: the policy's losses and
+    evaluation, which a cost-to-go-only run cannot redo, are kept as they were."""
+    lines = report.split("\n")
+    if VALUE_HEADING in lines:
+        start = lines.index(VALUE_HEADING)
+        end = next((i for i in range(start + 1, len(lines)) if lines[i].startswith("## ")),
+                   len(lines))
+    else:
+        losses_at = next((i for i, line in enumerate(lines) if line == "## Losses"), None)
+        if losses_at is None:
+            raise ValueError("the training report has no losses section to follow")
+        start = end = next((i for i in range(losses_at + 1, len(lines))
+                            if lines[i].startswith("## ")), len(lines))
+    return "\n".join(lines[:start] + section + lines[end:])
+
+
+def write_value_only(data: Path, model: Path, out: Path) -> None:
+    """`make train POLICY=0`: the cost-to-go's section of OUT/training.md, written anew."""
+    section = value_section(data, model, policy_rounds=False)
+    if not section:
+        raise ValueError(f"no cost-to-go to report: {model} or {data}/value-*.losses.csv missing")
+    path = out / "training.md"
+    if not path.exists():
+        raise ValueError(f"{path} does not exist: a cost-to-go-only run reports beside the "
+                         "policy's training report")
+    path.write_text(with_value_section(path.read_text("utf-8"), section), "utf-8")
 
 
 def main() -> int:
@@ -223,7 +259,18 @@ def main() -> int:
     parser.add_argument("--value-model", type=Path, help="the cost-to-go the run trained")
     parser.add_argument("--bike", help="the bike file's name when the model is another bike's "
                         "than the reference (its evaluation is its own scenario table)")
+    parser.add_argument("--value-only", action="store_true", help="only the cost-to-go "
+                        "was trained (make train POLICY=0): rewrite its section of "
+                        "OUT/training.md and keep the rest")
     args = parser.parse_args()
+    if args.value_only:
+        try:
+            write_value_only(args.data, args.value_model, args.out)
+        except (ValueError, OSError) as error:
+            print(f"learned report: {error}", file=sys.stderr)
+            return 2
+        print(f"learned report: the cost-to-go in {args.out / 'training.md'}")
+        return 0
     args.out.mkdir(parents=True, exist_ok=True)
     curves = losses(args.data, args.rounds)
     if curves:

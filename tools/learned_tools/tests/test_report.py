@@ -75,6 +75,29 @@ class ReportTest(unittest.TestCase):
                       "0.5000 |", text)
         self.assertIn("| 1 | those and 1 round the short-horizon planner drove | 1 |", text)
 
+    def test_a_cost_to_go_only_run_rewrites_its_section_and_keeps_the_policys(self):
+        header = json.dumps({"__metadata__": {"format": "counter-steer-value"}}).encode()
+        model = self.folder / "value.safetensors"
+        model.write_bytes(struct.pack("<Q", len(header)) + header)
+        self.write("value-0.losses.csv", "epoch,train,held_out\n0,0.5,0.6\n")
+        out = self.folder / "report"
+        out.mkdir()
+        with self.assertRaises(ValueError, msg="no policy report to add to"):
+            report.write_value_only(self.folder, model, out)
+        policy = "# T\n\n## Losses\n\n| 3 | 8 | 0.4 | 0.5 |\n\n## Evaluation\n\nrows\n"
+        (out / "training.md").write_text(policy, "utf-8")
+        report.write_value_only(self.folder, model, out)
+        first = (out / "training.md").read_text("utf-8")
+        self.assertIn("| 3 | 8 | 0.4 | 0.5 |\n\n## The cost-to-go", first)
+        self.assertIn("| 0 | the expert's recorded plans | 1 |", first)
+        self.assertTrue(first.endswith("## Evaluation\n\nrows\n"))
+        self.write("value-1.losses.csv", "epoch,train,held_out\n0,0.3,0.45\n")
+        report.write_value_only(self.folder, model, out)
+        second = (out / "training.md").read_text("utf-8")
+        self.assertEqual(second.count("## The cost-to-go"), 1, "replaced, not added")
+        self.assertIn("| 1 | those and 1 round the short-horizon planner drove |", second)
+        self.assertTrue(second.endswith("## Evaluation\n\nrows\n"))
+
 
 if __name__ == "__main__":
     unittest.main()
