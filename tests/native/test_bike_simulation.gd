@@ -136,7 +136,9 @@ func test_the_optimizer_settings_shape_its_plans() -> void:
 	assert_eq(paths.size(), 4)
 	assert_eq(paths[0].size(), 18, "0.6 s at 30 planning steps a second")
 	assert_eq(_bike.get_warm_trajectory(), 1, "combined: the arcade rollout")
-	assert_eq(_bike.get_plan_diagnostics().keys(), ["resamples"], "C-PBP's own number")
+	assert_eq(
+		_bike.get_plan_diagnostics().keys(), ["resamples", "fallen steps"], "C-PBP's own numbers"
+	)
 	var stats := _bike.get_handover_stats()
 	assert_gt(stats.boundaries, 20)
 	assert_eq(stats.late, 0, "waiting up to a second, every plan is on time")

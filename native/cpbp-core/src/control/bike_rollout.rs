@@ -73,6 +73,9 @@ pub struct BikeRollout {
     pub start: PlanStart,
     /// The learned cost-to-go that ends a shortened horizon, if the plan's is.
     pub value: Option<TerminalValue>,
+    /// Whether its last step ended with a part other than the wheels and feet on the
+    /// ground (`RolloutSystem::fallen`).
+    pub fallen: bool,
 }
 
 /// A learned cost-to-go standing for the seconds a shortened horizon leaves out.
@@ -246,7 +249,12 @@ impl RolloutSystem for BikeRollout {
         } else {
             0.0
         };
+        self.fallen = crash > 0.0;
         Some(lean + rider + crash + slide)
+    }
+
+    fn fallen(&self) -> bool {
+        self.fallen
     }
 
     /// Lean, lean rate, steering angle and rate, in units of roughly what one control

@@ -45,7 +45,7 @@ pub struct Trajectory {
     pub path: Vec<[f64; 3]>,
 }
 
-/// A planner's own numbers about a plan, by name (C-PBP: "resamples").
+/// A planner's own numbers about a plan, by name (C-PBP: "resamples", "fallen steps").
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Diagnostics(pub Vec<(&'static str, f64)>);
 

@@ -177,6 +177,7 @@ impl PlanningSession {
                 policy: None,
                 start: PlanStart::default(),
                 value: value.clone(),
+                fallen: false,
             });
         }
     }

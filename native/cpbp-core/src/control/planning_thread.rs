@@ -59,7 +59,7 @@ pub struct Plan {
     /// Trajectories it was planned with (N).
     pub trajectories: usize,
     pub blowups: usize,
-    /// The planner's own numbers about the plan (C-PBP: "resamples").
+    /// The planner's own numbers about the plan (C-PBP: "resamples", "fallen steps").
     pub diagnostics: Diagnostics,
     pub planning_ms: f64,
     /// Where the planner's own time went (within `planning_ms`, which also counts the

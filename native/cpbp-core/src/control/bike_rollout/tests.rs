@@ -51,6 +51,7 @@ fn standing_rollout(bike: BikeParams) -> BikeRollout {
         policy: None,
         start: PlanStart::default(),
         value: None,
+        fallen: false,
     };
     rollout.restore(&sim.world().snapshot());
     rollout

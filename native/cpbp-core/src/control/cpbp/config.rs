@@ -4,6 +4,9 @@ use crate::control::{Diagnostics, PlanResult, ValueSample};
 
 /// The name C-PBP's plans give their resampling count among the diagnostics.
 pub const RESAMPLES: &str = "resamples";
+/// The name of the share of a plan's particle steps taken after the particle's lineage
+/// had fallen: what stopping fallen trajectories (`CpbpConfig::stop_fallen`) can save.
+pub const FALLEN_STEPS: &str = "fallen steps";
 
 /// Sizes and tuning of the planner; defaults are the specification's.
 #[derive(Clone, Debug, PartialEq)]
@@ -36,6 +39,11 @@ pub struct CpbpConfig {
     /// then adds by the horizon (`FrameResult::value_samples`), the data a learned
     /// cost-to-go is trained on; empty (the default) records none.
     pub record_values_after: Vec<usize>,
+    /// Stop simulating a particle once its lineage has fallen (`RolloutSystem::fallen`):
+    /// it keeps its state and each later step costs what its last did. Resampling drops
+    /// fallen particles only once the effective sample size falls below the threshold;
+    /// until then they roll on.
+    pub stop_fallen: bool,
 }
 
 /// The planners' seed unless told otherwise, the seed setting's default: the same seed,
@@ -56,6 +64,7 @@ impl Default for CpbpConfig {
             ridge: 1e-3,
             control_cost_weight: 1.0,
             record_values_after: Vec::new(),
+            stop_fallen: false,
         }
     }
 }
@@ -96,6 +105,8 @@ pub struct FrameResult {
     pub resamples: usize,
     /// Rollouts that blew up (restored and given `blowup_cost`).
     pub blowups: usize,
+    /// Share of the frame's particle steps taken after the particle's lineage had fallen.
+    pub fallen_steps: f64,
     /// The refined sequence (K·D values, within bounds), when the system has features.
     pub refined: Option<Vec<f64>>,
     /// Each final particle's belief (weights of next frame's choice of sequences).
@@ -120,7 +131,10 @@ impl FrameResult {
             blowups: self.blowups,
             // Particle 1 replays the warm start (`WarmStart`).
             warm: self.warm_started.then_some(1),
-            diagnostics: Diagnostics(vec![(RESAMPLES, self.resamples as f64)]),
+            diagnostics: Diagnostics(vec![
+                (RESAMPLES, self.resamples as f64),
+                (FALLEN_STEPS, self.fallen_steps),
+            ]),
             value_samples: self.value_samples,
         }
     }

@@ -16,6 +16,13 @@ pub(super) struct Outcome<State> {
     pub state_cost: f64,
     pub control_cost: f64,
     pub blew_up: bool,
+    /// The step's own state cost (`state_cost` without a terminal value added).
+    pub step_cost: f64,
+    /// Whether the particle had fallen by the end of the step (`RolloutSystem::fallen`).
+    pub fallen: bool,
+    /// Whether it had fallen before the step: its lineage rolled on fallen (simulated, or
+    /// carried over when `CpbpConfig::stop_fallen`).
+    pub after_fall: bool,
     /// The state's features for a cost-to-go, after a step that records them (empty
     /// otherwise: `CpbpConfig::record_values_after`).
     pub value_features: Vec<f64>,
@@ -44,6 +51,8 @@ pub(super) struct ParticleStep {
 pub(super) struct StepRecord {
     pub particles: Vec<ParticleStep>,
     pub blowups: usize,
+    /// Particles whose lineage had fallen before the step (`Outcome::after_fall`).
+    pub after_falls: usize,
     /// Whether the parents were drawn by weight (always at the first step).
     pub resampled: bool,
 }
@@ -58,6 +67,10 @@ pub(super) struct Particle<State> {
     /// Its last control and the one before: the smoothness priors' inputs.
     pub previous: Vec<f64>,
     pub before_previous: Vec<f64>,
+    /// Whether its lineage has fallen (`RolloutSystem::fallen`), and its last step's own
+    /// state cost: what a fallen particle's steps cost when it is no longer simulated.
+    pub fallen: bool,
+    pub last_step_cost: f64,
 }
 
 /// The particles between steps.
@@ -91,6 +104,8 @@ impl<State: Clone> Particles<State> {
             total: 0.0,
             previous: applied.to_vec(),
             before_previous: applied_before.to_vec(),
+            fallen: false,
+            last_step_cost: 0.0,
         };
         Self {
             all: vec![particle; n],
@@ -137,6 +152,7 @@ impl<State: Clone> Particles<State> {
         let mut record = StepRecord {
             particles: Vec::with_capacity(outcomes.len()),
             blowups: 0,
+            after_falls: 0,
             resampled,
         };
         let mut next = Vec::with_capacity(outcomes.len());
@@ -148,6 +164,7 @@ impl<State: Clone> Particles<State> {
                 old.weight * potential
             };
             record.blowups += usize::from(outcome.blew_up);
+            record.after_falls += usize::from(outcome.after_fall);
             let total = old.total + outcome.state_cost + outcome.control_cost;
             next.push(Particle {
                 state: outcome.state,
@@ -155,6 +172,8 @@ impl<State: Clone> Particles<State> {
                 total,
                 previous: outcome.control.clone(),
                 before_previous: old.previous.clone(),
+                fallen: outcome.fallen,
+                last_step_cost: outcome.step_cost,
             });
             record.particles.push(ParticleStep {
                 parent,

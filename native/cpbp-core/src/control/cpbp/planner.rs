@@ -174,6 +174,12 @@ impl CpbpPlanner {
             costs: totals,
             resamples: records.iter().skip(1).filter(|r| r.resampled).count(),
             blowups: records.iter().map(|r| r.blowups).sum(),
+            fallen_steps: records.iter().map(|r| r.after_falls).sum::<usize>() as f64
+                / records
+                    .iter()
+                    .map(|r| r.particles.len())
+                    .sum::<usize>()
+                    .max(1) as f64,
             refined,
             beliefs: end_weights,
             paths,

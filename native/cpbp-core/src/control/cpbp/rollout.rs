@@ -40,6 +40,12 @@ pub trait RolloutSystem: Send {
     fn terminal_cost(&self) -> Option<f64> {
         None
     }
+    /// Whether the last step left the system fallen past recovering (the bike on the
+    /// ground with anything but its wheels and feet): a planner may stop simulating it
+    /// (`CpbpConfig::stop_fallen`). False (the default): it never falls.
+    fn fallen(&self) -> bool {
+        false
+    }
     /// What a cost-to-go is learned from at the current state (the policy's features);
     /// empty (the default): the system records no samples for one.
     fn value_features(&self) -> Vec<f64> {

@@ -7,7 +7,7 @@ use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
 use rayon::prelude::*;
 
-use super::super::frame::{Outcome, Particles};
+use super::super::frame::{Outcome, Particle, Particles};
 use super::super::rollout::RolloutSystem;
 use super::{CpbpPlanner, Guide};
 
@@ -69,7 +69,7 @@ impl CpbpPlanner {
                 system.restore(&from.state);
                 let guide = &guides[first + j];
                 let control = self.choose_control(system, &mut rngs[j], parent, guide, k);
-                self.simulate(system, &from.state, control, parent, k)
+                self.simulate(system, from, control, parent, k)
             })
             .collect()
     }
@@ -104,22 +104,29 @@ impl CpbpPlanner {
     }
 
     /// Applies `control` at step `k` and simulates; a blow-up restores the parent's state
-    /// and costs `blowup_cost`.
+    /// and costs `blowup_cost`. A fallen parent, when `stop_fallen` asks, is not simulated:
+    /// it stays where it fell and its step costs what its last did.
     fn simulate<S: RolloutSystem>(
         &self,
         system: &mut S,
-        parent_state: &S::State,
+        from: &Particle<S::State>,
         control: Vec<f64>,
         (previous, before_previous): (&[f64], &[f64]),
         k: usize,
     ) -> Outcome<S::State> {
-        let (mut state_cost, blew_up) = match system.step(&control, k) {
-            Some(c) if c.is_finite() => (c, false),
-            _ => {
-                system.restore(parent_state);
-                (self.config.blowup_cost, true)
+        let stopped = self.config.stop_fallen && from.fallen;
+        let (step_cost, blew_up) = if stopped {
+            (from.last_step_cost, false)
+        } else {
+            match system.step(&control, k) {
+                Some(c) if c.is_finite() => (c, false),
+                _ => {
+                    system.restore(&from.state);
+                    (self.config.blowup_cost, true)
+                }
             }
         };
+        let mut state_cost = step_cost;
         // A shortened horizon's last step is costed with the rest of the longer one.
         if k + 1 == self.config.steps.max(1) && !blew_up {
             if let Some(rest) = system.terminal_cost().filter(|c| c.is_finite()) {
@@ -144,6 +151,9 @@ impl CpbpPlanner {
             control,
             state_cost,
             blew_up,
+            step_cost,
+            fallen: stopped || (!blew_up && system.fallen()),
+            after_fall: from.fallen,
             value_features,
         }
     }
