@@ -4,8 +4,9 @@ use crate::control::{Diagnostics, PlanResult, ValueSample};
 
 /// The name C-PBP's plans give their resampling count among the diagnostics.
 pub const RESAMPLES: &str = "resamples";
-/// The name of the share of a plan's particle steps taken after the particle's lineage
-/// had fallen: what stopping fallen trajectories (`CpbpConfig::stop_fallen`) can save.
+/// The name of the share of a plan's particle steps simulated after the particle's
+/// lineage had fallen: what stopping fallen trajectories could save (measured: about
+/// 0.1 %, so they are not stopped; docs/learned-controller.md).
 pub const FALLEN_STEPS: &str = "fallen steps";
 
 /// Sizes and tuning of the planner; defaults are the specification's.
@@ -39,11 +40,6 @@ pub struct CpbpConfig {
     /// then adds by the horizon (`FrameResult::value_samples`), the data a learned
     /// cost-to-go is trained on; empty (the default) records none.
     pub record_values_after: Vec<usize>,
-    /// Stop simulating a particle once its lineage has fallen (`RolloutSystem::fallen`):
-    /// it keeps its state and each later step costs what its last did. Resampling drops
-    /// fallen particles only once the effective sample size falls below the threshold;
-    /// until then they roll on.
-    pub stop_fallen: bool,
 }
 
 /// The planners' seed unless told otherwise, the seed setting's default: the same seed,
@@ -64,7 +60,6 @@ impl Default for CpbpConfig {
             ridge: 1e-3,
             control_cost_weight: 1.0,
             record_values_after: Vec::new(),
-            stop_fallen: false,
         }
     }
 }

@@ -16,12 +16,9 @@ pub(super) struct Outcome<State> {
     pub state_cost: f64,
     pub control_cost: f64,
     pub blew_up: bool,
-    /// The step's own state cost (`state_cost` without a terminal value added).
-    pub step_cost: f64,
-    /// Whether the particle had fallen by the end of the step (`RolloutSystem::fallen`).
+    /// Whether its lineage had fallen by the end of the step (`RolloutSystem::fallen`).
     pub fallen: bool,
-    /// Whether it had fallen before the step: its lineage rolled on fallen (simulated, or
-    /// carried over when `CpbpConfig::stop_fallen`).
+    /// Whether it had fallen before the step: the step was simulated after a fall.
     pub after_fall: bool,
     /// The state's features for a cost-to-go, after a step that records them (empty
     /// otherwise: `CpbpConfig::record_values_after`).
@@ -67,10 +64,8 @@ pub(super) struct Particle<State> {
     /// Its last control and the one before: the smoothness priors' inputs.
     pub previous: Vec<f64>,
     pub before_previous: Vec<f64>,
-    /// Whether its lineage has fallen (`RolloutSystem::fallen`), and its last step's own
-    /// state cost: what a fallen particle's steps cost when it is no longer simulated.
+    /// Whether its lineage has fallen (`RolloutSystem::fallen`).
     pub fallen: bool,
-    pub last_step_cost: f64,
 }
 
 /// The particles between steps.
@@ -105,7 +100,6 @@ impl<State: Clone> Particles<State> {
             previous: applied.to_vec(),
             before_previous: applied_before.to_vec(),
             fallen: false,
-            last_step_cost: 0.0,
         };
         Self {
             all: vec![particle; n],
@@ -173,7 +167,6 @@ impl<State: Clone> Particles<State> {
                 previous: outcome.control.clone(),
                 before_previous: old.previous.clone(),
                 fallen: outcome.fallen,
-                last_step_cost: outcome.step_cost,
             });
             record.particles.push(ParticleStep {
                 parent,

@@ -23,4 +23,4 @@ pub use planner::CpbpPlanner;
 pub use priors::{AppliedControls, Priors};
 pub use rollout::RolloutSystem;
 pub use sequences::shift_one_step;
-pub use spec::{COMBINED, GUIDED, MUTATION_SCALE, OPTIMIZER, PARAMETERS, STOP_FALLEN};
+pub use spec::{COMBINED, GUIDED, MUTATION_SCALE, OPTIMIZER, PARAMETERS};

@@ -41,8 +41,8 @@ pub trait RolloutSystem: Send {
         None
     }
     /// Whether the last step left the system fallen past recovering (the bike on the
-    /// ground with anything but its wheels and feet): a planner may stop simulating it
-    /// (`CpbpConfig::stop_fallen`). False (the default): it never falls.
+    /// ground with anything but its wheels and feet): C-PBP counts the steps simulated
+    /// after a fall (`FALLEN_STEPS`). False (the default): it never falls.
     fn fallen(&self) -> bool {
         false
     }

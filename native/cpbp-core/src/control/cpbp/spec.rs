@@ -20,18 +20,8 @@ pub const MUTATION_SCALE: Setting = Setting {
     ..settings::BASE
 };
 
-pub const STOP_FALLEN: Setting = Setting {
-    name: "stop_fallen",
-    label: "Stop fallen trajectories",
-    description: "C-PBP: stop simulating a trajectory once the bike in it has fallen; its \
-                  remaining steps cost what its fall did. Fallen trajectories otherwise \
-                  roll on until resampling drops them (the plans' 'fallen steps' share).",
-    default: D::Bool(false),
-    ..settings::BASE
-};
-
 /// C-PBP's own parameters (every mode's).
-pub const PARAMETERS: &[Setting] = &[MUTATION_SCALE, STOP_FALLEN];
+pub const PARAMETERS: &[Setting] = &[MUTATION_SCALE];
 
 /// C-PBP alone; trajectory 1 replays the last plan's local refinement (thesis §4.3).
 pub static OPTIMIZER: PlannerSpec = PlannerSpec {
@@ -81,7 +71,6 @@ impl Cpbp {
             refine: warm == WarmRoute::Refinement,
             control_cost_weight: config.control_cost_weight,
             record_values_after: config.record_values_after.clone(),
-            stop_fallen: config.parameters.flag(&STOP_FALLEN),
             ..CpbpConfig::default()
         };
         let priors = Priors {

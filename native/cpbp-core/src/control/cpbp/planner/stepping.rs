@@ -104,8 +104,7 @@ impl CpbpPlanner {
     }
 
     /// Applies `control` at step `k` and simulates; a blow-up restores the parent's state
-    /// and costs `blowup_cost`. A fallen parent, when `stop_fallen` asks, is not simulated:
-    /// it stays where it fell and its step costs what its last did.
+    /// and costs `blowup_cost`.
     fn simulate<S: RolloutSystem>(
         &self,
         system: &mut S,
@@ -114,19 +113,13 @@ impl CpbpPlanner {
         (previous, before_previous): (&[f64], &[f64]),
         k: usize,
     ) -> Outcome<S::State> {
-        let stopped = self.config.stop_fallen && from.fallen;
-        let (step_cost, blew_up) = if stopped {
-            (from.last_step_cost, false)
-        } else {
-            match system.step(&control, k) {
-                Some(c) if c.is_finite() => (c, false),
-                _ => {
-                    system.restore(&from.state);
-                    (self.config.blowup_cost, true)
-                }
+        let (mut state_cost, blew_up) = match system.step(&control, k) {
+            Some(c) if c.is_finite() => (c, false),
+            _ => {
+                system.restore(&from.state);
+                (self.config.blowup_cost, true)
             }
         };
-        let mut state_cost = step_cost;
         // A shortened horizon's last step is costed with the rest of the longer one.
         if k + 1 == self.config.steps.max(1) && !blew_up {
             if let Some(rest) = system.terminal_cost().filter(|c| c.is_finite()) {
@@ -151,8 +144,7 @@ impl CpbpPlanner {
             control,
             state_cost,
             blew_up,
-            step_cost,
-            fallen: stopped || (!blew_up && system.fallen()),
+            fallen: from.fallen || (!blew_up && system.fallen()),
             after_fall: from.fallen,
             value_features,
         }
