@@ -74,7 +74,7 @@ step "doc check unit tests" .venv/bin/python -m unittest doc_check.tests.test_do
 # The committed docs: every marked figure equals the rows and every reference resolves.
 step "docs against the rows and the tree" tools/doc-check
 # The scenario tool's rows and paired statistics.
-step "planner scenario unit tests" .venv/bin/python -m unittest planner_scenarios.tests.test_planner_scenarios
+step "planner scenario unit tests" .venv/bin/python -m unittest discover -s tools/planner_scenarios/tests -t tools
 # The learned controller's report tables and the upkeep of its evaluation's rows.
 step "learned tools unit tests" .venv/bin/python -m unittest discover -s tools/learned_tools/tests -t tools
 # Every GDScript file passes gdlint.

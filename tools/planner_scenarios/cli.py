@@ -13,6 +13,7 @@ from cpbp_experiment.configs import PLANNERS
 from .compare import write_comparison
 from .report import write_report
 from .rows import FIELDS, ScenarioRows
+from .sweep import settings_text, variant_folders, write_sweep
 
 PROJECT_ROOT = Path(__file__).resolve().parents[2]
 BINARY = PROJECT_ROOT / "native" / "target" / "release" / "cpbp-scenarios"
@@ -27,6 +28,8 @@ def main(argv: list[str] | None = None) -> int:
     out.mkdir(parents=True, exist_ok=True)
     rows = ScenarioRows(out / ROWS)
     try:
+        if args.command == "sweep":
+            return sweep(out, Path(args.variants) if args.variants else out / "horizon")
         rows.load()
         settings = _settings(args, out, rows)
         if args.command in ("run", "all"):
@@ -44,6 +47,20 @@ def main(argv: list[str] | None = None) -> int:
     except (ValueError, OSError, subprocess.CalledProcessError) as error:
         print(f"planner-scenarios: {error}", file=sys.stderr)
         return 2
+    return 0
+
+
+def sweep(out: Path, under: Path) -> int:
+    """OUT's table against each folder of rows under `under`, into `under`/sweep.md."""
+    folders = variant_folders(under)
+    if not folders:
+        print(f"planner-scenarios: no folder of rows under {under}", file=sys.stderr)
+        return 2
+    write_sweep(ScenarioRows(out / ROWS).load(),
+                [(settings_text(f), ScenarioRows(f / ROWS).load()) for f in folders],
+                _table_name(out), under / "sweep.md")
+    print(f"planner-scenarios: {under / 'sweep.md'} holds {len(folders)} folder(s) against "
+          f"{out}", file=sys.stderr)
     return 0
 
 
@@ -89,7 +106,9 @@ def _parser() -> argparse.ArgumentParser:
                     "brakes: brake60, brake90, brake-bend; the test level's "
                     "logs: logs), paired by seed. Rows are "
                     "appended to OUT/scenarios.csv as each ride ends; rerunning resumes.")
-    parser.add_argument("command", nargs="?", choices=("all", "run", "report"), default="all")
+    parser.add_argument("command", nargs="?", choices=("all", "run", "report", "sweep"),
+                        default="all", help="sweep: OUT's table against each folder of "
+                        "rows under --variants, ridden with other settings (sweep.md there)")
     parser.add_argument("--out", default="docs/scenarios", help="directory of scenarios.csv "
                         "and the report (default docs/scenarios)")
     parser.add_argument("--controllers", default=",".join(PLANNERS),
@@ -112,6 +131,9 @@ def _parser() -> argparse.ArgumentParser:
                              "folder holds rows of one set of settings only")
     parser.add_argument("--compare", default=None, help="report: another table's directory "
                         "(another bike's), compared side by side in OUT/comparison.md")
+    parser.add_argument("--variants", default=None, help="sweep: the folder whose "
+                        "subfolders hold the rows ridden with other settings (default "
+                        "OUT/horizon)")
     return parser
 
 

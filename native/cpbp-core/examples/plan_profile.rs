@@ -1,8 +1,9 @@
 //! Plans over and over for a profiler (docs/benchmarks-history.md,
 //! "where a plan's time goes"):
 //! `perf record -F 2000 native/target/release/examples/plan_profile [N] [threads] [plans]
-//! [physics model]`. Combined mode, riding off towards 15 km/h on flat ground, rolling out
-//! in the physics model's rollout physics (classic unless named).
+//! [physics model] [horizon s]`. Combined mode, riding off towards 15 km/h on flat ground,
+//! rolling out in the physics model's rollout physics (classic unless named), over the
+//! default horizon unless one is given.
 
 use std::sync::Arc;
 
@@ -53,12 +54,15 @@ fn main() {
         sim.set_controls(controls);
         sim.step();
     }
-    let config = PlanningConfig {
+    let mut config = PlanningConfig {
         trajectories: n,
         threads,
         ..PlanningConfig::default()
     }
     .rolling_out_in(physics);
+    if let Some(horizon) = arguments.get(4) {
+        config.horizon = horizon.parse().expect("a horizon in seconds");
+    }
     let mut optimizer = PlanningSession::new(&sim, &cpbp::COMBINED, config);
     let started = std::time::Instant::now();
     for _ in 0..plans {
