@@ -26,10 +26,20 @@ class Pairing:
     goals_after: int
     only_after: int
     only_before: int
+    # Mean planning time per control step over the paired attempts (0 for arcade):
+    # timed as each row was ridden, so a loaded machine's figure, not a cost ratio.
+    planning_before: float = 0.0
+    planning_after: float = 0.0
 
     @property
     def p(self) -> float:
         return mcnemar_exact(self.only_after, self.only_before)
+
+    @property
+    def planning_ratio(self) -> str:
+        if self.planning_before <= 0.0:
+            return "–"
+        return f"{self.planning_after / self.planning_before:.2f}"
 
 
 @dataclass(frozen=True)
@@ -57,13 +67,13 @@ class Comparison:
     def table(self) -> str:
         lines = [
             "| configuration | pairs | goals before | goals after | only after | only before "
-            "| McNemar p |",
-            "|---|---|---|---|---|---|---|",
+            "| McNemar p | planning after ÷ before |",
+            "|---|---|---|---|---|---|---|---|",
         ]
         for p in self.pairings:
             lines.append(
                 f"| {p.config.label} | {p.pairs} | {p.goals_before} | {p.goals_after} | "
-                f"{p.only_after} | {p.only_before} | {_p(p.p)} |"
+                f"{p.only_after} | {p.only_before} | {_p(p.p)} | {p.planning_ratio} |"
             )
         lines += [
             "",
@@ -79,6 +89,8 @@ def compare(before: list[Attempt], after: list[Attempt],
     """Pairs every configuration found in both (or those `chosen`), attempt by attempt."""
     goal_before = {(a.config, a.attempt): a.outcome == "goal" for a in before}
     goal_after = {(a.config, a.attempt): a.outcome == "goal" for a in after}
+    planned_before = {(a.config, a.attempt): a.planning_ms for a in before}
+    planned_after = {(a.config, a.attempt): a.planning_ms for a in after}
     configs = {c for (c, _) in goal_before} & {c for (c, _) in goal_after}
     if chosen is not None:
         configs &= chosen
@@ -95,8 +107,14 @@ def compare(before: list[Attempt], after: list[Attempt],
             goals_after=sum(now),
             only_after=sum(n and not w for w, n in zip(was, now)),
             only_before=sum(w and not n for w, n in zip(was, now)),
+            planning_before=_mean([planned_before[(config, i)] for i in shared]),
+            planning_after=_mean([planned_after[(config, i)] for i in shared]),
         ))
     return Comparison(pairings)
+
+
+def _mean(values: list[float]) -> float:
+    return sum(values) / len(values) if values else 0.0
 
 
 def _p(p: float) -> str:

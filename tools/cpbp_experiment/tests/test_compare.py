@@ -50,8 +50,19 @@ class CompareTest(unittest.TestCase):
         self.assertAlmostEqual(compare(good, bad).p, 0.03125)
         self.assertFalse(compare(bad, good).worse)
         self.assertIn("**worse after the change**", compare(good, bad).table())
-        self.assertIn("| combined-5:exact @ 20 km/h | 6 | 6 | 0 | 0 | 6 | **0.031** |",
+        self.assertIn("| combined-5:exact @ 20 km/h | 6 | 6 | 0 | 0 | 6 | **0.031** | 1.00 |",
                       compare(good, bad).table())
+
+    def test_the_planning_ratio_is_over_the_paired_attempts(self):
+        before = rides(COMBINED, "gggg")
+        after = [Attempt(a.config, a.attempt, a.seed, a.outcome, 7.0, 36.0, 210,
+                         6.0 if a.attempt < 2 else 9.0, 3000.0)
+                 for a in rides(COMBINED, "ggg", first=1)]
+        # Attempts 1-3 pair: after plans 6, 9, 9 ms against 12 before: 8 / 12.
+        pairing = compare(before, after).pairings[0]
+        self.assertEqual(pairing.planning_ratio, "0.67")
+        self.assertEqual(compare(rides(ARCADE, "g"), rides(ARCADE, "g"))
+                         .pairings[0].planning_ratio, "1.00")
 
     def test_the_command_exits_1_when_worse_and_says_what_is_missing(self):
         with tempfile.TemporaryDirectory() as directory:
