@@ -264,6 +264,8 @@ fn clock(seconds: f64) -> String {
 }
 
 #[cfg(test)]
+mod family_tests;
+#[cfg(test)]
 mod tests;
 #[cfg(test)]
 mod value_tests;

@@ -8,7 +8,7 @@ use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::{schema, ControllerKind};
 use cpbp_core::settings::{Owner, SettingValues};
 
-use super::{scenario_names, MANOEUVRES};
+use super::{manoeuvres, scenario_names};
 
 pub(crate) struct Args {
     pub controllers: Vec<ControllerKind>,
@@ -97,7 +97,7 @@ pub(crate) fn parse(arguments: Vec<String>) -> Result<Args, String> {
     let scenarios = match value("--scenarios")?.as_deref() {
         Some("all") => names.join(","),
         Some(listed) => listed.to_string(),
-        None => MANOEUVRES.join(","),
+        None => manoeuvres::SCENARIOS.join(","),
     };
     let scenarios = scenarios
         .split(',')
