@@ -10,6 +10,7 @@
 
 mod auto_n;
 mod fidelity;
+mod handover;
 mod horizon;
 mod learned;
 mod planning;
@@ -17,17 +18,16 @@ mod planning;
 use planning::{planning_ms, planning_table};
 
 use std::sync::{Arc, OnceLock};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use cpbp_core::bike::{
     take_bike_argument, BikeParams, Controls, DriveInput, Placement, REFERENCE_BIKE,
 };
 use cpbp_core::control::learned::{project_policy, project_value, LoadedPolicy, LoadedValue};
-use cpbp_core::control::PlanWait;
 use cpbp_core::grounds::RollingBumps;
 use cpbp_core::ode::{Mass, World};
 use cpbp_core::physics::PhysicsModel;
-use cpbp_core::ride::{ControllerKind, Intent, Ride};
+use cpbp_core::ride::ControllerKind;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
 use cpbp_core::terrain::Terrain;
 use glam::{DQuat, DVec3};
@@ -140,25 +140,7 @@ fn main() {
         fidelity::rollout_fidelity(model, &bump_field());
     }
 
-    println!();
-    println!(
-        "Hand-over ({} physics): planning thread, game loop paced at 30 control steps/s, 6 s riding:",
-        PhysicsModel::default().name()
-    );
-    println!(
-        "{:<14} {:>14} {:>14} {:>14} {:>10}",
-        "trajectories", "plan (ms)", "mean wait", "max wait", "late"
-    );
-    for n in [5, 15, 24, 32, 48] {
-        let h = handover(&Arc::new(Terrain::flat()), n);
-        println!(
-            "{n:<14} {:>14.1} {:>11.2} ms {:>11.2} ms {:>9.0}%",
-            h.0,
-            h.1,
-            h.2,
-            h.3 * 100.0
-        );
-    }
+    handover::handover_table("", [5, 15, 24, 32, 48], |_| {});
     auto_n::under_load();
 }
 
@@ -209,50 +191,6 @@ fn planners_side_by_side() {
         };
         println!("{:<14} {named}", kind.name());
     }
-}
-
-/// Rides 6 s in real time with the planner on its own thread, waiting at most 10 ms at a
-/// boundary: (mean planning ms, mean wait ms, max wait ms, share of late boundaries).
-fn handover(terrain: &Arc<Terrain>, n: usize) -> (f64, f64, f64, f64) {
-    // The game's ride: the combined controller behind the one controller interface.
-    let mut ride = Ride::new(
-        rolling_bike(terrain.clone(), PhysicsModel::default()),
-        ControllerKind::COMBINED,
-    );
-    ride.planner.planning.trajectories = n;
-    // At this N throughout: the automatic choice would move it.
-    ride.planner.auto_trajectories = false;
-    ride.planner.wait = PlanWait::AtMost(Duration::from_millis(10));
-    ride.set_intent(Intent {
-        drive: DriveInput {
-            throttle: 1.0,
-            brake: 0.0,
-            max_speed: 15.0 / 3.6,
-        },
-        ..Intent::default()
-    });
-    let period = Duration::from_secs_f64(1.0 / 30.0);
-    let mut boundary = Instant::now();
-    let (mut planning, mut plans, mut last_plan_step) = (0.0, 0, None);
-    for _ in 0..180 {
-        ride.step();
-        if let Some(plan) = ride.plan() {
-            if last_plan_step != Some(plan.step) {
-                last_plan_step = Some(plan.step);
-                planning += plan.planning_ms;
-                plans += 1;
-            }
-        }
-        boundary += period;
-        std::thread::sleep(boundary.saturating_duration_since(Instant::now()));
-    }
-    let stats = ride.handover().unwrap_or_default();
-    (
-        planning / plans.max(1) as f64,
-        stats.mean_wait_ms(),
-        stats.max_wait_ms,
-        stats.late as f64 / stats.boundaries.max(1) as f64,
-    )
 }
 
 fn sphere_step_cost(bodies: usize, steps: usize) -> f64 {
