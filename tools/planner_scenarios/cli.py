@@ -29,7 +29,8 @@ def main(argv: list[str] | None = None) -> int:
     rows = ScenarioRows(out / ROWS)
     try:
         if args.command == "sweep":
-            return sweep(out, Path(args.variants) if args.variants else out / "horizon")
+            return sweep(out, Path(args.variants) if args.variants else out / "horizon",
+                         args.base_count)
         rows.load()
         settings = _settings(args, out, rows)
         if args.command in ("run", "all"):
@@ -50,15 +51,16 @@ def main(argv: list[str] | None = None) -> int:
     return 0
 
 
-def sweep(out: Path, under: Path) -> int:
-    """OUT's table against each folder of rows under `under`, into `under`/sweep.md."""
+def sweep(out: Path, under: Path, base_count: int | None = None) -> int:
+    """OUT's table against each folder of rows under `under`, into `under`/sweep.md (each
+    folder's rides against OUT's at `base_count` trajectories when it is given)."""
     folders = variant_folders(under)
     if not folders:
         print(f"planner-scenarios: no folder of rows under {under}", file=sys.stderr)
         return 2
     write_sweep(ScenarioRows(out / ROWS).load(),
                 [(settings_text(f), ScenarioRows(f / ROWS).load()) for f in folders],
-                _table_name(out), under / "sweep.md")
+                _table_name(out), under / "sweep.md", base_count)
     print(f"planner-scenarios: {under / 'sweep.md'} holds {len(folders)} folder(s) against "
           f"{out}", file=sys.stderr)
     return 0
@@ -134,6 +136,9 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--variants", default=None, help="sweep: the folder whose "
                         "subfolders hold the rows ridden with other settings (default "
                         "OUT/horizon)")
+    parser.add_argument("--base-count", type=int, default=None, help="sweep: hold every "
+                        "folder's rides against OUT's at this N, whatever N they rode "
+                        "(fewer trajectories against the defaults' five)")
     return parser
 
 

@@ -50,8 +50,14 @@ def _cell(found: Pairing, falls_rejects: bool, metric_rejects: bool, p: float) -
 
 
 def sweep_rows(base: list[dict], variant: list[dict], settings: str,
-               scenarios: list[str]) -> list[str]:
-    """The markdown rows of one folder: one per planner and N it shares with the base."""
+               scenarios: list[str], base_count: int | None = None) -> list[str]:
+    """The markdown rows of one folder: one per planner and N it shares with the base;
+    with `base_count`, every N of the folder's is held against the base's rides at that N
+    (fewer trajectories against the defaults' five)."""
+    ridden = {}
+    if base_count is not None:
+        ridden = {(r["controller"], base_count): r["trajectories"] for r in variant}
+        variant = [{**r, "trajectories": base_count} for r in variant]
     found = pairings(base, variant)
     if not found:
         return []
@@ -71,14 +77,17 @@ def sweep_rows(base: list[dict], variant: list[dict], settings: str,
         cells = {found[i].key[0]: _cell(found[i], reject[2 * i], reject[2 * i + 1],
                                         adjusted[2 * i + 1]) for i in indices}
         seeds = min(found[i].seeds for i in indices)
-        rows.append(f"| {settings} | {controller}-{n} | {seeds} | {ratio} | "
+        label = f"{controller}-{ridden.get((controller, n), n)}"
+        if ridden.get((controller, n), n) != n:
+            label += f" (against {controller}-{n})"
+        rows.append(f"| {settings} | {label} | {seeds} | {ratio} | "
                     f"{falls[0]} → {falls[1]} | {differing} of {2 * len(indices)} | "
                     + " | ".join(cells.get(s, "–") for s in scenarios) + " |")
     return rows
 
 
 def write_sweep(base_rows: list[dict], folders: list[tuple[str, list[dict]]], bike: str,
-                path: Path) -> None:
+                path: Path, base_count: int | None = None) -> None:
     """The page: the scenarios every folder shares with the base, as columns."""
     ridden = {r["scenario"] for _, rows in folders for r in rows}
     scenarios = [s for s in METRICS if s in ridden and any(r["scenario"] == s
@@ -107,5 +116,5 @@ def write_sweep(base_rows: list[dict], folders: list[tuple[str, list[dict]]], bi
               "these | beyond chance | " + " | ".join(scenarios) + " |",
               "|---" * (6 + len(scenarios)) + "|"]
     for settings, rows in folders:
-        lines += sweep_rows(base_rows, rows, settings, scenarios)
+        lines += sweep_rows(base_rows, rows, settings, scenarios, base_count)
     path.write_text("\n".join(lines) + "\n", "utf-8")

@@ -7,21 +7,21 @@ from planner_scenarios.cli import main
 from planner_scenarios.rows import ScenarioRows
 
 
-def line(scenario, seed, fell, metric, planning_ms):
-    return (f"{scenario},combined,5,{seed},exact,{'true' if fell else 'false'},{metric},"
+def line(scenario, seed, fell, metric, planning_ms, n=5):
+    return (f"{scenario},combined,{n},{seed},exact,{'true' if fell else 'false'},{metric},"
             f"{planning_ms},")
 
 
 def ride(folder: Path, slalom_shift: float, push_falls: int, planning_ms: float,
-         settings: dict | None = None) -> None:
+         settings: dict | None = None, n: int = 5) -> None:
     """Ten seeds of slalom and push; the slalom's error shifted, the first seeds of the
     push fallen, every ride planned in `planning_ms`."""
     folder.mkdir(parents=True)
     rows = ScenarioRows(folder / "scenarios.csv")
     for seed in range(10):
         wobble = 0.01 * ((seed * 7) % 5)
-        rows.append(line("slalom", seed, False, 10.0 + slalom_shift + wobble, planning_ms))
-        rows.append(line("push", seed, seed < push_falls, 12.0 + wobble, planning_ms))
+        rows.append(line("slalom", seed, False, 10.0 + slalom_shift + wobble, planning_ms, n))
+        rows.append(line("push", seed, seed < push_falls, 12.0 + wobble, planning_ms, n))
     if settings:
         (folder / "settings.json").write_text(json.dumps(settings))
 
@@ -47,6 +47,20 @@ class SweepTest(unittest.TestCase):
         self.assertIn("| 0.70 | 0 → 2 | 0 of 4 |", value)
         self.assertIn(", falls 0→2", value)
         self.assertNotIn("**falls", value)
+
+    def test_fewer_trajectories_are_held_against_the_defaults_five_when_asked(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            base = Path(tmp) / "bike"
+            ride(base, 0.0, 0, 10.0)
+            ride(base / "horizon" / "n4", 0.0, 0, 8.0, n=4)
+            self.assertEqual(main(["sweep", "--out", str(base)]), 0)
+            alone = (base / "horizon" / "sweep.md").read_text()
+            self.assertEqual(main(["sweep", "--out", str(base), "--base-count", "5"]), 0)
+            against = (base / "horizon" / "sweep.md").read_text()
+        # Without it N = 4 has nothing to pair with; with it, the five's rides.
+        self.assertNotIn("| combined-4", alone)
+        self.assertIn("| combined-4 (against combined-5) | 10 | 0.80 | 0 → 0 | 0 of 4 |",
+                      against)
 
     def test_no_folder_of_rows_is_an_error_not_an_empty_page(self):
         with tempfile.TemporaryDirectory() as tmp:
