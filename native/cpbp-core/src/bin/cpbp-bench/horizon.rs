@@ -19,10 +19,14 @@ const HORIZONS: [f64; 4] = [1.2, 0.9, 0.6, 0.4];
 /// keeps up at the whole horizon up to N = 15 on this 2-core VM).
 const HANDOVER_COUNTS: [usize; 3] = [24, 32, 48];
 /// The planners and trajectory counts whose cost the targets name.
-const RIDERS: [(ControllerKind, usize); 3] = [
+const RIDERS: [(ControllerKind, usize); 5] = [
     (ControllerKind::COMBINED, 5),
     (ControllerKind::GUIDED, 5),
     (ControllerKind::COMBINED, 15),
+    // Four split evenly over two threads where five leave one thread a third of a plan
+    // alone: the count to try next at the short horizons.
+    (ControllerKind::COMBINED, 4),
+    (ControllerKind::GUIDED, 4),
 ];
 
 /// Prints the table: ms per control step on 2 threads and, in brackets, over combined
