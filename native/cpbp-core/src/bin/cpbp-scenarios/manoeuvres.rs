@@ -15,7 +15,7 @@ use cpbp_core::bike::DriveInput;
 use cpbp_core::ride::{Intent, Ride};
 use glam::DVec3;
 
-use super::{draw, fall_cause, mean_planning_ms, new_ride, Outcome, Rider, STEPS_PER_SECOND};
+use super::{draw, new_ride, Outcome, Rider, STEPS_PER_SECOND};
 
 pub const SCENARIOS: [&str; 6] = ["turn", "carve", "slalom", "reversals", "push", "walk"];
 
@@ -136,11 +136,5 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
             .to_degrees(),
         _ => samples.iter().sum::<f64>() / samples.len() as f64,
     };
-    Outcome {
-        fell: ride.sim().crashed().is_some(),
-        fall_cause: fall_cause(&ride),
-        metric,
-        planning_ms: mean_planning_ms(&planning),
-        measures: Vec::new(),
-    }
+    Outcome::of_ride(&ride, metric, &planning)
 }

@@ -15,6 +15,20 @@ pub(crate) struct Outcome {
     pub measures: Vec<(&'static str, f64)>,
 }
 
+impl Outcome {
+    /// The ride as it ended: fallen or not, and why, with `metric` and the mean of its
+    /// plans' times; nothing else measured.
+    pub(crate) fn of_ride(ride: &Ride, metric: f64, planning: &[f64]) -> Self {
+        Self {
+            fell: ride.sim().crashed().is_some(),
+            fall_cause: fall_cause(ride),
+            metric,
+            planning_ms: mean_planning_ms(planning),
+            measures: Vec::new(),
+        }
+    }
+}
+
 /// What brought the ride's bike down, if it fell (`Outcome::fall_cause`).
 pub(crate) fn fall_cause(ride: &Ride) -> Option<String> {
     ride.sim().crashed().map(|crash| crash.describe())

@@ -16,7 +16,7 @@
 use cpbp_core::control::TurnIntent;
 use cpbp_core::ride::{Intent, Ride};
 
-use super::{fall_cause, mean_planning_ms, new_ride, Outcome, Rider, STEPS_PER_SECOND};
+use super::{new_ride, Outcome, Rider, STEPS_PER_SECOND};
 
 pub const SCENARIOS: [&str; 8] = [
     "stop10",
@@ -89,11 +89,5 @@ pub fn ride(scenario: &str, rider: Rider) -> Outcome {
             crept.abs()
         }
     };
-    Outcome {
-        fell: ride.sim().crashed().is_some(),
-        fall_cause: fall_cause(&ride),
-        metric,
-        planning_ms: mean_planning_ms(&planning),
-        measures: Vec::new(),
-    }
+    Outcome::of_ride(&ride, metric, &planning)
 }
