@@ -10,7 +10,7 @@ from pathlib import Path
 
 from . import report
 from .document import PLATFORMS, RESULTS, TIMING, write_report
-from .compare import compare
+from .compare import compare, held_at
 from .bikes import Bike
 from .configs import (THESIS_CONTROLLERS, THESIS_PLANNERS, THESIS_SPEEDS, TIMING_COUNTS, Config,
                       display_order, parse_attempts, parse_controllers, parse_counts,
@@ -145,6 +145,9 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--before", default=None,
                         help="compare: the directory of the results made before a change "
                         "(its results.csv); exits 1 when OUT is significantly worse")
+    parser.add_argument("--before-count", type=int, default=None,
+                        help="compare: pair OUT's planners with the rows made before at "
+                        "this N, whatever N they rode (fewer trajectories against five)")
     return parser
 
 
@@ -268,6 +271,8 @@ def compare_with(args: argparse.Namespace, out: Path) -> int:
         raise ResultsError(f"{before_path} does not exist")
     before = ResultsFile(before_path).load()
     after = ResultsFile(out / RESULTS).load()
+    if args.before_count is not None:
+        after = held_at(after, args.before_count)
     configs = {a.config for a in after}
     chosen = {c for c in configs
               if (args.named_speeds is None or c.speed_kmh in args.named_speeds)
@@ -276,7 +281,9 @@ def compare_with(args: argparse.Namespace, out: Path) -> int:
     if not comparison.pairings:
         raise ResultsError(f"{before_path} and {out / RESULTS} share no configuration "
                            "(with the --speeds and --controllers given)")
-    print(f"Before: {before_path}; after: {out / RESULTS}.\n")
+    held = ("" if args.before_count is None else
+            f" (its planners' rows against N = {args.before_count} before, whatever their N)")
+    print(f"Before: {before_path}; after: {out / RESULTS}{held}.\n")
     print(comparison.table())
     return 1 if comparison.worse else 0
 

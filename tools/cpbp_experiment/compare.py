@@ -6,7 +6,7 @@ controller change is held against the results committed before it (docs/experime
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from .configs import Config, display_order
 from .results import Attempt
@@ -111,6 +111,15 @@ def compare(before: list[Attempt], after: list[Attempt],
             planning_after=_mean([planned_after[(config, i)] for i in shared]),
         ))
     return Comparison(pairings)
+
+
+def held_at(attempts: list[Attempt], trajectories: int) -> list[Attempt]:
+    """The planners' attempts as if ridden with `trajectories`, so that they pair with
+    rows made at that N (fewer trajectories held against the protocol's five); arcade's
+    and learned's stay as they are."""
+    return [replace(a, config=replace(a.config, controller=replace(
+                a.config.controller, trajectories=trajectories)))
+            if a.config.controller.plans else a for a in attempts]
 
 
 def _mean(values: list[float]) -> float:

@@ -5,7 +5,7 @@ import unittest
 from pathlib import Path
 
 from cpbp_experiment import cli
-from cpbp_experiment.compare import compare
+from cpbp_experiment.compare import compare, held_at
 from cpbp_experiment.configs import Config, Controller
 from cpbp_experiment.results import Attempt, ResultsFile
 
@@ -63,6 +63,28 @@ class CompareTest(unittest.TestCase):
         self.assertEqual(pairing.planning_ratio, "0.67")
         self.assertEqual(compare(rides(ARCADE, "g"), rides(ARCADE, "g"))
                          .pairings[0].planning_ratio, "1.00")
+
+    def test_fewer_trajectories_pair_with_the_five_when_asked(self):
+        four = Config(20, Controller("combined", 4, "exact"))
+        after = rides(four, "ggf") + rides(ARCADE, "g")
+        self.assertEqual(compare(rides(COMBINED, "ggg"), after).pairings, [])
+        held = compare(rides(COMBINED, "ggg") + rides(ARCADE, "g"), held_at(after, 5))
+        self.assertEqual([p.config for p in held.pairings], [ARCADE, COMBINED])
+        self.assertEqual((held.pairings[1].only_after, held.pairings[1].only_before), (0, 1))
+        with tempfile.TemporaryDirectory() as directory:
+            before_dir, after_dir = Path(directory, "before"), Path(directory, "after")
+            for folder, attempts in ((before_dir, rides(COMBINED, "ggg")), (after_dir, after)):
+                folder.mkdir()
+                results = ResultsFile(folder / "results.csv")
+                for attempt in attempts:
+                    results.append(attempt)
+            printed = io.StringIO()
+            with contextlib.redirect_stdout(printed):
+                self.assertEqual(cli.main(["compare", "--out", str(after_dir), "--before",
+                                           str(before_dir), "--before-count", "5"]), 0)
+            self.assertIn("against N = 5 before", printed.getvalue())
+            self.assertIn("| combined-5:exact @ 20 km/h | 3 | 3 | 2 | 0 | 1 |",
+                          printed.getvalue())
 
     def test_the_command_exits_1_when_worse_and_says_what_is_missing(self):
         with tempfile.TemporaryDirectory() as directory:
