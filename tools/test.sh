@@ -70,7 +70,7 @@ step "experiment unit tests" .venv/bin/python -m unittest discover -s tools/cpbp
 step "sound check unit tests" .venv/bin/python -m unittest sound_check.tests.test_sound_check
 # The doc check itself, on made-up rows: a figure changed by hand fails, a missing file,
 # heading or section fails.
-step "doc check unit tests" .venv/bin/python -m unittest doc_check.tests.test_doc_check
+step "doc check unit tests" .venv/bin/python -m unittest discover -s tools/doc_check/tests -t tools
 # The committed docs: every marked figure equals the rows and every reference resolves.
 step "docs against the rows and the tree" tools/doc-check
 # The scenario tool's rows and paired statistics.

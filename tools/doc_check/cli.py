@@ -9,7 +9,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from . import experiment_figures, markers, project_figures, references, scenario_figures, tables
+from . import (experiment_figures, markers, project_figures, references, scenario_figures,
+               sweep_figures, tables)
 
 ROOT = Path(__file__).resolve().parents[2]
 EXPERIMENT = Path("docs/experiment")
@@ -20,6 +21,7 @@ def registry(root: Path) -> tuple[dict, dict]:
     experiment = experiment_figures.ExperimentRows(root / EXPERIMENT)
     figures = experiment_figures.figures(experiment)
     figures.update(scenario_figures.figures(scenario_figures.ScenarioRows(root / SCENARIOS)))
+    figures.update(sweep_figures.figures((root / SCENARIOS).parent))
     figures.update(project_figures.figures(root))
     return figures, tables.tables(experiment, root / SCENARIOS)
 

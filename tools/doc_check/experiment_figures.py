@@ -129,11 +129,14 @@ def _bike_split(rows: ExperimentRows, first: str, second: str, speed: str) -> tu
     """Two bikes' runs (`street_390/arcade`, a folder under docs/experiment and a
     controller; the folder may be a bike's superseded rows,
     `sport_600/superseded/before-wrists-follow/arcade`) paired attempt by attempt at a
-    speed: the tries only the first reached the goal in, and those only the second did."""
+    speed (or speeds, `10-25`, each attempt paired with the same attempt at its speed):
+    the tries only the first reached the goal in, and those only the second did. The folder
+    may be a run with other planner settings
+    (`dirt_125/horizon/value-0.6-n4/combined-4`)."""
     outcomes = []
     for rider in (first, second):
         folder, _, controller = rider.rpartition("/")
-        outcomes.append({a.attempt: a.outcome == "goal"
+        outcomes.append({(a.config.speed_kmh, a.attempt): a.outcome == "goal"
                          for a in rows.bike(folder).select(controller, speed)})
     shared = outcomes[0].keys() & outcomes[1].keys()
     return (sum(outcomes[0][i] and not outcomes[1][i] for i in shared),
@@ -143,6 +146,10 @@ def _bike_split(rows: ExperimentRows, first: str, second: str, speed: str) -> tu
 def figures(rows: ExperimentRows) -> dict[str, Figure]:
     def chosen(c: str, s: str = "all") -> tuple[int, int]:
         attempts = rows.select(c, s)
+        return _goals(attempts), len(attempts)
+
+    def bike_chosen(b: str, c: str, s: str = "all") -> tuple[int, int]:
+        attempts = rows.bike(b).select(c, s)
         return _goals(attempts), len(attempts)
 
     def goals(c: str, s: str = "all") -> str:
@@ -215,8 +222,9 @@ def figures(rows: ExperimentRows) -> dict[str, Figure]:
         "real-time-n": Figure(rows.real_time_count, COUNT),
         # Another bike's run (docs/experiment/<folder>): "149/200" and, paired with a
         # second bike's on the same attempts, "50 to 0" and its exact McNemar p.
-        "bike-cell": Figure(lambda b, c, s: "{}/{}".format(
-            *(lambda a: (_goals(a), len(a)))(rows.bike(b).select(c, s))), r"\d+/\d+"),
+        "bike-cell": Figure(lambda b, c, s: "{}/{}".format(*bike_chosen(b, c, s)), r"\d+/\d+"),
+        "bike-goals": Figure(lambda b, c, s="all": "{} of {}".format(
+            *map(count, bike_chosen(b, c, s))), f"{COUNT} of {COUNT}"),
         "bike-split": Figure(lambda a, b, s: "{} to {}".format(*_bike_split(rows, a, b, s)),
                              f"{COUNT} to {COUNT}"),
         "bike-p": Figure(lambda a, b, s: format_p(mcnemar_exact(*_bike_split(rows, a, b, s))),

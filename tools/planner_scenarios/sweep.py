@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 import math
 from collections import defaultdict
+from dataclasses import dataclass
 from pathlib import Path
 
 from cpbp_experiment.stats import ALPHA, holm
@@ -49,10 +50,34 @@ def _cell(found: Pairing, falls_rejects: bool, metric_rejects: bool, p: float) -
     return text
 
 
-def sweep_rows(base: list[dict], variant: list[dict], settings: str,
-               scenarios: list[str], base_count: int | None = None) -> list[str]:
-    """The markdown rows of one folder: one per planner and N it shares with the base;
-    with `base_count`, every N of the folder's is held against the base's rides at that N
+@dataclass(frozen=True)
+class RiderSweep:
+    """One planner of one folder held against the defaults: what the sweep page's row
+    says, and what the docs quote from it (doc-check's `sweep-*` figures)."""
+
+    controller: str
+    against: int      # the defaults' N its rides are paired with
+    ridden: int       # the N the folder rode (fewer with `base_count`)
+    seeds: int
+    planning_ratio: float  # geometric mean over the scenarios; NaN where untimed
+    falls: tuple[int, int]  # defaults, these settings, over every scenario
+    differing: int    # tests beyond chance after Holm over the folder's
+    tests: int
+    shifts: dict[str, float]  # scenario → mean paired difference (these − defaults)
+    cells: dict[str, str]     # scenario → the page's cell
+
+    @property
+    def label(self) -> str:
+        text = f"{self.controller}-{self.ridden}"
+        if self.ridden != self.against:
+            text += f" (against {self.controller}-{self.against})"
+        return text
+
+
+def folder_sweep(base: list[dict], variant: list[dict],
+                 base_count: int | None = None) -> list[RiderSweep]:
+    """One folder's planners against the base's table, Holm over the folder's tests; with
+    `base_count`, every N of the folder's is held against the base's rides at that N
     (fewer trajectories against the defaults' five)."""
     ridden = {}
     if base_count is not None:
@@ -66,23 +91,37 @@ def sweep_rows(base: list[dict], variant: list[dict], settings: str,
     by_rider: dict[tuple, list[int]] = defaultdict(list)
     for i, f in enumerate(found):
         by_rider[(f.key[1], f.key[2])].append(i)
-    rows = []
+    riders = []
     for (controller, n), indices in by_rider.items():
         planning = [found[i].planning_ratio for i in indices
                     if not math.isnan(found[i].planning_ratio)]
-        ratio = (f"{math.exp(sum(map(math.log, planning)) / len(planning)):.2f}"
-                 if planning else "–")
-        falls = [sum(found[i].falls[side] for i in indices) for side in (0, 1)]
-        differing = sum(reject[2 * i] + reject[2 * i + 1] for i in indices)
-        cells = {found[i].key[0]: _cell(found[i], reject[2 * i], reject[2 * i + 1],
-                                        adjusted[2 * i + 1]) for i in indices}
-        seeds = min(found[i].seeds for i in indices)
-        label = f"{controller}-{ridden.get((controller, n), n)}"
-        if ridden.get((controller, n), n) != n:
-            label += f" (against {controller}-{n})"
-        rows.append(f"| {settings} | {label} | {seeds} | {ratio} | "
-                    f"{falls[0]} → {falls[1]} | {differing} of {2 * len(indices)} | "
-                    + " | ".join(cells.get(s, "–") for s in scenarios) + " |")
+        ratio = (math.exp(sum(map(math.log, planning)) / len(planning)) if planning
+                 else math.nan)
+        shifts = {}
+        for i in indices:
+            difference = paired_difference(found[i].up[1], found[i].up[0])
+            shifts[found[i].key[0]] = difference.mean if difference.n else math.nan
+        riders.append(RiderSweep(
+            controller=controller, against=n, ridden=ridden.get((controller, n), n),
+            seeds=min(found[i].seeds for i in indices), planning_ratio=ratio,
+            falls=tuple(sum(found[i].falls[side] for i in indices) for side in (0, 1)),
+            differing=sum(reject[2 * i] + reject[2 * i + 1] for i in indices),
+            tests=2 * len(indices), shifts=shifts,
+            cells={found[i].key[0]: _cell(found[i], reject[2 * i], reject[2 * i + 1],
+                                          adjusted[2 * i + 1]) for i in indices}))
+    return riders
+
+
+def sweep_rows(base: list[dict], variant: list[dict], settings: str,
+               scenarios: list[str], base_count: int | None = None) -> list[str]:
+    """The markdown rows of one folder: one per planner and N it shares with the base."""
+    rows = []
+    for rider in folder_sweep(base, variant, base_count):
+        ratio = "–" if math.isnan(rider.planning_ratio) else f"{rider.planning_ratio:.2f}"
+        rows.append(f"| {settings} | {rider.label} | {rider.seeds} | {ratio} | "
+                    f"{rider.falls[0]} → {rider.falls[1]} | {rider.differing} of "
+                    f"{rider.tests} | "
+                    + " | ".join(rider.cells.get(s, "–") for s in scenarios) + " |")
     return rows
 
 

@@ -116,6 +116,21 @@ class DocCheckTest(unittest.TestCase):
         self.assertEqual(len(problems), 1, problems)
         self.assertIn("no rows of arcade", problems[0])
 
+    def test_a_run_with_other_settings_pairs_with_the_bikes_at_every_speed(self):
+        # Over 10 and 15 km/h the short run misses attempt 0 at 15 alone; attempt 0 at 10
+        # pairs with attempt 0 at 10, not with its namesake at 15.
+        short = self.folder / "bike" / "horizon" / "short"
+        short.mkdir(parents=True)
+        for folder, at_15 in ((self.folder / "bike", "g" * 4), (short, "f" + "g" * 3)):
+            with (folder / "results.csv").open("w", newline="") as f:
+                writer = csv.writer(f, lineterminator="\n")
+                writer.writerow(FIELDS)
+                writer.writerows(a.row() for a in rows(Config(10, MPPI), "g" * 4)
+                                 + rows(Config(15, MPPI), at_15))
+        doc = ("7 of 8<!--= bike-goals bike/horizon/short mppi-10 10-15 -->, "
+               "0 to 1<!--= bike-split bike/horizon/short/mppi-10 bike/mppi-10 10-15 -->")
+        self.assertEqual(self.check(doc), [])
+
     def test_a_fall_split_pools_the_scenarios_joined_by_a_plus(self):
         # Shoves: arcade fell on seed 0 alone; slalom: arcade on seed 1, learned on seed 2.
         with (self.folder / "scenarios.csv").open("a") as f:
