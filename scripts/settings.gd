@@ -22,7 +22,8 @@ const PLAYER_GHOSTS := "user://ghosts"
 ## (`SettingsSchema.entries()`), by name. Each entry's default is also its type: a loaded
 ## value of another type is ignored.
 var entries := {}
-## Each player setting's default, by name.
+## Each player setting's default, by name: the entry's `player_default` where the game
+## starts elsewhere than the tools do (the learned cost-to-go), its `default` else.
 var defaults := {}
 
 var settings_path := PLAYER_SETTINGS
@@ -45,7 +46,7 @@ func reload() -> void:
 	for entry in SettingsSchema.entries():
 		if entry.player:
 			entries[entry.name] = entry
-			defaults[entry.name] = entry.default
+			defaults[entry.name] = entry.get("player_default", entry.default)
 	_values = defaults.duplicate()
 	var config := ConfigStore.load_or_empty(settings_path)
 	for key: StringName in defaults:

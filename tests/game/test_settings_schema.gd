@@ -117,3 +117,31 @@ func test_the_tools_json_lists_it() -> void:
 	assert_eq(found.size(), 1)
 	assert_eq(found[0].range, [0.0, 10.0, 0.5])
 	assert_eq(found[0].owner, "planner")
+
+
+func test_the_game_starts_from_the_players_default_the_node_from_the_tools() -> void:
+	# The learned cost-to-go: the game plans with a bike's network, the node (a level
+	# designer's scene, the tools) keeps the thesis's planner.
+	Settings.reload()
+	assert_eq(Settings.get_value(&"terminal_value"), true)
+	var bike := BikeSimulation.new()
+	assert_eq(bike.get(&"terminal_value"), false)
+	assert_eq(bike.property_get_revert(&"terminal_value"), false)
+	bike.free()
+	Settings.set_value(&"terminal_value", false)
+	Settings.reload()
+	assert_eq(Settings.get_value(&"terminal_value"), false, "a player's choice is kept")
+	var menu: PauseMenu = PAUSE_MENU.instantiate()
+	add_child(menu)
+	assert_true(menu.control_of(&"terminal_value") is CheckButton, "a switch in the menu")
+	menu.free()
+
+
+func test_a_players_default_is_a_value_of_a_player_setting() -> void:
+	var entry := THROWAWAY.duplicate()
+	entry.name = &"throwaway_player_start"
+	entry.player_default = 12.0
+	assert_true(SettingsSchema.extend(entry).contains("within 0–10"))
+	entry.player_default = 4.0
+	entry.player = false
+	assert_true(SettingsSchema.extend(entry).contains("only a player setting"))

@@ -1,6 +1,6 @@
 """The settings schema (cpbp_core::settings) as the native tests write it into
 settings.json and hold it equal: every setting's name, label, unit, default, range, owner
-and whether players see it. The tools take ranges and defaults from here, never from a
+and whether players see it (and start from another default). The tools take ranges and defaults from here, never from a
 copy of their own."""
 
 from __future__ import annotations
@@ -27,6 +27,8 @@ class Setting:
     range: tuple[float, float, float] | None = None
     offered: tuple[float, ...] = ()
     choices: tuple[str, ...] = ()
+    # What a player's game starts with where it differs from `default` (the tools' own).
+    player_default: bool | int | float | str | None = None
 
     def check(self, value: bool | int | float | str) -> None:
         """Raises ValueError unless `value` is one this setting may hold."""

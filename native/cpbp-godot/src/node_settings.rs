@@ -95,6 +95,9 @@ fn dictionary(setting: &Setting) -> VarDictionary {
     entry.set("default", &to_variant(&Value::from(setting.default)));
     entry.set("owner", setting.owner.name());
     entry.set("player", setting.player);
+    if let Some(start) = setting.player_default {
+        entry.set("player_default", &to_variant(&Value::from(start)));
+    }
     entry.set("menu", setting.menu);
     if let Some(range) = setting.range {
         entry.set("min", range.min);

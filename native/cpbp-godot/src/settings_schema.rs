@@ -107,17 +107,12 @@ fn setting_of(entry: &VarDictionary) -> Result<Setting, String> {
     if name.is_empty() {
         return Err("a setting needs a name".into());
     }
-    let default = match entry.get("default").as_ref().and_then(from_variant) {
-        Some(settings::Value::Bool(on)) => DefaultValue::Bool(on),
-        Some(settings::Value::Int(n)) => DefaultValue::Int(n),
-        Some(settings::Value::Float(x)) => DefaultValue::Float(x),
-        Some(settings::Value::Text(t)) => DefaultValue::Text(Box::leak(t.into_boxed_str())),
-        None => {
-            return Err(format!(
-                "{name}: the default is not a switch, number or name"
-            ))
-        }
+    let Some(default) = entry.get("default").as_ref().and_then(from_variant) else {
+        return Err(format!(
+            "{name}: the default is not a switch, number or name"
+        ));
     };
+    let default = default_of(default);
     let owner = [
         Owner::Ride,
         Owner::Planner,
@@ -143,7 +138,23 @@ fn setting_of(entry: &VarDictionary) -> Result<Setting, String> {
         offered: &[],
         choices: choices_of(entry),
         owner,
+        player_default: entry
+            .get("player_default")
+            .as_ref()
+            .and_then(from_variant)
+            .map(default_of),
         player: entry.get("player").is_some_and(|v| v.booleanize()),
         menu: text("menu"),
     })
+}
+
+/// A value read from a dictionary as a schema default (a name is kept for the process's
+/// life, as the compiled entries' are).
+fn default_of(value: settings::Value) -> DefaultValue {
+    match value {
+        settings::Value::Bool(on) => DefaultValue::Bool(on),
+        settings::Value::Int(n) => DefaultValue::Int(n),
+        settings::Value::Float(x) => DefaultValue::Float(x),
+        settings::Value::Text(t) => DefaultValue::Text(Box::leak(t.into_boxed_str())),
+    }
 }

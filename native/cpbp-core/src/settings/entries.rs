@@ -12,6 +12,7 @@ pub const BASE: Setting = Setting {
     description: "",
     unit: "",
     default: D::Float(0.0),
+    player_default: None,
     range: None,
     offered: &[],
     choices: &[],
@@ -128,9 +129,17 @@ pub const TERMINAL_VALUE: Setting = Setting {
     name: "terminal_value",
     label: "Learned cost-to-go",
     description: "Plan the value horizon and cost the rest of the horizon with the bike's \
-                  learned cost-to-go (models/value-<bike>): less to simulate. Without the \
-                  network the planners plan the whole horizon and say so.",
+                  learned cost-to-go (models/value-<bike>): less to simulate, so more \
+                  trajectories in time. Without the network the planners plan the whole \
+                  horizon and say so.",
+    // Off for the tools and their rows (the thesis's planner); on in the game, where a
+    // bike with a cost-to-go plans 0.6 s ahead at the skill issue 59's sweep measured
+    // (docs/results.md, "Shorter horizons") and a bike without one plans the whole
+    // horizon.
     default: D::Bool(false),
+    player_default: Some(D::Bool(true)),
+    player: true,
+    menu: "Riding",
     ..BASE
 };
 pub const VALUE_HORIZON_S: Setting = Setting {
@@ -214,6 +223,7 @@ pub const AUTO_SPEED_KMH: Setting = Setting {
     owner: Owner::Game,
     player: true,
     menu: "Riding",
+    ..BASE
 };
 pub const AUTO_ACCELERATE: Setting = Setting {
     name: "auto_accelerate",

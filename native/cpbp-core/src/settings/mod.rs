@@ -94,6 +94,11 @@ pub struct Setting {
     /// The unit its numbers are in ("" for none; "share" for 0–1, shown as a percentage).
     pub unit: &'static str,
     pub default: DefaultValue,
+    /// What a player's game starts with where it differs from `default`, which the node,
+    /// the tools and the committed rows keep (the thesis's planner): the game plans with
+    /// a bike's learned cost-to-go, the protocol at its defaults does not. A player
+    /// setting only.
+    pub player_default: Option<DefaultValue>,
     /// Where a number may be set (None for a switch or a name).
     pub range: Option<Range>,
     /// The values menus offer, when a list suits it better than a slider.
@@ -116,6 +121,14 @@ impl Setting {
             DefaultValue::Int(n) => n as f64,
             DefaultValue::Float(x) => x,
             DefaultValue::Text(_) => 0.0,
+        }
+    }
+
+    /// What a player's settings start from: `player_default`, or the default.
+    pub const fn player_start(&self) -> DefaultValue {
+        match self.player_default {
+            Some(start) => start,
+            None => self.default,
         }
     }
 

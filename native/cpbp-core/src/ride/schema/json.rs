@@ -6,13 +6,26 @@ use serde_json::{json, Value as Json};
 use super::all;
 use crate::settings::{DefaultValue, Setting, AUTO_TRAJECTORY_RANGE};
 
+fn kind_of(default: DefaultValue) -> &'static str {
+    match default {
+        DefaultValue::Bool(_) => "bool",
+        DefaultValue::Int(_) => "int",
+        DefaultValue::Float(_) => "float",
+        DefaultValue::Text(_) => "text",
+    }
+}
+
+fn json_of(default: DefaultValue) -> Json {
+    match default {
+        DefaultValue::Bool(on) => json!(on),
+        DefaultValue::Int(n) => json!(n),
+        DefaultValue::Float(x) => json!(x),
+        DefaultValue::Text(name) => json!(name),
+    }
+}
+
 fn entry(setting: &Setting) -> Json {
-    let (kind, default) = match setting.default {
-        DefaultValue::Bool(on) => ("bool", json!(on)),
-        DefaultValue::Int(n) => ("int", json!(n)),
-        DefaultValue::Float(x) => ("float", json!(x)),
-        DefaultValue::Text(name) => ("text", json!(name)),
-    };
+    let (kind, default) = (kind_of(setting.default), json_of(setting.default));
     let mut entry = json!({
         "name": setting.name,
         "label": setting.label,
@@ -26,6 +39,9 @@ fn entry(setting: &Setting) -> Json {
     });
     if let Some(range) = setting.range {
         entry["range"] = json!([range.min, range.max, range.step]);
+    }
+    if let Some(start) = setting.player_default {
+        entry["player_default"] = json_of(start);
     }
     if !setting.offered.is_empty() {
         entry["offered"] = json!(setting.offered);

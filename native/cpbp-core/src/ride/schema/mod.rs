@@ -78,7 +78,7 @@ pub fn extend(setting: Setting) -> Result<(), String> {
 }
 
 /// Whether `setting` may join the schema: a number has a range that is not empty, only a
-/// name has choices, and its default is a value it may have.
+/// name has choices, and its defaults (the player's too) are values it may have.
 pub(super) fn check_entry(setting: &Setting) -> Result<(), String> {
     let number = matches!(
         setting.default,
@@ -94,7 +94,14 @@ pub(super) fn check_entry(setting: &Setting) -> Result<(), String> {
     if !setting.choices.is_empty() && !matches!(setting.default, DefaultValue::Text(_)) {
         return Err(format!("{}: only a name has choices", setting.name));
     }
-    setting.check(&Value::from(setting.default))
+    if setting.player_default.is_some() && !setting.player {
+        return Err(format!(
+            "{}: only a player setting has a player's default",
+            setting.name
+        ));
+    }
+    setting.check(&Value::from(setting.default))?;
+    setting.check(&Value::from(setting.player_start()))
 }
 
 #[cfg(test)]

@@ -56,6 +56,7 @@ fn an_entry_added_at_run_time_reaches_every_reader() {
         owner: Owner::Planner,
         player: true,
         menu: "Planner",
+        player_default: None,
         unit: "",
         offered: &[],
         choices: &[],
@@ -142,4 +143,30 @@ fn the_planners_settings_from_the_defaults_are_the_games_defaults() {
     values.set("horizon", Value::Float(0.6)).unwrap();
     let shorter = PlannerSettings::from_values(&values, physics, policy, value);
     assert_eq!(shorter.planning.horizon, 0.6);
+}
+
+#[test]
+fn a_players_default_is_a_value_of_a_player_setting() {
+    use crate::settings::TERMINAL_VALUE;
+    // The game plans with a bike's cost-to-go; the tools' rows at their defaults do not.
+    assert_eq!(TERMINAL_VALUE.default, DefaultValue::Bool(false));
+    assert_eq!(TERMINAL_VALUE.player_start(), DefaultValue::Bool(true));
+    assert!(schema_json().contains("\"name\":\"terminal_value\""));
+    assert!(schema_json().contains("\"player_default\":true"));
+    let start = |player_default, player| Setting {
+        name: "throwaway_player_start",
+        label: "Throwaway",
+        description: "A test's.",
+        default: DefaultValue::Float(0.5),
+        player_default: Some(player_default),
+        range: Some(Range::new(0.0, 1.0, 0.1)),
+        player,
+        ..crate::settings::BASE
+    };
+    let out_of_range = check_entry(&start(DefaultValue::Float(2.0), true)).unwrap_err();
+    assert!(out_of_range.contains("within 0–1"), "{out_of_range}");
+    assert!(check_entry(&start(DefaultValue::Bool(true), true)).is_err());
+    let hidden = check_entry(&start(DefaultValue::Float(0.7), false)).unwrap_err();
+    assert!(hidden.contains("only a player setting"), "{hidden}");
+    assert!(check_entry(&start(DefaultValue::Float(0.7), true)).is_ok());
 }
