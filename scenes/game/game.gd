@@ -295,6 +295,10 @@ func _on_controller_failed(reason: String) -> void:
 ## not offer rides as arcade.
 func _apply_setting(key: StringName) -> void:
 	var value: Variant = Settings.get_value(key)
+	if key == &"terminal_value":
+		# The player's switch asks for the bike's own cost-to-go: a bike without one
+		# plans its whole horizon, nothing failed (the HUD says how far the plans look).
+		value = value and bike.has_learned_cost_to_go()
 	var targets := setting_targets()
 	if Settings.entries[key].owner in ["ride", "planner"]:
 		targets.push_front(bike)

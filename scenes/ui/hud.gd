@@ -107,11 +107,14 @@ func _process(delta: float) -> void:
 
 ## How far the plans look: "1.2 s ahead", or "0.6 s ahead + learned cost-to-go" when the
 ## network costs the rest of the horizon (the automatic N then fits more trajectories in a
-## frame).
+## frame), or "1.2 s ahead (no cost-to-go for this bike)" when the player asked for one
+## the bike does not have.
 static func _horizon_text(bike: BikeSimulation) -> String:
 	var text := "%.1f s ahead" % bike.get_planned_horizon()
 	if bike.is_horizon_ended_by_value():
 		text += " + learned cost-to-go"
+	elif Settings.get_value(&"terminal_value") and not bike.has_learned_cost_to_go():
+		text += " (no cost-to-go for this bike)"
 	return text
 
 

@@ -121,23 +121,6 @@ impl BikeSimulation {
         n.map_or(0, |n| n as i64)
     }
 
-    /// How far ahead the planners simulate (s): the value horizon while the learned
-    /// cost-to-go ends their plans (`is_horizon_ended_by_value`), the whole horizon else.
-    #[func]
-    fn get_planned_horizon(&self) -> f64 {
-        self.ride
-            .as_ref()
-            .map_or(0.0, |r| r.planner.planning.planned().0)
-    }
-
-    /// Whether the learned cost-to-go costs the rest of the horizon after the plans.
-    #[func]
-    fn is_horizon_ended_by_value(&self) -> bool {
-        self.ride
-            .as_ref()
-            .is_some_and(|r| r.planner.planning.planned().1.is_some())
-    }
-
     /// What menus show for controller `name` (empty for an unknown name).
     #[func]
     fn controller_label(name: GString) -> GString {

@@ -4,6 +4,7 @@ mod bike_description;
 mod bike_events;
 mod bike_foot;
 mod bike_ground;
+mod bike_horizon;
 mod bike_queries;
 mod bike_rider;
 mod bike_settings;
