@@ -1,13 +1,14 @@
 //! Plans over and over for a profiler (docs/benchmarks-history.md,
 //! "where a plan's time goes"):
 //! `perf record -F 2000 native/target/release/examples/plan_profile [N] [threads] [plans]
-//! [physics model] [horizon s]`. Combined mode, riding off towards 15 km/h on flat ground,
-//! rolling out in the physics model's rollout physics (classic unless named), over the
-//! default horizon unless one is given.
+//! [physics model] [horizon s] [--bike FILE]`. Combined mode, riding off towards 15 km/h
+//! on flat ground, rolling out in the physics model's rollout physics (classic unless
+//! named), over the default horizon unless one is given, on the reference bike unless
+//! `--bike` names another.
 
 use std::sync::Arc;
 
-use cpbp_core::bike::{Controls, DriveInput, Placement, POSE_GAIN};
+use cpbp_core::bike::{take_bike_argument, Controls, DriveInput, Placement, POSE_GAIN};
 use cpbp_core::control::{cpbp, Goal, PlanningConfig, PlanningSession};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::simulation::{Simulation, SimulationConfig};
@@ -15,7 +16,11 @@ use cpbp_core::terrain::Terrain;
 use glam::DVec3;
 
 fn main() {
-    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let mut arguments: Vec<String> = std::env::args().skip(1).collect();
+    let bike = take_bike_argument(&mut arguments)
+        .unwrap_or_else(|why| panic!("{why}"))
+        .map(|file| file.params)
+        .unwrap_or_default();
     let physics = match arguments.get(3) {
         Some(name) => PhysicsModel::from_name(name).expect("a physics model: classic or exact"),
         None => PhysicsModel::Classic,
@@ -38,6 +43,7 @@ fn main() {
     };
     let config = SimulationConfig {
         physics,
+        bike,
         ..SimulationConfig::default()
     };
     let mut sim = Simulation::new(config, terrain, spawn);
