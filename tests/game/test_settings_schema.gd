@@ -120,17 +120,25 @@ func test_the_tools_json_lists_it() -> void:
 
 
 func test_the_game_starts_from_the_players_default_the_node_from_the_tools() -> void:
-	# The learned cost-to-go: the game plans with a bike's network, the node (a level
-	# designer's scene, the tools) keeps the thesis's planner.
+	var entry := THROWAWAY.duplicate()
+	entry.name = &"throwaway_player_start"
+	entry.player_default = 7.5
+	var refusal := SettingsSchema.extend(entry)
+	assert_true(refusal.is_empty() or refusal.contains("already"), refusal)
 	Settings.reload()
-	assert_eq(Settings.get_value(&"terminal_value"), true)
+	assert_eq(Settings.get_value(&"throwaway_player_start"), 7.5)
 	var bike := BikeSimulation.new()
-	assert_eq(bike.get(&"terminal_value"), false)
-	assert_eq(bike.property_get_revert(&"terminal_value"), false)
+	assert_eq(bike.get(&"throwaway_player_start"), 2.5)
+	assert_eq(bike.property_get_revert(&"throwaway_player_start"), 2.5)
 	bike.free()
-	Settings.set_value(&"terminal_value", false)
+	Settings.set_value(&"throwaway_player_start", 1.0)
 	Settings.reload()
-	assert_eq(Settings.get_value(&"terminal_value"), false, "a player's choice is kept")
+	assert_eq(Settings.get_value(&"throwaway_player_start"), 1.0, "a player's choice is kept")
+
+
+func test_the_learned_cost_to_go_is_a_switch_in_the_pause_menu() -> void:
+	Settings.reload()
+	assert_eq(Settings.get_value(&"terminal_value"), false, "off until it knows wheelies")
 	var menu: PauseMenu = PAUSE_MENU.instantiate()
 	add_child(menu)
 	assert_true(menu.control_of(&"terminal_value") is CheckButton, "a switch in the menu")
@@ -139,7 +147,7 @@ func test_the_game_starts_from_the_players_default_the_node_from_the_tools() -> 
 
 func test_a_players_default_is_a_value_of_a_player_setting() -> void:
 	var entry := THROWAWAY.duplicate()
-	entry.name = &"throwaway_player_start"
+	entry.name = &"throwaway_bad_player_start"
 	entry.player_default = 12.0
 	assert_true(SettingsSchema.extend(entry).contains("within 0–10"))
 	entry.player_default = 4.0

@@ -132,12 +132,12 @@ pub const TERMINAL_VALUE: Setting = Setting {
                   learned cost-to-go (models/value-<bike>): less to simulate, so more \
                   trajectories in time. Without the network the planners plan the whole \
                   horizon and say so.",
-    // Off for the tools and their rows (the thesis's planner); on in the game, where a
-    // bike with a cost-to-go plans 0.6 s ahead at the skill issue 59's sweep measured
-    // (docs/results.md, "Shorter horizons") and a bike without one plans the whole
-    // horizon.
+    // Off for the tools and their rows (the thesis's planner), and off in the game too
+    // until the cost-to-go knows the rider's pitch requests: with it on, the street 390's
+    // wheelie onto the skate park's platform (tests/levels/test_bot_rides.gd) lifts the
+    // front 12° instead of 19° and the rear wheel does not climb; its training rode no
+    // wheelies. A player may turn it on in the pause menu.
     default: D::Bool(false),
-    player_default: Some(D::Bool(true)),
     player: true,
     menu: "Riding",
     ..BASE

@@ -147,12 +147,6 @@ fn the_planners_settings_from_the_defaults_are_the_games_defaults() {
 
 #[test]
 fn a_players_default_is_a_value_of_a_player_setting() {
-    use crate::settings::TERMINAL_VALUE;
-    // The game plans with a bike's cost-to-go; the tools' rows at their defaults do not.
-    assert_eq!(TERMINAL_VALUE.default, DefaultValue::Bool(false));
-    assert_eq!(TERMINAL_VALUE.player_start(), DefaultValue::Bool(true));
-    assert!(schema_json().contains("\"name\":\"terminal_value\""));
-    assert!(schema_json().contains("\"player_default\":true"));
     let start = |player_default, player| Setting {
         name: "throwaway_player_start",
         label: "Throwaway",
@@ -168,5 +162,11 @@ fn a_players_default_is_a_value_of_a_player_setting() {
     assert!(check_entry(&start(DefaultValue::Bool(true), true)).is_err());
     let hidden = check_entry(&start(DefaultValue::Float(0.7), false)).unwrap_err();
     assert!(hidden.contains("only a player setting"), "{hidden}");
-    assert!(check_entry(&start(DefaultValue::Float(0.7), true)).is_ok());
+    let fine = start(DefaultValue::Float(0.7), true);
+    assert!(check_entry(&fine).is_ok());
+    assert_eq!(fine.player_start(), DefaultValue::Float(0.7));
+    assert_eq!(
+        crate::settings::BASE.player_start(),
+        DefaultValue::Float(0.0)
+    );
 }
