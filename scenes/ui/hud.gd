@@ -113,7 +113,9 @@ static func _horizon_text(bike: BikeSimulation) -> String:
 	var text := "%.1f s ahead" % bike.get_planned_horizon()
 	if bike.is_horizon_ended_by_value():
 		text += " + learned cost-to-go"
-	elif Settings.get_value(&"terminal_value") and not bike.has_learned_cost_to_go():
+	elif Settings.get_value(&"terminal_value") and not bike.terminal_value:
+		# The game asks the bike only when it has a cost-to-go file (`Game`), so the
+		# switch on and the bike not asked means it has none: no file check each frame.
 		text += " (no cost-to-go for this bike)"
 	return text
 
