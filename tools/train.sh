@@ -2,11 +2,12 @@
 # `make train`: the learned controller from nothing (docs/learned-controller.md).
 #  1. The planner rides EPISODES seeded episodes as the expert (cpbp-learn generate),
 #     LOG_EPISODES of the test level's ride (straight over logs), CARVING_EPISODES of
-#     long hard turns at speed and BRAKING_EPISODES of full brakes from up to 90 km/h.
+#     long hard turns at speed, BRAKING_EPISODES of full brakes from up to 90 km/h and
+#     WHEELIE_EPISODES of wheelies, mostly onto platforms.
 #  2. A network is trained on them (cpbp-learn train, candle).
 #  3. DAgger, ROUNDS times: the latest network rides DAGGER_EPISODES new episodes,
-#     DAGGER_LOG_EPISODES over logs, DAGGER_CARVING_EPISODES of carving and
-#     DAGGER_BRAKING_EPISODES of braking while the
+#     DAGGER_LOG_EPISODES over logs, DAGGER_CARVING_EPISODES of carving,
+#     DAGGER_BRAKING_EPISODES of braking and DAGGER_WHEELIE_EPISODES of wheelies while the
 #     planner labels the states it visits, and a network is trained on everything so far.
 #  4. The last network becomes the bike's model (models/policy-<bike>.safetensors, <bike>
 #     the bike file's name: street_350, the reference, without BIKE) and the
@@ -14,8 +15,8 @@
 #     Every round's expert also recorded its plans for the planners' learned cost-to-go
 #     (issue 59; `generate --values`): it is trained on all of them (cpbp-learn
 #     train-value), then VALUE_ROUNDS (1) DAgger rounds of its own where the planner
-#     drives on the short horizon it ends (DAGGER_EPISODES mixed and
-#     DAGGER_CARVING_EPISODES carving, seeds from (ROUNDS + R)*100000 + 1), into
+#     drives on the short horizon it ends (DAGGER_EPISODES mixed, DAGGER_CARVING_EPISODES
+#     carving and DAGGER_WHEELIE_EPISODES wheelies, seeds from (ROUNDS + R)*100000 + 1), into
 #     models/value-<bike>.safetensors. VALUES=0 leaves it out. POLICY=0 trains the
 #     cost-to-go alone, for a bike whose network landed before it did: the expert's round
 #     only (ROUNDS=0), recorded, then the cost-to-go's rounds; the shipped policy and its
@@ -24,8 +25,9 @@
 #     scenarios beside arcade and combined, paired on the same seeds, and those reports
 #     are written again (docs/experiment, docs/scenarios).
 # Seeds: round R (0 = the expert's) rides mixed episodes from R*100000 + 1, log
-# episodes from R*100000 + 50001, carving from R*100000 + 70001 and braking from
-# R*100000 + 90001, so no two episodes of a run share a seed.
+# episodes from R*100000 + 50001, carving from R*100000 + 70001, braking from
+# R*100000 + 90001 and wheelies from R*100000 + 30001, so no two episodes of a run share
+# a seed.
 # EPOCHS and SEED override the trainer's defaults (cpbp-learn train --help).
 # BIKE=all trains every bike's (below). BIKE=FILE (a bike file) trains a network of that
 # bike: its episodes, checkpoints and report go to a folder and a model of the bike's own
@@ -35,6 +37,9 @@
 # bike rides the game's speeds, up to 90 km/h: its run adds braking episodes (24 s each,
 # the time to reach such speeds), which the reference's, ridden at the thesis's speeds up
 # to 40 km/h, leaves out (BRAKING_EPISODES=0), so its model is made again as committed.
+# Wheelies likewise: a game's bike rides them (the cost-to-go that the game's planner ends
+# its plans with must know what a wheelie asked for costs: issue 59), the reference does
+# not (WHEELIE_EPISODES=0).
 # Every step resumes: episodes already saved are not ridden again, a finished round's
 # model is kept, and the experiment and scenario runs resume. Data and checkpoints live
 # in the cache (LEARN_DATA), never in git; `make clean` leaves them, `make clean-learn`
@@ -84,11 +89,15 @@ if [ -n "${BIKE:-}" ]; then
   EVALUATE=0
   BRAKING_EPISODES="${BRAKING_EPISODES:-30}"
   DAGGER_BRAKING_EPISODES="${DAGGER_BRAKING_EPISODES:-10}"
+  WHEELIE_EPISODES="${WHEELIE_EPISODES:-30}"
+  DAGGER_WHEELIE_EPISODES="${DAGGER_WHEELIE_EPISODES:-10}"
 fi
 # The cost-to-go beside the policy: models/value-<bike>.safetensors.
 VALUE_MODEL="models/value-${name:-street_350}.safetensors"
 BRAKING_EPISODES="${BRAKING_EPISODES:-0}"
 DAGGER_BRAKING_EPISODES="${DAGGER_BRAKING_EPISODES:-0}"
+WHEELIE_EPISODES="${WHEELIE_EPISODES:-0}"
+DAGGER_WHEELIE_EPISODES="${DAGGER_WHEELIE_EPISODES:-0}"
 learn=native/target/release/cpbp-learn
 
 started=$(date +%s)
@@ -103,12 +112,12 @@ train_round() {
     ${EPOCHS:+--epochs "$EPOCHS"} ${SEED:+--seed "$SEED"}
 }
 
-# Rides round $1's episodes into $2 (mixed), $2-logs, $2-carving and $2-braking: $3, $4,
-# $5 and $6 of them (none of the last, no folder); $7 is the learner for DAgger (none for
-# the expert's round).
+# Rides round $1's episodes into $2 (mixed), $2-logs, $2-carving, $2-braking and
+# $2-wheelies: $3, $4, $5, $6 and $7 of them (none of the last two, no folder); $8 is the
+# learner for DAgger (none for the expert's round).
 ride_round() {
   local base=$(($1 * 100000)) learner=()
-  [ -n "${7:-}" ] && learner=(--learner "$7")
+  [ -n "${8:-}" ] && learner=(--learner "$8")
   "$learn" generate --out "$2" --episodes "$((base + 1))-$((base + $3))" "${learner[@]}" \
     "${bike[@]}" "${values[@]}"
   "$learn" generate --out "$2-logs" --family logs \
@@ -117,27 +126,32 @@ ride_round() {
   "$learn" generate --out "$2-carving" --family carving \
     --episodes "$((base + 70001))-$((base + 70000 + $5))" "${learner[@]}" "${bike[@]}" \
     "${values[@]}"
-  [ "$6" -gt 0 ] || return 0
-  "$learn" generate --out "$2-braking" --family braking --seconds "$BRAKING_SECONDS" \
-    --episodes "$((base + 90001))-$((base + 90000 + $6))" "${learner[@]}" "${bike[@]}" \
+  [ "$6" -gt 0 ] && "$learn" generate --out "$2-braking" --family braking \
+    --seconds "$BRAKING_SECONDS" --episodes "$((base + 90001))-$((base + 90000 + $6))" \
+    "${learner[@]}" "${bike[@]}" "${values[@]}"
+  [ "$7" -gt 0 ] || return 0
+  "$learn" generate --out "$2-wheelies" --family wheelies \
+    --episodes "$((base + 30001))-$((base + 30000 + $7))" "${learner[@]}" "${bike[@]}" \
     "${values[@]}"
 }
 
 # Round $1's folders (the expert's or a DAgger round's, $2), comma-separated.
 round_folders() {
   local folders="$2,$2-logs,$2-carving" braking=$DAGGER_BRAKING_EPISODES
-  [ "$1" -eq 0 ] && braking=$BRAKING_EPISODES
+  local wheelies=$DAGGER_WHEELIE_EPISODES
+  [ "$1" -eq 0 ] && braking=$BRAKING_EPISODES wheelies=$WHEELIE_EPISODES
   [ "$braking" -gt 0 ] && folders="$folders,$2-braking"
+  [ "$wheelies" -gt 0 ] && folders="$folders,$2-wheelies"
   echo "$folders"
 }
 
 ride_round 0 "$LEARN_DATA/expert" "$EPISODES" "$LOG_EPISODES" "$CARVING_EPISODES" \
-  "$BRAKING_EPISODES"
+  "$BRAKING_EPISODES" "$WHEELIE_EPISODES"
 folders=$(round_folders 0 "$LEARN_DATA/expert")
 [ "$POLICY" = 0 ] || train_round 0 "$folders"
 for round in $(seq 1 "$ROUNDS"); do
   ride_round "$round" "$LEARN_DATA/dagger-$round" "$DAGGER_EPISODES" "$DAGGER_LOG_EPISODES" \
-    "$DAGGER_CARVING_EPISODES" "$DAGGER_BRAKING_EPISODES" \
+    "$DAGGER_CARVING_EPISODES" "$DAGGER_BRAKING_EPISODES" "$DAGGER_WHEELIE_EPISODES" \
     "$LEARN_DATA/round-$((round - 1)).safetensors"
   folders="$folders,$(round_folders "$round" "$LEARN_DATA/dagger-$round")"
   train_round "$round" "$folders"
@@ -163,6 +177,12 @@ if [ "$VALUES" != 0 ]; then
         "${short[@]}" "${bike[@]}" \
         --episodes "$((base + 70001))-$((base + 70000 + DAGGER_CARVING_EPISODES))"
       value_folders="$value_folders,$LEARN_DATA/short-$round,$LEARN_DATA/short-$round-carving"
+      if [ "$DAGGER_WHEELIE_EPISODES" -gt 0 ]; then
+        "$learn" generate --out "$LEARN_DATA/short-$round-wheelies" --family wheelies \
+          --values "${short[@]}" "${bike[@]}" \
+          --episodes "$((base + 30001))-$((base + 30000 + DAGGER_WHEELIE_EPISODES))"
+        value_folders="$value_folders,$LEARN_DATA/short-$round-wheelies"
+      fi
     fi
     value="$LEARN_DATA/value-$round.safetensors"
     [ -f "$value" ] || "$learn" train-value --data "$value_folders" --model "$value" \

@@ -24,7 +24,7 @@ use rand_distr::StandardNormal;
 use rand_pcg::Pcg64;
 
 pub use crate::family::Family;
-use crate::grounds::{bump_field, log_field};
+use crate::grounds::{bump_field, log_field, platforms};
 
 /// Control steps a second.
 const STEPS_PER_SECOND: f64 = 30.0;
@@ -110,6 +110,9 @@ pub enum Ground {
     Bumps(f64),
     /// Flat ground with this many of the test level's log fields one after another ahead.
     Logs(usize),
+    /// Flat ground with a row of platforms ahead, the tallest this high (m)
+    /// (`grounds::platforms`).
+    Platforms(f64),
 }
 
 impl Ground {
@@ -119,6 +122,7 @@ impl Ground {
             Self::Slope(angle) => format!("slope {:+.1}°", angle.to_degrees()),
             Self::Bumps(height) => format!("bumps {:.0} mm", height * 1000.0),
             Self::Logs(fields) => format!("{fields} log fields"),
+            Self::Platforms(tallest) => format!("platforms up to {:.0} mm", tallest * 1000.0),
         }
     }
 }
@@ -183,6 +187,7 @@ impl Episode {
             }
             Ground::Bumps(height) => (bump_field(self.seed, height), heading),
             Ground::Logs(fields) => (log_field(self.seed, heading, fields), heading),
+            Ground::Platforms(tallest) => (platforms(self.seed, heading, tallest), heading),
         };
         let lift = match self.ground {
             Ground::Bumps(height) => height + 0.02,

@@ -37,15 +37,21 @@ pub enum Family {
     /// standstill and a stand; then off again towards 20–50 km/h and a second
     /// brake. Its episodes want the time to reach speed: `make train` rides them 24 s.
     Braking,
+    /// Wheelies at walking to town speeds (6–18 km/h), mostly onto platforms: the rider's
+    /// weight back with the throttle open for 0.5–1.7 s, then riding on, again and again
+    /// (issue 59: a cost-to-go that never saw the rider ask for one talked the planner out
+    /// of the bot's wheelie onto the skate park's platform). `wheelies.rs` draws them.
+    Wheelies,
 }
 
 impl Family {
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 6] = [
         Self::Mixed,
         Self::Logs,
         Self::Carving,
         Self::Shoves,
         Self::Braking,
+        Self::Wheelies,
     ];
 
     pub fn name(self) -> &'static str {
@@ -55,6 +61,7 @@ impl Family {
             Self::Carving => "carving",
             Self::Shoves => "shoves",
             Self::Braking => "braking",
+            Self::Wheelies => "wheelies",
         }
     }
 
@@ -71,6 +78,7 @@ impl Family {
             Self::Carving => draw_carving(&mut rng, steps),
             Self::Shoves => draw_shoves(&mut rng, steps),
             Self::Braking => draw_braking(&mut rng, steps),
+            Self::Wheelies => crate::wheelies::draw_wheelies(&mut rng, steps),
         };
         Episode {
             seed,
@@ -82,9 +90,9 @@ impl Family {
     }
 }
 
-type Drawn = (Ground, Vec<Segment>, f64);
+pub(crate) type Drawn = (Ground, Vec<Segment>, f64);
 
-fn heading(rng: &mut Pcg64) -> f64 {
+pub(crate) fn heading(rng: &mut Pcg64) -> f64 {
     rng.random_range(0.0..std::f64::consts::TAU)
 }
 
@@ -131,7 +139,7 @@ fn flat_or_bumps(rng: &mut Pcg64, flat_share: f64) -> Ground {
 
 /// One throttle (of `throttle`) towards one speed (of `kmh`) all the way; and the
 /// episode's start, up to that speed on a straight for 2–3 s, with the step after it.
-fn up_to_speed(
+pub(crate) fn up_to_speed(
     rng: &mut Pcg64,
     throttle: Range<f64>,
     kmh: Range<f64>,

@@ -22,6 +22,7 @@ mod grounds;
 mod shard;
 mod train;
 mod training_run;
+mod wheelies;
 
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -37,7 +38,7 @@ use cpbp_core::settings;
 use episode::{Episode, ExpertSettings};
 
 const USAGE: &str = "cpbp-learn generate --out DIR --episodes FIRST-LAST [--trajectories N] \
-[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves|braking] \
+[--seconds S] [--noise X] [--jobs J] [--learner MODEL] [--family mixed|logs|carving|shoves|braking|wheelies] \
 [--bike FILE] [--values] [--short-planner VALUE_MODEL [--short-horizon S]]\n       \
 cpbp-learn train|train-value --data DIR[,DIR…] --model FILE [--losses CSV] [--epochs E] \
 [--seed S] [--hidden W,W…] [--weight-decay D]\n       \
@@ -120,7 +121,9 @@ fn parse(arguments: &[String]) -> Result<Generate, String> {
             "--noise" => settings.noise = number("--noise")?.min(0.5),
             "--family" => {
                 settings.family = episode::Family::from_name(value).ok_or_else(|| {
-                    format!("--family is mixed, logs, carving, shoves or braking, not '{value}'")
+                    format!(
+                        "--family is mixed, logs, carving, shoves, braking or wheelies, not '{value}'"
+                    )
                 })?;
             }
             "--jobs" => jobs = number("--jobs")?.max(1.0) as usize,
