@@ -20,6 +20,7 @@ from .results import Attempt, ResultsError, ResultsFile, check_bike, check_seed
 from .progress import Progress
 from .runner import (PROJECT_ROOT, Platform, WorkerError, cpu_description,
                      measure_planning, plan_blocks, run_blocks, worker_platform)
+from .value_model import keep_value_record
 from .verify import choose, parse_rows, verify
 
 WORKER_LOG = "workers.log"
@@ -176,6 +177,8 @@ def run(args: argparse.Namespace, out: Path) -> None:
     saved = results.load()
     check_seed(saved, args.seed, results.path)
     check_bike(saved, args.bike.label, results.path)
+    keep_value_record(out, PROJECT_ROOT, args.bike.name,
+                      dict(s.split("=", 1) for s in args.bike.settings))
     store = PlatformStore(out / PLATFORMS)
     known = store.load()
     platform, description = current_platform(out, bike=args.bike)

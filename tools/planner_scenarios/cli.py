@@ -9,6 +9,8 @@ import sys
 from pathlib import Path
 
 from cpbp_experiment.configs import PLANNERS
+from cpbp_experiment.results import REFERENCE_BIKE
+from cpbp_experiment.value_model import keep_value_record
 
 from .compare import write_comparison
 from .report import write_report
@@ -34,6 +36,8 @@ def main(argv: list[str] | None = None) -> int:
         rows.load()
         settings = _settings(args, out, rows)
         if args.command in ("run", "all"):
+            bike = Path(args.bike).stem if args.bike else REFERENCE_BIKE
+            keep_value_record(out, PROJECT_ROOT, bike, settings)
             ride(args, rows)
         if args.command in ("report", "all"):
             write_report(rows.load(), out, args.bike, settings)
