@@ -138,7 +138,10 @@ func test_the_game_starts_from_the_players_default_the_node_from_the_tools() -> 
 
 func test_the_learned_cost_to_go_is_a_switch_in_the_pause_menu() -> void:
 	Settings.reload()
-	assert_eq(Settings.get_value(&"terminal_value"), false, "off until it knows wheelies")
+	assert_eq(Settings.get_value(&"terminal_value"), true, "on for a player")
+	var bike := BikeSimulation.new()
+	assert_eq(bike.terminal_value, false, "off for the node and the tools: bit-exact rows")
+	bike.free()
 	var menu: PauseMenu = PAUSE_MENU.instantiate()
 	add_child(menu)
 	assert_true(menu.control_of(&"terminal_value") is CheckButton, "a switch in the menu")

@@ -1,6 +1,7 @@
 """Figures from the planner-settings sweeps (issue 59): a folder of scenario rows ridden
 with other planner settings, `docs/scenarios/<bike>/horizon/<folder>`, held against the
-bike's own table two folders up, as `tools/planner-scenarios sweep` does.
+bike's own table (the nearest folder above with rows: two up, or further for a folder
+moved aside to `horizon/superseded/…`), as `tools/planner-scenarios sweep` does.
 
 A folder argument is its path under docs/scenarios (`dirt_125/horizon/value-0.6-n4`),
 several joined with commas where a figure pools them; a rider is the planner with the N
@@ -31,8 +32,14 @@ def figures(scenarios: Path) -> dict[str, Figure]:
             raise FigureError(f"no scenario rows in docs/scenarios/{folder}")
         return tuple(found)
 
+    def table_above(folder: str) -> str:
+        for above in Path(folder).parents:
+            if (scenarios / above / "scenarios.csv").exists():
+                return str(above)
+        raise FigureError(f"no bike's table above docs/scenarios/{folder}")
+
     def rider(folder: str, name: str, base_count: str | None) -> RiderSweep:
-        base = str(Path(folder).parent.parent)
+        base = table_above(folder)
         controller, _, n = name.rpartition("-")
         for found in folder_sweep(list(rows(base)), list(rows(folder)),
                                   int(base_count) if base_count else None):

@@ -27,6 +27,7 @@ class SweepFiguresTest(unittest.TestCase):
         ride(root / "bike", 5, 0.0, 0)
         ride(root / "bike" / "horizon" / "short", 5, 1.0, 0)
         ride(root / "bike" / "horizon" / "fewer", 4, 0.0, 2)
+        ride(root / "bike" / "horizon" / "superseded" / "value-old" / "short", 5, 1.0, 0)
         self.figures = sweep_figures.figures(root)
 
     def tearDown(self):
@@ -44,6 +45,10 @@ class SweepFiguresTest(unittest.TestCase):
         wrong = doc.replace("slalom +1", "slalom +0.9").replace("1 of 4", "0 of 4")
         self.assertEqual(len(self.check(wrong)), 2)
         self.assertEqual(markers.update(wrong, self.figures, {}), doc)
+
+    def test_a_folder_moved_aside_is_held_against_the_bike_above_it(self):
+        doc = "1 of 4<!--= sweep-beyond bike/horizon/superseded/value-old/short combined-5 -->"
+        self.assertEqual(self.check(doc), [])
 
     def test_fewer_trajectories_pair_with_the_defaults_only_when_asked(self):
         doc = "0 of 4<!--= sweep-beyond bike/horizon/fewer combined-4 5 -->"

@@ -293,9 +293,17 @@ impl RolloutSystem for BikeRollout {
 
     /// The learned cost-to-go of the rest of the full horizon, when the plan's is
     /// shortened (`BikeRollout::value`); a state it cannot read (non-finite) gets none:
-    /// its steps' costs already condemn it.
+    /// its steps' costs already condemn it. Nor does a plan made while the rider asks for
+    /// a wheelie or a stoppie (the goal, so every trajectory of the plan alike): with the
+    /// street 390's network the bot's wheelie onto the skate park's platform lifted the
+    /// front 12° instead of 19° and the rear wheel did not climb, with or without wheelies
+    /// in its training, where the same short plan without it lifts 18° and climbs.
     fn terminal_cost(&self) -> Option<f64> {
         let value = self.value.as_ref()?;
+        let asked = self.goal.pitch_request();
+        if asked.lift > 0.0 || asked.stoppie > 0.0 {
+            return None;
+        }
         let seen = learned::features(&self.bike, &self.world, &self.goal, self.up);
         value.network.cost_to_go(&seen, value.remaining_s).ok()
     }

@@ -132,12 +132,13 @@ pub const TERMINAL_VALUE: Setting = Setting {
                   learned cost-to-go (models/value-<bike>): less to simulate, so more \
                   trajectories in time. Without the network the planners plan the whole \
                   horizon and say so.",
-    // Off for the tools and their rows (the thesis's planner), and off in the game too
-    // until the cost-to-go knows the rider's pitch requests: with it on, the street 390's
-    // wheelie onto the skate park's platform (tests/levels/test_bot_rides.gd) lifts the
-    // front 12° instead of 19° and the rear wheel does not climb; its training rode no
-    // wheelies. A player may turn it on in the pause menu.
+    // Off for the tools and their rows (the thesis's planner, bit-exact), on in the game:
+    // the savings become trajectories (the auto N). It came on once the bot's wheelie onto
+    // the skate park's platform (tests/levels/test_bot_rides.gd) rode with it: that took
+    // wheelies in the cost-to-go's training and plans without it while the rider asks
+    // for a wheelie or a stoppie (`BikeRollout::terminal_cost`).
     default: D::Bool(false),
+    player_default: Some(D::Bool(true)),
     player: true,
     menu: "Riding",
     ..BASE

@@ -214,3 +214,49 @@ fn off_the_riding_pose(rollout: &BikeRollout) -> f64 {
     let tolerance = rollout.tolerances.rider;
     (off.x * off.x + off.z * off.z) / (tolerance * tolerance)
 }
+
+#[test]
+fn a_plan_made_while_the_rider_asks_for_a_wheelie_or_a_stoppie_has_no_cost_to_go() {
+    use crate::bike::{DriveInput, RiderPosition};
+    use crate::control::learned::{NetworkParts, ValueNetwork, VALUE_INPUT_COUNT};
+    // A network that answers ln(1 + cost) = 1 wherever it is asked.
+    let network = ValueNetwork::new(NetworkParts {
+        input_mean: vec![0.0; VALUE_INPUT_COUNT],
+        input_std: vec![1.0; VALUE_INPUT_COUNT],
+        layers: vec![(vec![0.0; VALUE_INPUT_COUNT], vec![1.0])],
+        output_mean: vec![0.0],
+        output_std: vec![1.0],
+        training: "by hand".into(),
+        bike: BikeParams::default().identity(),
+    })
+    .unwrap();
+    let mut rollout = standing_rollout(BikeParams::default());
+    rollout.value = Some(TerminalValue {
+        network: Arc::new(network),
+        remaining_s: 0.6,
+    });
+    let drive = |throttle: f64, brake: f64| DriveInput {
+        throttle,
+        brake,
+        max_speed: 5.0,
+    };
+    let rider = |forward: f64| RiderPosition {
+        forward,
+        right: 0.0,
+    };
+    let mut asked = |drive: DriveInput, rider: RiderPosition| {
+        rollout.goal = Goal {
+            lean: 0.0,
+            drive,
+            rider,
+        };
+        rollout.terminal_cost()
+    };
+    let riding = asked(drive(0.6, 0.0), rider(0.0)).expect("costed riding on");
+    assert!((riding - (1f64.exp() - 1.0)).abs() < 1e-9, "{riding}");
+    // The weight back with no throttle, or forward with no brake, asks no pitch.
+    assert!(asked(drive(0.0, 0.0), rider(-1.0)).is_some());
+    assert!(asked(drive(0.0, 0.0), rider(1.0)).is_some());
+    assert_eq!(asked(drive(0.6, 0.0), rider(-1.0)), None, "a wheelie");
+    assert_eq!(asked(drive(0.0, 0.8), rider(1.0)), None, "a stoppie");
+}
