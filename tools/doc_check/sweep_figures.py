@@ -60,8 +60,17 @@ def figures(scenarios: Path) -> dict[str, Figure]:
         # prose's minus sign.
         return f"{found.shifts[scenario]:+.2g}".replace("-", "−")
 
-    def falls(folders: str) -> str:
+    def falls(folders: str, name: str | None = None, scenario: str | None = None) -> str:
         ridden = [r for folder in folders.split(",") for r in rows(folder)]
+        if name:
+            controller, _, n = name.rpartition("-")
+            ridden = [r for r in ridden
+                      if r["controller"] == controller and str(r["trajectories"]) == n]
+        if scenario:
+            ridden = [r for r in ridden if r["scenario"] == scenario]
+        if not ridden:
+            raise FigureError(f"docs/scenarios/{folders} holds no rides of "
+                              f"{name or 'any planner'} in {scenario or 'any scenario'}")
         return f"{count(sum(r['fell'] for r in ridden))} in {count(len(ridden))}"
 
     return {
@@ -69,6 +78,7 @@ def figures(scenarios: Path) -> dict[str, Figure]:
         "sweep-beyond": Figure(beyond, r"\d+ of \d+"),
         # "+0.021": a scenario's mean paired difference, these settings − the defaults.
         "sweep-shift": Figure(shift, SHIFT),
-        # "0 in 1 920": falls in every ride of the folders, every planner.
+        # "0 in 1 920": falls in every ride of the folders, every planner; or one rider's
+        # ("combined-5"), optionally in one scenario ("push").
         "sweep-falls": Figure(falls, f"{COUNT} in {COUNT}"),
     }

@@ -64,6 +64,14 @@ class SweepFiguresTest(unittest.TestCase):
         self.assertIn("no scenario rows",
                       self.check("0 in 1<!--= sweep-falls bike/horizon/none -->")[0])
 
+    def test_falls_of_one_rider_in_one_scenario(self):
+        doc = ("2 in 10<!--= sweep-falls bike/horizon/fewer combined-4 push -->, "
+               "0 in 10<!--= sweep-falls bike/horizon/fewer combined-4 slalom -->, "
+               "2 in 20<!--= sweep-falls bike/horizon/fewer combined-4 -->")
+        self.assertEqual(self.check(doc), [])
+        self.assertIn("no rides of combined-5",
+                      self.check("0 in 1<!--= sweep-falls bike/horizon/fewer combined-5 -->")[0])
+
 
 if __name__ == "__main__":
     unittest.main()
