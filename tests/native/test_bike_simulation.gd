@@ -137,7 +137,9 @@ func test_the_optimizer_settings_shape_its_plans() -> void:
 	assert_eq(paths[0].size(), 18, "0.6 s at 30 planning steps a second")
 	assert_eq(_bike.get_warm_trajectory(), 1, "combined: the arcade rollout")
 	assert_eq(
-		_bike.get_plan_diagnostics().keys(), ["resamples", "fallen steps"], "C-PBP's own numbers"
+		_bike.get_plan_diagnostics().keys(),
+		["resamples", "fallen steps", "disagreement"],
+		"C-PBP's own numbers"
 	)
 	var stats := _bike.get_handover_stats()
 	assert_gt(stats.boundaries, 20)

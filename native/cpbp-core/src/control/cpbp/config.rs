@@ -9,6 +9,10 @@ pub const RESAMPLES: &str = "resamples";
 /// 0.1 %, so they are not stopped; docs/learned-controller.md).
 pub const FALLEN_STEPS: &str = "fallen steps";
 
+/// The name of how much a plan's trajectories disagree on the control to apply now
+/// (`Priors::disagreement`), what a trajectory count that follows it reads.
+pub const DISAGREEMENT: &str = "disagreement";
+
 /// Sizes and tuning of the planner; defaults are the specification's.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CpbpConfig {
@@ -102,6 +106,8 @@ pub struct FrameResult {
     pub blowups: usize,
     /// Share of the frame's particle steps taken after the particle's lineage had fallen.
     pub fallen_steps: f64,
+    /// How far apart the final trajectories' first controls are (`Priors::disagreement`).
+    pub disagreement: f64,
     /// The refined sequence (K·D values, within bounds), when the system has features.
     pub refined: Option<Vec<f64>>,
     /// Each final particle's belief (weights of next frame's choice of sequences).
@@ -129,6 +135,7 @@ impl FrameResult {
             diagnostics: Diagnostics(vec![
                 (RESAMPLES, self.resamples as f64),
                 (FALLEN_STEPS, self.fallen_steps),
+                (DISAGREEMENT, self.disagreement),
             ]),
             value_samples: self.value_samples,
         }

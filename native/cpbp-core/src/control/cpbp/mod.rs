@@ -16,11 +16,15 @@ mod rollout;
 mod sequences;
 mod spec;
 
-pub use config::{CpbpConfig, FrameResult, WarmStart, DEFAULT_SEED, FALLEN_STEPS, RESAMPLES};
+pub use config::{
+    CpbpConfig, FrameResult, WarmStart, DEFAULT_SEED, DISAGREEMENT, FALLEN_STEPS, RESAMPLES,
+};
 pub(crate) use frame::mix;
 pub(crate) use planner::rollout_pool;
 pub use planner::CpbpPlanner;
 pub use priors::{AppliedControls, Priors};
 pub use rollout::RolloutSystem;
 pub use sequences::shift_one_step;
-pub use spec::{COMBINED, GUIDED, MUTATION_SCALE, OPTIMIZER, PARAMETERS};
+pub use spec::{
+    AGREEING_TRAJECTORIES, AGREEMENT, COMBINED, GUIDED, MUTATION_SCALE, OPTIMIZER, PARAMETERS,
+};

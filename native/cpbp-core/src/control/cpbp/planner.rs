@@ -163,6 +163,9 @@ impl CpbpPlanner {
         } else {
             None
         };
+        let disagreement = self
+            .priors
+            .disagreement(sequences.iter().map(|s| &s[..dim]));
         self.remember(&sequences, &end_weights, best, refined.clone(), dim);
         self.note_applied(&control);
         FrameResult {
@@ -180,6 +183,7 @@ impl CpbpPlanner {
                     .map(|r| r.particles.len())
                     .sum::<usize>()
                     .max(1) as f64,
+            disagreement,
             refined,
             beliefs: end_weights,
             paths,

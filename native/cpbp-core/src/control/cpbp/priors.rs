@@ -88,6 +88,28 @@ impl Priors {
             .sum()
     }
 
+    /// How much a plan's trajectories disagree on what to do now: over the planned
+    /// dimensions, the largest standard deviation of their first controls in units of the
+    /// static prior's σ (0 when they all begin alike, or there is one).
+    pub fn disagreement<'a>(&self, first_controls: impl Iterator<Item = &'a [f64]> + Clone) -> f64 {
+        let n = first_controls.clone().count() as f64;
+        if n < 2.0 {
+            return 0.0;
+        }
+        (0..self.dim())
+            .filter(|&d| self.planned[d])
+            .map(|d| {
+                let mean = first_controls.clone().map(|u| u[d]).sum::<f64>() / n;
+                let variance = first_controls
+                    .clone()
+                    .map(|u| (u[d] - mean).powi(2))
+                    .sum::<f64>()
+                    / n;
+                variance.sqrt() / self.sigma_static[d]
+            })
+            .fold(0.0, f64::max)
+    }
+
     /// `u` clamped to the bounds, non-finite entries replaced by the static mean.
     pub fn clamp(&self, u: &mut [f64]) {
         for (d, value) in u.iter_mut().enumerate().take(self.dim()) {
@@ -157,6 +179,23 @@ mod tests {
         };
         assert_eq!(priors.product(0, 1.0, 1.0, Some(2.0)), (0.0, 0.0));
         assert_eq!(priors.cost(&[2.5], &[1.0], &[1.0]), 0.0);
+    }
+
+    #[test]
+    fn disagreement_is_the_widest_spread_of_the_first_controls_in_prior_sigmas() {
+        let priors = Priors {
+            planned: vec![true, true, false],
+            ..Priors::uniform(3, 2.0, 1.0, 0.5, 3.0)
+        };
+        // Dimension 0 alike, dimension 1 at ±1 (σ 1, half the prior's 2), dimension 2
+        // far apart but not planned.
+        let firsts = [[0.5, 1.0, -3.0], [0.5, -1.0, 3.0]];
+        let spread = priors.disagreement(firsts.iter().map(|u| u.as_slice()));
+        assert!((spread - 0.5).abs() < 1e-12);
+        assert_eq!(
+            priors.disagreement(firsts[..1].iter().map(|u| u.as_slice())),
+            0.0
+        );
     }
 
     #[test]
