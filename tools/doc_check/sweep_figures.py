@@ -16,6 +16,7 @@ from pathlib import Path
 
 from planner_scenarios.rows import ScenarioRows
 from planner_scenarios.sweep import RiderSweep, folder_sweep
+from planner_scenarios.timing import paired_ratio, timing_files
 
 from .experiment_figures import COUNT
 from .formats import count
@@ -73,7 +74,20 @@ def figures(scenarios: Path) -> dict[str, Figure]:
                               f"{name or 'any planner'} in {scenario or 'any scenario'}")
         return f"{count(sum(r['fell'] for r in ridden))} in {count(len(ridden))}"
 
+    def timing(folder: str, name: str | None = None) -> str:
+        defaults, settings = (r.load() for r in timing_files(scenarios / folder))
+        if not defaults or not settings:
+            raise FigureError(f"docs/scenarios/{folder} has no timing rows "
+                              f"(tools/planner-scenarios time)")
+        try:
+            return paired_ratio(defaults, settings, name).text()
+        except ValueError as error:
+            raise FigureError(f"docs/scenarios/{folder}: {error}") from None
+
     return {
+        # "0.47 (0.44–0.50)": planning time with the folder's settings ÷ the defaults,
+        # paired ride by ride in its timing rows (one rider's, or every rider's).
+        "sweep-timing": Figure(timing, r"[\d.]+ \([\d.]+–[\d.]+\)"),
         # "1 of 16": a planner's paired tests beyond chance after Holm over its folder's.
         "sweep-beyond": Figure(beyond, r"\d+ of \d+"),
         # "+0.021": a scenario's mean paired difference, these settings − the defaults.

@@ -16,6 +16,7 @@ from .compare import write_comparison
 from .report import write_report
 from .rows import FIELDS, ScenarioRows
 from .sweep import settings_text, variant_folders, write_sweep
+from .timing import start_timing, summary
 
 PROJECT_ROOT = Path(__file__).resolve().parents[2]
 BINARY = PROJECT_ROOT / "native" / "target" / "release" / "cpbp-scenarios"
@@ -35,6 +36,8 @@ def main(argv: list[str] | None = None) -> int:
                          args.base_count)
         rows.load()
         settings = _settings(args, out, rows)
+        if args.command == "time":
+            return time_settings(args, out, settings)
         if args.command in ("run", "all"):
             bike = Path(args.bike).stem if args.bike else REFERENCE_BIKE
             keep_value_record(out, PROJECT_ROOT, bike, settings)
@@ -67,6 +70,22 @@ def sweep(out: Path, under: Path, base_count: int | None = None) -> int:
                 _table_name(out), under / "sweep.md", base_count)
     print(f"planner-scenarios: {under / 'sweep.md'} holds {len(folders)} folder(s) against "
           f"{out}", file=sys.stderr)
+    return 0
+
+
+def time_settings(args: argparse.Namespace, out: Path, settings: dict[str, str]) -> int:
+    """Rides OUT's seeds at the defaults and with OUT's settings, scenario by scenario in
+    turn, into OUT's timing files, and prints the paired planning-time ratios."""
+    if not settings or not args.scenarios or args.scenarios == "all":
+        raise ValueError("time takes the folder's --set settings and the --scenarios to "
+                         "time them on, by name")
+    defaults, these = start_timing(out)
+    for scenario in args.scenarios.split(","):
+        ride(args, defaults, sets=[], scenarios=scenario)
+        ride(args, these, sets=args.set, scenarios=scenario)
+    for line in summary(out):
+        print(f"planner-scenarios: planning with {settings_text(out)} ÷ the defaults, "
+              f"{line}")
     return 0
 
 
@@ -112,9 +131,12 @@ def _parser() -> argparse.ArgumentParser:
                     "brakes: brake60, brake90, brake-bend; the test level's "
                     "logs: logs), paired by seed. Rows are "
                     "appended to OUT/scenarios.csv as each ride ends; rerunning resumes.")
-    parser.add_argument("command", nargs="?", choices=("all", "run", "report", "sweep"),
+    parser.add_argument("command", nargs="?",
+                        choices=("all", "run", "report", "sweep", "time"),
                         default="all", help="sweep: OUT's table against each folder of "
-                        "rows under --variants, ridden with other settings (sweep.md there)")
+                        "rows under --variants, ridden with other settings (sweep.md there); "
+                        "time: OUT's settings against the defaults on the same seeds, ridden "
+                        "in turn (OUT/timing-*.csv), the planning times paired")
     parser.add_argument("--out", default="docs/scenarios", help="directory of scenarios.csv "
                         "and the report (default docs/scenarios)")
     parser.add_argument("--controllers", default=",".join(PLANNERS),
@@ -146,19 +168,21 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def ride(args: argparse.Namespace, rows: ScenarioRows) -> None:
-    """Builds cpbp-scenarios and streams its rows into the file, skipping saved ones."""
+def ride(args: argparse.Namespace, rows: ScenarioRows, sets: list[str] | None = None,
+         scenarios: str | None = None) -> None:
+    """Builds cpbp-scenarios and streams its rows into the file, skipping saved ones
+    (with `sets` and `scenarios` instead of the command line's, when given)."""
     subprocess.run([str(PROJECT_ROOT / "tools" / "cargo"), "build", "--quiet", "--release",
                     "-p", "cpbp-core", "--bin", "cpbp-scenarios"], check=True)
     command = [str(BINARY), "--controllers", args.controllers, "--counts", args.counts,
                "--seeds", args.seeds, "--physics", args.physics]
-    if args.scenarios:
-        command += ["--scenarios", args.scenarios]
+    if scenarios or args.scenarios:
+        command += ["--scenarios", scenarios or args.scenarios]
     if args.bike:
         command += ["--bike", args.bike]
     if args.model:
         command += ["--model", args.model]
-    for assignment in args.set:
+    for assignment in args.set if sets is None else sets:
         command += ["--set", assignment]
     if rows.path.exists():
         command += ["--skip", str(rows.path)]

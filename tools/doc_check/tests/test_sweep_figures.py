@@ -73,5 +73,17 @@ class SweepFiguresTest(unittest.TestCase):
                       self.check("0 in 1<!--= sweep-falls bike/horizon/fewer combined-5 -->")[0])
 
 
+    def test_timing_is_the_paired_ratio_of_the_folders_timing_rows(self):
+        folder = Path(self.tmp.name) / "bike" / "horizon" / "short"
+        for name, ms in (("timing-defaults.csv", 10.0), ("timing-settings.csv", 4.0)):
+            ride(folder / "t", 5, 0.0, 0)
+            text = (folder / "t" / "scenarios.csv").read_text().replace(",5\n", f",{ms}\n")
+            (folder / name).write_text(text)
+        doc = "0.40 (0.40–0.40)<!--= sweep-timing bike/horizon/short combined-5 -->"
+        self.assertEqual(self.check(doc), [])
+        self.assertIn("no timing rows",
+                      self.check("0.4 (0.4–0.4)<!--= sweep-timing bike/horizon/fewer -->")[0])
+
+
 if __name__ == "__main__":
     unittest.main()
