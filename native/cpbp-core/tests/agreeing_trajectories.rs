@@ -2,15 +2,12 @@
 //! with `agreeing_trajectories` after a plan whose trajectories' first controls agreed
 //! (`disagreement` below `agreement`), with all N otherwise; off, every plan has N.
 
-use std::sync::Arc;
+mod common;
 
-use cpbp_core::bike::Placement;
 use cpbp_core::control::cpbp::{AGREEING_TRAJECTORIES, AGREEMENT, COMBINED, DISAGREEMENT};
 use cpbp_core::control::{Goal, PlanningConfig, PlanningSession};
+use cpbp_core::physics::PhysicsModel;
 use cpbp_core::settings::{SettingValues, Value};
-use cpbp_core::simulation::{Simulation, SimulationConfig};
-use cpbp_core::terrain::Terrain;
-use glam::DVec3;
 
 const N: usize = 5;
 const PLANS: usize = 30;
@@ -18,14 +15,7 @@ const PLANS: usize = 30;
 /// The trajectory count and disagreement of each of `PLANS` plans from a standing start
 /// with `agreeing` trajectories after an agreeing plan (0: off).
 fn plans(agreeing: i64, agreement: f64) -> Vec<(usize, f64)> {
-    let sim = Simulation::new(
-        SimulationConfig::default(),
-        Arc::new(Terrain::flat()),
-        Placement {
-            position: DVec3::new(0.0, 0.02, 0.0),
-            rotation: glam::DQuat::IDENTITY,
-        },
-    );
+    let sim = common::flat_ride_in(PhysicsModel::Exact);
     let mut parameters = SettingValues::holding(COMBINED.parameters.iter().copied());
     parameters
         .set(AGREEING_TRAJECTORIES.name, Value::Int(agreeing))
