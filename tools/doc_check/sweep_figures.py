@@ -14,7 +14,7 @@ import math
 from functools import cache
 from pathlib import Path
 
-from planner_scenarios.rows import ScenarioRows
+from planner_scenarios.rows import ScenarioRows, rider_name
 from planner_scenarios.sweep import RiderSweep, folder_sweep
 from planner_scenarios.timing import paired_ratio, timing_files
 
@@ -64,9 +64,7 @@ def figures(scenarios: Path) -> dict[str, Figure]:
     def falls(folders: str, name: str | None = None, scenario: str | None = None) -> str:
         ridden = [r for folder in folders.split(",") for r in rows(folder)]
         if name:
-            controller, _, n = name.rpartition("-")
-            ridden = [r for r in ridden
-                      if r["controller"] == controller and str(r["trajectories"]) == n]
+            ridden = [r for r in ridden if rider_name(r) == name]
         if scenario:
             ridden = [r for r in ridden if r["scenario"] == scenario]
         if not ridden:

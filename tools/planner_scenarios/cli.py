@@ -41,6 +41,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.command in ("run", "all"):
             bike = Path(args.bike).stem if args.bike else REFERENCE_BIKE
             keep_value_record(out, PROJECT_ROOT, bike, settings)
+            build_binary()
             ride(args, rows)
         if args.command in ("report", "all"):
             write_report(rows.load(), out, args.bike, settings)
@@ -79,6 +80,7 @@ def time_settings(args: argparse.Namespace, out: Path, settings: dict[str, str])
     if not settings or not args.scenarios or args.scenarios == "all":
         raise ValueError("time takes the folder's --set settings and the --scenarios to "
                          "time them on, by name")
+    build_binary()
     defaults, these = start_timing(out)
     for scenario in args.scenarios.split(","):
         ride(args, defaults, sets=[], scenarios=scenario)
@@ -168,12 +170,16 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def ride(args: argparse.Namespace, rows: ScenarioRows, sets: list[str] | None = None,
-         scenarios: str | None = None) -> None:
-    """Builds cpbp-scenarios and streams its rows into the file, skipping saved ones
-    (with `sets` and `scenarios` instead of the command line's, when given)."""
+def build_binary() -> None:
+    """Builds cpbp-scenarios as the tree has it, once a command."""
     subprocess.run([str(PROJECT_ROOT / "tools" / "cargo"), "build", "--quiet", "--release",
                     "-p", "cpbp-core", "--bin", "cpbp-scenarios"], check=True)
+
+
+def ride(args: argparse.Namespace, rows: ScenarioRows, sets: list[str] | None = None,
+         scenarios: str | None = None) -> None:
+    """Streams cpbp-scenarios's rows into the file, skipping saved ones (with `sets` and
+    `scenarios` instead of the command line's, when given)."""
     command = [str(BINARY), "--controllers", args.controllers, "--counts", args.counts,
                "--seeds", args.seeds, "--physics", args.physics]
     if scenarios or args.scenarios:

@@ -28,6 +28,11 @@ def parse(line: str) -> dict:
             "planning_ms": float(row["planning_ms"]), "extra": _measures(row["extra"])}
 
 
+def rider_name(row: dict) -> str:
+    """The planner and N a row was ridden by, as the tools and docs name it: `combined-5`."""
+    return f"{row['controller']}-{row['trajectories']}"
+
+
 def _measures(text: str) -> dict[str, float]:
     """`name=value;…` as numbers by name ({} for none)."""
     measures = {}

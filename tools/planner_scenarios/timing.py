@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from .rows import ScenarioRows
+from .rows import ScenarioRows, rider_name
 from .stats import t_interval
 
 DEFAULTS = "timing-defaults.csv"
@@ -55,7 +55,7 @@ def paired_ratio(defaults: list[dict], settings: list[dict], rider: str | None =
         return row["scenario"], row["controller"], row["trajectories"], row["seed"]
 
     def chosen(row: dict) -> bool:
-        return ((rider is None or f"{row['controller']}-{row['trajectories']}" == rider)
+        return ((rider is None or rider_name(row) == rider)
                 and (scenario is None or row["scenario"] == scenario)
                 and row["planning_ms"] > 0)
 
@@ -73,7 +73,7 @@ def paired_ratio(defaults: list[dict], settings: list[dict], rider: str | None =
 def summary(folder: Path) -> list[str]:
     """Each rider's ratio and all riders' together, as lines to print."""
     defaults, settings = (rows.load() for rows in timing_files(folder))
-    riders = sorted({f"{r['controller']}-{r['trajectories']}" for r in settings})
+    riders = sorted({rider_name(r) for r in settings})
     lines = [f"{rider}: {paired_ratio(defaults, settings, rider).text()}" for rider in riders]
     pooled = paired_ratio(defaults, settings)
     lines.append(f"all: {pooled.text()} over {pooled.pairs} paired rides")
