@@ -83,11 +83,12 @@ step "gdlint"               bash -c "$(declare -f gdscript_files); gdscript_file
 step "gdformat"             bash -c "$(declare -f gdscript_files); gdscript_files | xargs .venv/bin/gdformat --check"
 # The GDScript runner fails a deliberately failing fixture suite and counts it right.
 step "test runner self-test" tools/test-runner-selftest.sh
-# The GDScript suites under tests/, headless: the levels, menus, settings, replay, ghosts,
-# cameras, and the bot rides (a scripted rider rides a lap of the track, races its ghost,
-# climbs the skate park's steps and stops on a foot through the player's own inputs).
+# The GDScript suites under tests/, headless: the levels, menus, settings, medals, replay,
+# ghosts, cameras, and the bot rides (a scripted rider rides a lap of the track, races its
+# ghost, climbs the skate park's steps and stops on a foot through the player's own inputs,
+# and earns gold in every lesson of the School through a gamepad's events).
 step "GDScript suites"      godot_suites
-# Settings, records and a ghost saved in a loop and killed with SIGKILL read back whole.
+# Settings, records, medals and a ghost saved in a loop and killed with SIGKILL read back whole.
 step "saves survive kill -9" tools/kill-test.sh 8
 # Quick mode with real workers: a run killed part-way resumes with nothing lost or doubled.
 step "experiment quick run" .venv/bin/python -m unittest -v cpbp_experiment.tests.check_quick_run
@@ -99,7 +100,17 @@ step "experiment reproducibility" .venv/bin/python -m unittest -v cpbp_experimen
 step "experiment on a Dask cluster" .venv/bin/python -m unittest -v cpbp_experiment.tests.check_cluster
 screenshots() {
   local game=res://scenes/game/game.tscn levels=res://scenes/levels
+  local lessons=res://scenes/challenges/lessons
   tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/start-menu.png \
+    && tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/school.png 30 \
+         "--copy=res://tests/fixtures/medals/some_medals.cfg>user://test-medals.cfg" \
+    && tools/screenshot.sh $game build/screenshots/lesson-briefing.png 60 \
+         --set=challenge_path=$lessons/counter_steer.tres \
+    && tools/screenshot.sh $game build/screenshots/lesson-medal.png 790 \
+         --set=challenge_path=$lessons/ride_off.tres --hold=throttle:0.5@0-117 \
+         --hold=brake:1.0@689-790 \
+    && tools/screenshot.sh $game build/screenshots/lesson-failed.png 300 \
+         --set=challenge_path=$lessons/ride_off.tres --hold=throttle:0.5 \
     && tools/screenshot.sh $game build/screenshots/test-level.png 150 \
          --set=level_path=$levels/test_level/test_level.tscn \
     && tools/screenshot.sh $game build/screenshots/track.png 240 \
@@ -148,7 +159,8 @@ bike_gallery() {
   done
 }
 
-# Screenshots of the menus, levels, cameras, a full brake's tyre marks, a crash's sparks,
+# Screenshots of the menus (the School on a first launch and with medals), a lesson's
+# briefing, medal and failed try, the levels, cameras, a full brake's tyre marks, a crash's sparks,
 # dust on the track's gravel, replay, ghost race and each bike under Xvfb, failing on a blank
 # picture (the ghost race races the lap the bot rode in the GDScript suites).
 step "screenshots (Xvfb)"   screenshots

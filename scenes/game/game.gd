@@ -17,6 +17,9 @@ const RESULT_PAUSE := 2.5
 @export_file("*.tscn") var level_path := ""
 ## Bike to ride (a BikeDescription file); empty: the one chosen in the settings.
 @export_file("*.tres") var bike_path := ""
+## A lesson or challenge to ride (a Challenge file); empty: a free ride on the level. Its
+## level replaces `level_path`.
+@export_file("*.tres") var challenge_path := ""
 
 ## The bike ridden, by its file's name (its key in `Bikes` for a bike players choose).
 var bike_key := ""
@@ -25,6 +28,10 @@ var level: Level
 var bike: BikeSimulation
 ## The ghost of the best lap, on levels with laps (null elsewhere).
 var ghost_race: GhostRace
+## The lesson or challenge ridden (null: a free ride), and what the player reads of it
+## (its briefing and result).
+var challenge_run: ChallengeRun
+var challenge_card: ChallengeCard
 ## The last run, kept for the replay, and the replay's player.
 var recorder: ReplayRecorder
 var replay: Replay
@@ -71,6 +78,9 @@ static func _bike_description(path: String) -> BikeDescription:
 
 
 func _ready() -> void:
+	var challenge := _chosen_challenge()
+	if challenge != null:
+		level_path = challenge.level
 	var path := (
 		level_path if not level_path.is_empty() else Levels.path_of(Settings.get_value(&"level"))
 	)
@@ -138,6 +148,7 @@ func _ready() -> void:
 	Settings.changed.connect(_apply_setting)
 	for key: StringName in Settings.defaults:
 		_apply_setting(key)
+	_start_challenge(challenge)
 	restart()
 
 
@@ -152,6 +163,8 @@ func _physics_process(delta: float) -> void:
 	if bike.is_waiting_for_throttle():
 		return
 	var outcome := level.judge(bike, delta)
+	if challenge_run != null:
+		outcome = challenge_run.judge_attempt(outcome, delta)
 	if outcome != Level.RIDING:
 		_finish(outcome)
 
@@ -197,6 +210,9 @@ func restart() -> void:
 		recorder.start_run()
 	level.begin_attempt(bike, _attempt_seed)
 	_attempt_seed += 1
+	if challenge_run != null:
+		challenge_run.begin()
+		challenge_card.show_briefing()
 	_finished_for = -1.0
 	_driver.stopping = false
 
@@ -217,6 +233,9 @@ func watch_replay() -> void:
 func cycle_spawn(step: int) -> void:
 	var spawns := level.spawn_points()
 	if spawns.size() == 0:
+		return
+	if challenge_run != null:
+		_hud.announce("A lesson starts where it starts: R / B to try again")
 		return
 	_spawn_index = posmod(_spawn_index + step, spawns.size())
 	restart()
@@ -259,6 +278,10 @@ func _finish(outcome: String) -> void:
 	_driver.stopping = level.automatic
 	level.finish_attempt(outcome)
 	attempts += 1
+	if challenge_run != null:
+		successes += int(outcome == Level.GOAL)
+		challenge_run.finish()
+		return
 	match outcome:
 		Level.GOAL:
 			successes += 1
@@ -268,6 +291,35 @@ func _finish(outcome: String) -> void:
 		Level.FELL:
 			var fell := "Fell: %s" % _crash_cause if not _crash_cause.is_empty() else "Fell"
 			_hud.announce(fell if level.automatic else fell + "\nB / R to respawn, A / T to lift")
+
+
+## The lesson or challenge `challenge_path` names (null: none, or one that cannot be
+## ridden, with an error saying why; then the ride is free).
+func _chosen_challenge() -> Challenge:
+	if challenge_path.is_empty():
+		return null
+	var challenge := ChallengeCatalogue.load_challenge(challenge_path)
+	if challenge != null and not challenge.problem().is_empty():
+		push_error("Game: %s cannot be ridden: %s" % [challenge_path, challenge.problem()])
+		return null
+	return challenge
+
+
+## Rides `challenge` (null: a free ride, where no challenge's markers show).
+func _start_challenge(challenge: Challenge) -> void:
+	if challenge == null:
+		for area in ChallengeArea.all_in(level):
+			area.visible = false
+		return
+	challenge_run = ChallengeRun.new()
+	challenge_run.name = "ChallengeRun"
+	add_child(challenge_run)
+	challenge_run.setup(challenge_path, challenge, self, _driver)
+	var spawn := challenge_run.spawn_point()
+	_spawn_index = maxi(level.spawn_points().find(spawn), 0) if spawn != null else 0
+	challenge_card = challenge_run.card
+	challenge_card.retry_requested.connect(restart)
+	challenge_card.menu_requested.connect(quit_to_menu)
 
 
 func _on_replay_closed() -> void:

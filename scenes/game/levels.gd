@@ -8,7 +8,7 @@ const ALL := {
 	"skate_park": "res://scenes/levels/skate_park/skate_park.tscn",
 }
 const NAMES := {
-	"test_level": "Test level",
+	"test_level": "Thesis test (rides itself)",
 	"track": "Track",
 	"skate_park": "Skate park",
 }

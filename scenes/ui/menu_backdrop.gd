@@ -24,6 +24,8 @@ var _level: Level
 var _bike_key := ""
 var _bike: BikeSimulation
 var _bike_settle_frames_left := 0
+## Where the bike stands: the start shown.
+var _start := Transform3D()
 
 
 func _ready() -> void:
@@ -48,20 +50,38 @@ func _ready() -> void:
 	resized.connect(func() -> void: _viewport.render_target_update_mode = SubViewport.UPDATE_ONCE)
 
 
-## Shows level `key` (the first level for an unknown key), drawn once.
+## Shows level `key` (the first level for an unknown key, the level at `key` for a scene's
+## path), drawn once.
 func show_level(key: String) -> void:
+	var path := key if key.begins_with("res://") else Levels.path_of(key)
+	show_scene(path if not path.is_empty() else Levels.ALL.values()[0])
+
+
+## Shows the lesson or challenge at `path` where it starts, with only its markers.
+func show_challenge(path: String) -> void:
+	var challenge := ChallengeCatalogue.load_challenge(path)
+	if challenge != null and challenge.problem().is_empty():
+		show_scene(challenge.level, challenge.area)
+
+
+## Shows the level scene at `path` from its first spawn point, or from the spawn point of
+## its ChallengeArea `area` with that area's markers alone.
+func show_scene(path: String, area := NodePath()) -> void:
 	for old: Node in _viewport.get_children():
 		if old is Level or old is Camera3D or old is BikeSimulation:
 			old.queue_free()
 	_bike = null
-	var path := Levels.path_of(key)
-	if path.is_empty():
-		path = Levels.ALL.values()[0]
 	var level := (load(path) as PackedScene).instantiate() as Level
 	_level = level
 	_viewport.add_child(level)
+	var shown := level.get_node_or_null(area) as ChallengeArea if not area.is_empty() else null
+	for other in ChallengeArea.all_in(level):
+		other.visible = other == shown
 	var spawns := level.spawn_points()
+	if shown != null and shown.spawn_point() != null:
+		spawns = [shown.spawn_point()]
 	var start := spawns[0].spawn_transform() if not spawns.is_empty() else Transform3D()
+	_start = start
 	var camera := Camera3D.new()
 	camera.fov = 60.0
 	_viewport.add_child(camera)
@@ -88,9 +108,7 @@ func show_bike(key: String) -> void:
 	bike.get_node(^"Sound").free()
 	bike.bike = description
 	bike.wait_for_throttle = true
-	var spawns := _level.spawn_points()
-	if not spawns.is_empty():
-		bike.transform = spawns[0].spawn_transform()
+	bike.transform = _start
 	bike.terrain_root = NodePath("../" + _level.name)
 	_bike = bike
 	_viewport.add_child(bike)

@@ -6,10 +6,13 @@ extends Control
 ## (d-pad/stick to move, A to choose).
 ## `--native-info` prints the native module and exits (smoke tests, bug reports).
 
-## The player chose a level to ride (its key in `Levels.ALL`).
+## The player chose a level to ride (its key in `Levels.ALL`), or a lesson (its file).
 signal ride_requested(level: String)
+signal lesson_requested(path: String)
 
 const GAME := "res://scenes/game/game.tscn"
+const SCHOOL := "res://scenes/levels/school/school.tscn"
+const LEVELS_HINT := "Choose the School or a level    Esc / B: quit"
 
 @onready var _version_label: Label = %VersionLabel
 @onready var _status_label: Label = %StatusLabel
@@ -21,6 +24,8 @@ const GAME := "res://scenes/game/game.tscn"
 @onready var _auto_speed: OptionButton = %AutoSpeed
 @onready var _best_lap: Label = %BestLap
 @onready var _backdrop: MenuBackdrop = $Backdrop
+@onready var _choices: Control = $Choices
+@onready var _school: SchoolMenu = %School
 
 
 func _ready() -> void:
@@ -31,6 +36,7 @@ func _ready() -> void:
 	# Only the menu that is the running scene navigates; embedded ones just report.
 	if get_tree().current_scene == self:
 		ride_requested.connect(_ride)
+		lesson_requested.connect(func(path: String) -> void: ChallengeRun.ride(get_tree(), path))
 	_build_choices()
 	if not NativeModule.is_loaded():
 		_status_label.text = "The native simulation is missing; the game cannot start."
@@ -38,16 +44,78 @@ func _ready() -> void:
 		for button: Button in _levels.get_children():
 			button.disabled = true
 		return
-	var chosen := _levels.get_node_or_null(NodePath(str(Settings.get_value(&"level")))) as Button
-	(chosen if chosen != null else _levels.get_child(0) as Button).grab_focus()
+	_focus_where_the_player_left_off()
 
 
 func _unhandled_input(event: InputEvent) -> void:
-	if event.is_action_pressed(&"ui_cancel"):
+	if not event.is_action_pressed(&"ui_cancel"):
+		return
+	get_viewport().set_input_as_handled()
+	if _school.visible:
+		close_school()
+	else:
 		get_tree().quit()
 
 
+## Shows the School's lessons in place of the levels, the focus on lesson `index`.
+func open_school(index := 0) -> void:
+	_choices.visible = false
+	_school.visible = true
+	_status_label.text = "Pick a lesson    Esc / B: back"
+	_school.show_lessons(ChallengeCatalogue.game(), str(Settings.get_value(&"bike")))
+	var button := _school.lesson_button(index)
+	if button != null and not button.disabled:
+		button.grab_focus()
+	elif _school.lesson_button(0) != null:
+		_school.lesson_button(0).grab_focus()
+
+
+## Back from the School to the levels, the focus on its entry.
+func close_school() -> void:
+	_school.visible = false
+	_choices.visible = true
+	_status_label.text = LEVELS_HINT
+	(_levels.get_node(^"School") as Button).grab_focus()
+
+
+## Where the menu opens: on the first lesson until it has a medal, else on what was played
+## last (a lesson in the School, or a level).
+func _focus_where_the_player_left_off() -> void:
+	var catalogue := ChallengeCatalogue.game()
+	var last := Progress.last_played()
+	var lessons := catalogue.lessons.map(
+		func(path: String) -> String: return path.get_file().get_basename()
+	)
+	var first := (
+		ChallengeCatalogue.load_challenge(catalogue.lessons[0])
+		if not catalogue.lessons.is_empty()
+		else null
+	)
+	if first != null and Progress.best_medal(first.key()) == Challenge.Medal.NONE:
+		open_school(0)
+	elif lessons.has(last):
+		open_school(lessons.find(last))
+	else:
+		var chosen := (
+			_levels.get_node_or_null(
+				NodePath(last if Levels.ALL.has(last) else str(Settings.get_value(&"level")))
+			)
+			as Button
+		)
+		(chosen if chosen != null else _levels.get_child(0) as Button).grab_focus()
+
+
 func _build_choices() -> void:
+	var school := Button.new()
+	school.name = "School"
+	school.text = "School: learn to ride"
+	school.add_theme_font_size_override(&"font_size", 26)
+	school.pressed.connect(open_school)
+	school.focus_entered.connect(func() -> void: _backdrop.show_level(SCHOOL))
+	_levels.add_child(school)
+	_school.lesson_chosen.connect(func(path: String) -> void: lesson_requested.emit(path))
+	_school.closed.connect(close_school)
+	_school.lesson_focused.connect(_backdrop.show_challenge)
 	for key: String in Levels.ALL:
 		var button := Button.new()
 		button.name = key
@@ -127,4 +195,5 @@ func _print_native_info_and_quit() -> void:
 
 func _ride(level: String) -> void:
 	Settings.set_value(&"level", level)
+	Progress.set_last_played(level)
 	get_tree().change_scene_to_file(GAME)

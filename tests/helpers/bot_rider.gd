@@ -4,12 +4,18 @@ extends Node
 ## it presses the throttle, brake and turn actions (with analog strengths, as a gamepad
 ## would) to follow a Path3D at a chosen speed: it asks for the path's curvature a little
 ## ahead and corrects its heading and sideways errors. Told to wheelie, it pulls the rider
-## stick back and opens the throttle wide. It never touches the bike's state.
+## stick back and opens the throttle wide. It never touches the bike's state. With
+## `through_pad` its hands are a gamepad's: every press is a pad axis event (PadHands).
 
 ## Curvature asked per radian of heading error (1/m) and per metre of sideways error
-## (1/m²): errors fade over a second or two at riding speeds.
+## (1/m²): errors fade over a second or two at riding speeds. With `steady_at_speed`,
+## faster than about 25 km/h the gains shrink with the speed (HEADING_RATE / v, SIDE_RATE /
+## v²), so errors fade in the same time as at 25 km/h: at 60 km/h the fixed gains asked
+## for lean that swung the bike from side to side.
 const HEADING_GAIN := 0.25
 const SIDE_GAIN := 0.04
+const HEADING_RATE := 1.75
+const SIDE_RATE := 1.95
 const TURN_ACTIONS: Array[StringName] = [&"steer_left", &"steer_right"]
 const DRIVE_ACTIONS: Array[StringName] = [&"brake", &"throttle"]
 ## Trigger per m/s of speed error: the throttle's, and the brake's (the whole brake answers
@@ -31,6 +37,11 @@ var preview := 0.5
 var wheelie := false
 ## Distance along the path (m) of the bike's nearest point, as of the last tick.
 var offset := 0.0
+## Press through pad events (PadHands) rather than the actions themselves.
+var through_pad := false
+## Gains that shrink with the speed above 25 km/h (see HEADING_RATE); off, the rides the
+## level tests were tuned on stay as they were.
+var steady_at_speed := false
 
 
 func _physics_process(_delta: float) -> void:
@@ -54,9 +65,12 @@ func _physics_process(_delta: float) -> void:
 	var heading_error := heading.signed_angle_to(tangent, Vector3.UP)
 	var side_error := signf(heading.cross(to_path).y) * to_path.length()
 	var bend := _path_curvature(fposmod(offset + speed * preview, length))
-	var curvature := bend + HEADING_GAIN * heading_error + SIDE_GAIN * side_error
+	var moving := maxf(absf(speed), 0.1) if steady_at_speed else 0.0
+	var heading_gain := minf(HEADING_GAIN, HEADING_RATE / moving) if moving > 0.0 else HEADING_GAIN
+	var side_gain := minf(SIDE_GAIN, SIDE_RATE / (moving * moving)) if moving > 0.0 else SIDE_GAIN
+	var curvature := bend + heading_gain * heading_error + side_gain * side_error
 	var stick := -curvature / BikeSimulation.max_turn_curvature()
-	_press_axis(TURN_ACTIONS, clampf(stick, -1.0, 1.0))
+	_press(TURN_ACTIONS, clampf(stick, -1.0, 1.0))
 	var kmh: float = speed_along.call(offset) if speed_along.is_valid() else speed_kmh
 	var wanted := kmh / 3.6
 	var error := wanted - speed
@@ -65,8 +79,8 @@ func _physics_process(_delta: float) -> void:
 	# brake more lightly, as its trigger gives the bike's whole brake.
 	var gain := THROTTLE_GAIN if error > 0.0 else BRAKE_GAIN
 	var drive := clampf(gain * error, -1.0, 1.0) if wanted > 0.0 else -1.0
-	_press_axis(DRIVE_ACTIONS, 1.0 if wheelie else drive)
-	_press_axis(RIDER_ACTIONS, -1.0 if wheelie else 0.0)
+	_press(DRIVE_ACTIONS, 1.0 if wheelie else drive)
+	_press(RIDER_ACTIONS, -1.0 if wheelie else 0.0)
 
 
 ## Signed curvature of the path at `at` (m along it; 1/m, positive turning left): the turn
@@ -85,6 +99,15 @@ func _path_curvature(at: float) -> float:
 func release() -> void:
 	for action: StringName in TURN_ACTIONS + DRIVE_ACTIONS + RIDER_ACTIONS:
 		Input.action_release(action)
+	if through_pad:
+		PadHands.release(TURN_ACTIONS + DRIVE_ACTIONS + RIDER_ACTIONS)
+
+
+func _press(actions: Array[StringName], value: float) -> void:
+	if through_pad:
+		PadHands.press_axis(actions, value)
+	else:
+		_press_axis(actions, value)
 
 
 ## Presses `actions[1]` for positive `value` and `actions[0]` for negative, with its size as

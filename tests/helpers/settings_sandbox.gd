@@ -1,24 +1,28 @@
 class_name SettingsSandbox
 extends RefCounted
-## Test helper: points the Settings autoload at scratch files (defaults, no records, no
-## ghosts) and back again. The suites already run in a data home of their own
+## Test helper: points the Settings and Progress autoloads at scratch files (defaults, no
+## records, no ghosts, no medals) and back again. The suites already run in a data home of their own
 ## (tools/run-suites.sh); this gives each test a clean start within it.
 
 const SETTINGS := "user://test-settings.cfg"
 const RECORDS := "user://test-records.cfg"
 const GHOSTS := "user://test-ghosts"
+const MEDALS := "user://test-medals.cfg"
 
 
 ## Switches Settings to empty scratch files (defaults). Whatever is missing is made: the
 ## first test of a fresh data home finds no folders at all.
 static func enter() -> void:
-	for path: String in [SETTINGS, RECORDS, SETTINGS + ".broken", RECORDS + ".broken"]:
+	for path: String in [SETTINGS, RECORDS, MEDALS]:
 		DirAccess.remove_absolute(path)
+		DirAccess.remove_absolute(path + ".broken")
 	empty_folder(GHOSTS)
 	Settings.settings_path = SETTINGS
 	Settings.records_path = RECORDS
 	Settings.ghosts_dir = GHOSTS
 	Settings.reload()
+	Progress.medals_path = MEDALS
+	Progress.reload()
 
 
 ## Switches Settings back to the player's files.
@@ -27,6 +31,8 @@ static func leave() -> void:
 	Settings.records_path = Settings.PLAYER_RECORDS
 	Settings.ghosts_dir = Settings.PLAYER_GHOSTS
 	Settings.reload()
+	Progress.medals_path = Progress.PLAYER_MEDALS
+	Progress.reload()
 
 
 ## Makes `folder` exist and hold no files, whether or not it was there before.

@@ -1,5 +1,5 @@
 extends Node
-## Saves the player's settings, records and a ghost over and over (`--write`, after
+## Saves the player's settings, records, medals and a ghost over and over (`--write`, after
 ## clearing the folder with `--fresh`), to be killed with SIGKILL at a random moment by
 ## tools/kill-test.sh; then (`--check`) reads them back with the game's own loaders: each
 ## file must be whole, either the last save or the one before, never half of one or set
@@ -10,6 +10,9 @@ extends Node
 
 const FOLDER := "user://kill-test"
 const LEVEL := "track"
+## A lesson whose best score improves every round, as a lap does.
+const LESSON := "res://scenes/challenges/lessons/counter_steer.tres"
+const BIKE := "street_390"
 const BODIES := 11
 ## A ghost as long as a five-minute lap (9000 frames), so a save takes a while to write.
 const FRAMES := 9000
@@ -23,6 +26,8 @@ func _ready() -> void:
 	Settings.records_path = FOLDER.path_join("records.cfg")
 	Settings.ghosts_dir = FOLDER.path_join("ghosts")
 	Settings.reload()
+	Progress.medals_path = FOLDER.path_join("medals.cfg")
+	Progress.reload()
 	if "--check" in OS.get_cmdline_user_args():
 		get_tree().quit(_check())
 	else:
@@ -37,6 +42,7 @@ func _write_forever() -> void:
 		round += 1
 		Settings.set_value(&"trajectories", Settings.offered(&"trajectories")[round % 6])
 		Settings.record_lap(LEVEL, _lap_time(round))
+		Progress.record(ChallengeCatalogue.load_challenge(LESSON), BIKE, _lap_time(round))
 		GhostFile.save(_ghost(round), LEVEL, Settings.ghost_path(LEVEL))
 		print("saved round %d" % round)
 		await get_tree().process_frame
@@ -64,10 +70,20 @@ func _check() -> int:
 		var best := Settings.best_lap(LEVEL)
 		if best != _lap_time(round) and best != _lap_time(round + 1):
 			problems.append("best lap %s against the ghost's round %d" % [best, round])
+		# The medal is saved between the record and the ghost: the same round or the next.
+		var medal_best := Progress.best("counter_steer", BIKE)
+		if medal_best != _lap_time(round) and medal_best != _lap_time(round + 1):
+			problems.append(
+				"best medal score %s against the ghost's round %d" % [medal_best, round]
+			)
+	if not Progress.problem.is_empty():
+		problems.append(Progress.problem)
 	for problem in problems:
 		printerr("kill test: ", problem)
 	if problems.is_empty():
-		print("kill test: settings, record and the ghost of round %d read back whole" % round)
+		print(
+			"kill test: settings, record, medal and the ghost of round %d read back whole" % round
+		)
 	return 0 if problems.is_empty() else 1
 
 

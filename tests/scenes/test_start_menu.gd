@@ -1,6 +1,6 @@
 extends TestCase
-## The start menu shows the game's name and native version, offers every level, and can be
-## worked with a gamepad alone.
+## The start menu shows the game's name and native version, offers the School and every
+## level, and can be worked with a gamepad alone.
 
 const START_MENU := preload("res://scenes/ui/start_menu.tscn")
 
@@ -8,13 +8,18 @@ var _menu: Control
 
 
 func before_each() -> void:
+	SettingsSandbox.enter()
 	_menu = START_MENU.instantiate()
 	add_child(_menu)
 	await wait_frames(1)
+	# A first launch opens on the School (test_school_menu.gd); these tests start at the levels.
+	_menu.call(&"close_school")
 
 
 func after_each() -> void:
 	_menu.queue_free()
+	await wait_frames(1)
+	SettingsSandbox.leave()
 
 
 func test_shows_the_game_name_and_native_version() -> void:
@@ -24,9 +29,10 @@ func test_shows_the_game_name_and_native_version() -> void:
 	assert_has(version.text, "Godot 4.6")
 
 
-func test_offers_every_level() -> void:
+func test_offers_the_school_then_every_level() -> void:
 	var levels: VBoxContainer = _menu.get_node("%Levels")
-	assert_eq(levels.get_child_count(), Levels.ALL.size())
+	assert_eq(levels.get_child_count(), Levels.ALL.size() + 1)
+	assert_eq(levels.get_child(0).name, &"School", "the School first")
 	for key: String in Levels.ALL:
 		assert_not_null(levels.get_node_or_null(NodePath(key)), "a button for %s" % key)
 

@@ -59,6 +59,8 @@ func _ready() -> void:
 		if ends.size() != 2 or DirAccess.copy_absolute(ends[0], ends[1]) != OK:
 			_quit_with("cannot copy %s" % copy, 2)
 			return
+	# A copied medals file (`--copy=…>user://test-medals.cfg`) is the player's from here.
+	Progress.reload()
 	var packed := load(options.scene) as PackedScene
 	if packed == null:
 		_quit_with("cannot load scene %s" % options.scene, 1)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from . import challenge_figures
 from .markers import Figure, FigureError
 
 
@@ -25,4 +26,7 @@ def figures(root: Path) -> dict[str, Figure]:
         # A constant of the preflight, as `PYTHON_MIN` or `DISK_MIN_GB`.
         "preflight": Figure(lambda name: _assignment(
             root / "tools/preflight.sh", rf"^{re.escape(name)}=([\w.]+)$", name), r"[\w.]+"),
+        # "0.25 m": the score a lesson or challenge needs for a medal, as `medal ride_off gold`.
+        "medal": Figure(lambda key, medal: challenge_figures.threshold(root, key, medal),
+                        r"[\d.]+ ?(?:s|m|°|km/h)"),
     }

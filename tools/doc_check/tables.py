@@ -14,6 +14,7 @@ from cpbp_experiment.configs import Controller, display_order
 from cpbp_experiment.report import timing_table
 from cpbp_experiment.results import Attempt
 
+from . import challenge_figures
 from .experiment_figures import ExperimentRows
 from .formats import count
 from .markers import FigureError
@@ -72,6 +73,9 @@ def tables(experiment: ExperimentRows, scenarios_csv: Path) -> dict[str, Callabl
             learned_report.experiment_tables(experiment.folder / "results.csv")),
         "learned-scenarios": lambda: "\n".join(learned_report.scenario_tables(scenarios_csv)),
         "make-test-steps": lambda: test_steps(experiment.folder.parents[1] / "tools/test.sh"),
+        # The School's lessons and the levels' challenges with their medals' thresholds.
+        "lessons": lambda: challenge_figures.table(experiment.folder.parents[1], "lessons"),
+        "challenges": lambda: challenge_figures.table(experiment.folder.parents[1], "challenges"),
     }
 
 

@@ -1,0 +1,45 @@
+@tool
+class_name ChallengeCatalogue
+extends Resource
+## The lessons of the School, in the order they are taught, and the challenges of the
+## levels: paths to Challenge files, so one that is missing or broken is named in the menu
+## instead of stopping the game.
+
+const PATH := "res://scenes/challenges/catalogue.tres"
+
+## The School's lessons, each unlocked by a medal in the one before.
+@export_file("*.tres") var lessons: Array[String] = []
+## The levels' challenges, open from the start.
+@export_file("*.tres") var challenges: Array[String] = []
+
+
+## The game's catalogue (an empty one, with an error, when its file cannot be read).
+static func game() -> ChallengeCatalogue:
+	var found := load(PATH) as ChallengeCatalogue if ResourceLoader.exists(PATH) else null
+	if found == null:
+		push_error("ChallengeCatalogue: %s cannot be read; no lessons or challenges" % PATH)
+		return ChallengeCatalogue.new()
+	return found
+
+
+## The challenge at `path`, or null (with an error) when it is missing or is not one.
+static func load_challenge(path: String) -> Challenge:
+	var challenge := load(path) as Challenge if ResourceLoader.exists(path) else null
+	if challenge == null:
+		push_error("ChallengeCatalogue: %s is not a challenge" % path)
+	return challenge
+
+
+## Whether lesson `index` is open: the first always, each other once the one before has a
+## medal on any bike.
+func lesson_open(index: int) -> bool:
+	if index <= 0:
+		return true
+	var before := load_challenge(lessons[index - 1])
+	return before == null or Progress.best_medal(before.key()) > Challenge.Medal.NONE
+
+
+## The lesson after the one at `path` (empty: it is the last, or not a lesson).
+func next_lesson(path: String) -> String:
+	var index := lessons.find(path)
+	return lessons[index + 1] if index >= 0 and index + 1 < lessons.size() else ""

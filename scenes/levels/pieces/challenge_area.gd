@@ -1,0 +1,36 @@
+@tool
+class_name ChallengeArea
+extends Node3D
+## The part of a level a lesson or challenge is ridden in: the spawn point it starts from
+## (the first SpawnPoint below it) and the markers its judge reads by name (gates, lines,
+## boxes). Its markers show only while its own lesson or challenge is ridden, so a level
+## with many areas shows the player the one in play and a free ride shows none.
+## Put only markers here: level geometry stays where every ride meets it.
+
+
+## The spawn point the challenge starts from (null: none below this area).
+func spawn_point() -> SpawnPoint:
+	for found in find_children("*", "Marker3D", true, false):
+		if found is SpawnPoint:
+			return found as SpawnPoint
+	return null
+
+
+## The marker at `path` below this area, or null.
+func marker(path: NodePath) -> Node3D:
+	return get_node_or_null(path) as Node3D
+
+
+## Every ChallengeArea below `root`.
+static func all_in(root: Node) -> Array[ChallengeArea]:
+	var areas: Array[ChallengeArea] = []
+	for found in root.find_children("*", "Node3D", true, false):
+		if found is ChallengeArea:
+			areas.append(found as ChallengeArea)
+	return areas
+
+
+func _get_configuration_warnings() -> PackedStringArray:
+	if spawn_point() == null:
+		return PackedStringArray(["Add a SpawnPoint: the challenge starts there."])
+	return PackedStringArray()
