@@ -23,18 +23,18 @@ func _ready() -> void:
 	add_child(head)
 	var back := Button.new()
 	back.name = "Back"
-	back.text = "Back"
-	back.custom_minimum_size.x = 120.0
+	back.text = "Back  (Esc / B)"
+	back.custom_minimum_size.x = 160.0
 	back.add_theme_font_size_override(&"font_size", 20)
 	back.pressed.connect(func() -> void: closed.emit())
 	head.add_child(back)
 	var intro := Label.new()
-	intro.text = "Short lessons, one idea each: a medal opens the next."
+	intro.text = "School: short lessons, one idea each; a medal opens the next."
 	intro.add_theme_font_size_override(&"font_size", 20)
 	head.add_child(intro)
 	_rows = GridContainer.new()
 	_rows.add_theme_constant_override(&"h_separation", 14)
-	_rows.add_theme_constant_override(&"v_separation", 6)
+	_rows.add_theme_constant_override(&"v_separation", 4)
 	add_child(_rows)
 	_about = Label.new()
 	_about.name = "About"
@@ -82,7 +82,7 @@ func _add_row(index: int, bikes: Array[String]) -> void:
 	var button := Button.new()
 	button.name = "Lesson%d" % (index + 1)
 	button.alignment = HORIZONTAL_ALIGNMENT_LEFT
-	button.add_theme_font_size_override(&"font_size", 22)
+	button.add_theme_font_size_override(&"font_size", 20)
 	button.custom_minimum_size.x = 380.0
 	var problem := "its file is missing" if lesson == null else lesson.problem()
 	var open := _catalogue.lesson_open(index)

@@ -12,10 +12,10 @@ signal lesson_requested(path: String)
 
 const GAME := "res://scenes/game/game.tscn"
 const SCHOOL := "res://scenes/levels/school/school.tscn"
-const LEVELS_HINT := "Choose the School or a level    Esc / B: quit"
 
 @onready var _version_label: Label = %VersionLabel
 @onready var _status_label: Label = %StatusLabel
+@onready var _tagline: Label = $Titles/Tagline
 @onready var _levels: VBoxContainer = %Levels
 @onready var _bike: OptionButton = %Bike
 @onready var _bike_figures: Label = %BikeFigures
@@ -61,7 +61,9 @@ func _unhandled_input(event: InputEvent) -> void:
 func open_school(index := 0) -> void:
 	_choices.visible = false
 	_school.visible = true
-	_status_label.text = "Pick a lesson    Esc / B: back"
+	# The lessons take the room of the tagline and the hint (the Back button says it).
+	_tagline.visible = false
+	_status_label.visible = false
 	_school.show_lessons(ChallengeCatalogue.game(), str(Settings.get_value(&"bike")))
 	var button := _school.lesson_button(index)
 	if button != null and not button.disabled:
@@ -74,7 +76,8 @@ func open_school(index := 0) -> void:
 func close_school() -> void:
 	_school.visible = false
 	_choices.visible = true
-	_status_label.text = LEVELS_HINT
+	_tagline.visible = true
+	_status_label.visible = true
 	(_levels.get_node(^"School") as Button).grab_focus()
 
 

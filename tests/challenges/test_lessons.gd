@@ -8,6 +8,9 @@ const LESSONS := "res://scenes/challenges/lessons/"
 ## The S of the counter-steering lesson: two quarter circles of 15 m (Bézier handles).
 const S_RADIUS := 15.0
 const QUARTER := 0.5523
+## The 45° bend's radius, and where the wheelie lesson's log lies.
+const BEND_RADIUS := 30.0
+const LOG_Z := -30.0
 
 var _ride: LessonRide
 
@@ -92,6 +95,51 @@ func test_full_brake_fails_a_stop_past_the_line_and_a_slow_run_up() -> void:
 	_assert_failed(await _full_brake(45.0, 150.0), "you reached the cones at 4")
 
 
+func test_a_wheelie_over_the_log_for_gold() -> void:
+	var result := await _wheelie(-22.0)
+	_assert_medal(result, Challenge.Medal.GOLD)
+
+
+func test_the_wheelie_fails_when_the_front_wheel_meets_the_log() -> void:
+	_assert_failed(await _wheelie(-INF), "the front wheel hit the log")
+
+
+func test_a_hill_start_for_gold() -> void:
+	var result := await _hill_start(25.0)
+	_assert_medal(result, Challenge.Medal.GOLD)
+	assert_has(
+		result.facts if result != null else PackedStringArray(), "stood 3.0 s, rolled back 0.00 m"
+	)
+
+
+func test_the_hill_start_fails_a_stop_short_of_the_box() -> void:
+	_assert_failed(await _hill_start(23.0), "you rode up without stopping in the box")
+
+
+func test_the_kicker_levelled_with_the_riders_weight_for_gold() -> void:
+	var result := await _kicker(35.0, 0.0)
+	_assert_medal(result, Challenge.Medal.GOLD)
+	assert_has(result.facts[-1] if result != null else "", "landed on both wheels")
+
+
+func test_the_kicker_fails_a_landing_on_the_front_wheel_and_a_ride_past_it() -> void:
+	_assert_failed(await _kicker(35.0, -35.0), "the front wheel landed first")
+	_ride.free_all()
+	_assert_failed(await _kicker(35.0, 0.0, 4.0), "you never left the ground")
+
+
+func test_the_45_degree_bend_at_60_kmh_for_gold() -> void:
+	_ride = await LessonRide.start(self, LESSONS + "bend_45.tres", "combined", "", 60.0)
+	_ride.follow(self, _half_circle(BEND_RADIUS))
+	_assert_medal(await _ride.until_judged(self, 40.0), Challenge.Medal.GOLD)
+
+
+func test_the_bend_fails_a_ride_that_runs_wide() -> void:
+	_ride = await LessonRide.start(self, LESSONS + "bend_45.tres", "combined", "", 60.0)
+	_ride.follow(self, BotStart.straight(Vector3(160, 0, 2), Vector3(160, 0, -200)))
+	_assert_failed(await _ride.until_judged(self, 30.0), "you missed gate 2")
+
+
 func test_a_fall_fails_the_lesson_saying_what_hit() -> void:
 	# Nobody balancing (the manual controller) and the bot asking for the S's first turn.
 	_ride = await LessonRide.start(self, LESSONS + "counter_steer.tres", "arcade", "", 30.0)
@@ -115,6 +163,64 @@ func _full_brake(kmh: float, brake_at: float) -> ChallengeResult:
 	_ride.follow(self, BotStart.straight(Vector3(-40, 0, 2), Vector3(-40, 0, -230)))
 	_ride.bot.speed_along = func(offset: float) -> float: return kmh if offset < brake_at else 0.0
 	return await _ride.until_judged(self, 60.0)
+
+
+## The wheelie lesson at 10 km/h, the bot's weight back from its front wheel at z
+## `lift` (−INF: never) until the front wheel is past the log.
+func _wheelie(lift: float) -> ChallengeResult:
+	_ride = await LessonRide.start(self, LESSONS + "wheelie_log.tres", "combined", "", 10.0)
+	_ride.follow(self, BotStart.straight(Vector3(-80, 0, 2), Vector3(-80, 0, -60)))
+	var run := _ride.game.challenge_run
+	for _i in 40 * Engine.physics_ticks_per_second:
+		await wait_physics_frames(1)
+		var front := _ride.game.bike.get_body_transform(BikeSimulation.FRONT_WHEEL).origin
+		_ride.bot.wheelie = front.z < lift and front.z > LOG_Z - 1.0
+		if run.result != null:
+			break
+	_ride.bot.wheelie = false
+	return await _ride.until_judged(self, 0.0)
+
+
+## The hill start at 10 km/h: the bot brakes `stop_at` m along its line, stands 5 s, and
+## rides on.
+func _hill_start(stop_at: float) -> ChallengeResult:
+	_ride = await LessonRide.start(self, LESSONS + "hill_start.tres", "combined", "", 10.0)
+	_ride.follow(self, BotStart.straight(Vector3(-110, 0, 2), Vector3(-110, 0, -60)))
+	var stood := 5.0 * Engine.physics_ticks_per_second
+	var braked_at := [-1]
+	_ride.bot.speed_along = func(offset: float) -> float:
+		if braked_at[0] < 0 and offset > stop_at:
+			braked_at[0] = Engine.get_physics_frames()
+		var standing: bool = (
+			braked_at[0] >= 0 and Engine.get_physics_frames() - braked_at[0] < stood
+		)
+		return 0.0 if standing else 10.0
+	return await _ride.until_judged(self, 60.0)
+
+
+## The kicker at `kmh`, the bot's weight bringing the bike to `pitch` degrees in the air,
+## its line `aside` m to the right of the kicker's middle.
+func _kicker(kmh: float, pitch: float, aside := 0.0) -> ChallengeResult:
+	_ride = await LessonRide.start(self, LESSONS + "kicker.tres", "combined", "", kmh)
+	_ride.bot.level_in_air = true
+	_ride.bot.air_pitch = pitch
+	_ride.follow(self, BotStart.straight(Vector3(130 + aside, 0, 2), Vector3(130 + aside, 0, -70)))
+	return await _ride.until_judged(self, 40.0)
+
+
+## The 45° bend's line: on to a right half circle of `radius` and back.
+static func _half_circle(radius: float) -> Path3D:
+	var k := QUARTER * radius
+	var path := Path3D.new()
+	path.curve = Curve3D.new()
+	path.curve.add_point(Vector3(160, 0, 2))
+	path.curve.add_point(Vector3(160, 0, -60), Vector3.ZERO, Vector3(0, 0, -k))
+	path.curve.add_point(
+		Vector3(160 + radius, 0, -60 - radius), Vector3(-k, 0, 0), Vector3(k, 0, 0)
+	)
+	path.curve.add_point(Vector3(160 + 2 * radius, 0, -60), Vector3(0, 0, -k))
+	path.curve.add_point(Vector3(160 + 2 * radius, 0, 10))
+	return path
 
 
 ## The counter-steering lesson's S: a right quarter circle, then a left one.

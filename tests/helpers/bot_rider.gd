@@ -24,6 +24,11 @@ const DRIVE_ACTIONS: Array[StringName] = [&"brake", &"throttle"]
 const THROTTLE_GAIN := 0.6
 const BRAKE_GAIN := 0.36
 const RIDER_ACTIONS: Array[StringName] = [&"rider_back", &"rider_forward"]
+## In the air with `level_in_air`: the rider stick per degree of pitch and per degree a
+## second of pitching (the bike leaves a kicker's lip pitching nose down, so the weight
+## goes back at once, not only once the nose is down).
+const AIR_PITCH_GAIN := 0.1
+const AIR_PITCH_RATE_GAIN := 0.05
 
 ## The bike to ride and the path to follow.
 var bike: BikeSimulation
@@ -35,6 +40,10 @@ var speed_along: Callable
 var preview := 0.5
 ## While true: the rider's weight back and the throttle wide open, a wheelie.
 var wheelie := false
+## In the air (both wheels off the ground) the rider's weight levels the bike: forward
+## while the nose is up, back while it is down; to `air_pitch` (degrees, nose up +).
+var level_in_air := false
+var air_pitch := 0.0
 ## Distance along the path (m) of the bike's nearest point, as of the last tick.
 var offset := 0.0
 ## Press through pad events (PadHands) rather than the actions themselves.
@@ -42,6 +51,9 @@ var through_pad := false
 ## Gains that shrink with the speed above 25 km/h (see HEADING_RATE); off, the rides the
 ## level tests were tuned on stay as they were.
 var steady_at_speed := false
+
+## The bike's pitch (degrees, nose up +) at the last tick, for its rate.
+var _last_pitch := 0.0
 
 
 func _physics_process(_delta: float) -> void:
@@ -80,7 +92,17 @@ func _physics_process(_delta: float) -> void:
 	var gain := THROTTLE_GAIN if error > 0.0 else BRAKE_GAIN
 	var drive := clampf(gain * error, -1.0, 1.0) if wanted > 0.0 else -1.0
 	_press(DRIVE_ACTIONS, 1.0 if wheelie else drive)
-	_press(RIDER_ACTIONS, -1.0 if wheelie else 0.0)
+	_press(RIDER_ACTIONS, -1.0 if wheelie else _levelling())
+
+
+## The rider stick (forward +) that levels the bike in the air; 0 on the ground.
+func _levelling() -> float:
+	var nose_up := rad_to_deg(asin(bike.get_body_transform(BikeSimulation.FRAME).basis.x.y))
+	var rate := (nose_up - _last_pitch) * Engine.physics_ticks_per_second
+	_last_pitch = nose_up
+	if not level_in_air or bike.is_front_wheel_grounded() or bike.is_rear_wheel_grounded():
+		return 0.0
+	return clampf(AIR_PITCH_GAIN * (nose_up - air_pitch) + AIR_PITCH_RATE_GAIN * rate, -1.0, 1.0)
 
 
 ## Signed curvature of the path at `at` (m along it; 1/m, positive turning left): the turn

@@ -10,6 +10,10 @@ extends ChallengeJudge
 ## off, the line crossed is not this gate's (a course through bends crosses the lines of
 ## gates far away).
 const MISS_REACH := 6.0
+## A bike further from the next gate than this many times the way there from the last
+## one, plus this many metres, has left the course (ridden wide of a bend, say).
+const STRAY_FACTOR := 1.5
+const STRAY_SLACK := 10.0
 
 ## The gates (CourseGate or any GateLine) in the order they are ridden.
 @export var gates: Array[NodePath] = []
@@ -47,9 +51,11 @@ func _judge(delta: float) -> ChallengeResult:
 	var centre := bike.get_center_of_mass()
 	var verdict := _crossings(_previous, centre)
 	_previous = centre
+	if verdict == null and _strayed(centre):
+		verdict = ChallengeResult.failed("you missed gate %d" % (_next + 1), _facts())
 	if verdict != null or _next < _gates.size():
 		return verdict
-	return ChallengeResult.passed_with(elapsed, _facts())
+	return ChallengeResult.passed_with(_score(), _facts())
 
 
 ## The verdict of the ride from `from` to `to`: a gate passed moves `_next` on; riding
@@ -78,6 +84,21 @@ func _crossings(from: Vector3, to: Vector3) -> ChallengeResult:
 			)
 		_next = i + 1
 	return null
+
+
+## Whether the bike, past a gate, has gone so far from the next that it has left the
+## course: further than STRAY_FACTOR times the way between the two gates, plus STRAY_SLACK.
+func _strayed(centre: Vector3) -> bool:
+	if _next == 0 or _next >= _gates.size():
+		return false
+	var gate := _gates[_next].global_position
+	var between := gate.distance_to(_gates[_next - 1].global_position)
+	return centre.distance_to(gate) > STRAY_FACTOR * between + STRAY_SLACK
+
+
+## The score of a course ridden through: the time it took (s).
+func _score() -> float:
+	return elapsed
 
 
 func _facts() -> PackedStringArray:
