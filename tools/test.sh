@@ -86,7 +86,8 @@ step "test runner self-test" tools/test-runner-selftest.sh
 # The GDScript suites under tests/, headless: the levels, menus, settings, medals, replay,
 # ghosts, cameras, and the bot rides (a scripted rider rides a lap of the track, races its
 # ghost, climbs the skate park's steps and stops on a foot through the player's own inputs,
-# and earns gold in every lesson of the School through a gamepad's events).
+# and earns gold in every lesson of the School and every level's challenge through a
+# gamepad's events).
 step "GDScript suites"      godot_suites
 # Settings, records, medals and a ghost saved in a loop and killed with SIGKILL read back whole.
 step "saves survive kill -9" tools/kill-test.sh 8
@@ -104,6 +105,8 @@ screenshots() {
   tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/start-menu.png \
     && tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/school.png 30 \
          "--copy=res://tests/fixtures/medals/some_medals.cfg>user://test-medals.cfg" \
+    && tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/level-challenges.png 30 \
+         "--copy=res://tests/fixtures/medals/level_medals.cfg>user://test-medals.cfg" \
     && tools/screenshot.sh $game build/screenshots/lesson-briefing.png 60 \
          --set=challenge_path=$lessons/counter_steer.tres \
     && tools/screenshot.sh $game build/screenshots/lesson-medal.png 790 \
@@ -159,10 +162,11 @@ bike_gallery() {
   done
 }
 
-# Screenshots of the menus (the School on a first launch and with medals), a lesson's
-# briefing, medal and failed try, the levels, cameras, a full brake's tyre marks, a crash's sparks,
-# dust on the track's gravel, replay, ghost race and each bike under Xvfb, failing on a blank
-# picture (the ghost race races the lap the bot rode in the GDScript suites).
+# Screenshots of the menus (the School on a first launch and with medals, a level's
+# challenges), a lesson's briefing, medal and failed try, the levels, cameras, a full
+# brake's tyre marks, a crash's sparks, dust on the track's gravel, replay, ghost race and
+# each bike under Xvfb, failing on a blank picture (the ghost race races the lap the bot
+# rode in the GDScript suites).
 step "screenshots (Xvfb)"   screenshots
 # The engine recorded by Godot's movie writer sounds at its firing frequency, rising with
 # speed; a paused game is exactly silent.

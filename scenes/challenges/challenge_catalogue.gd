@@ -7,7 +7,7 @@ extends Resource
 
 const PATH := "res://scenes/challenges/catalogue.tres"
 
-## The School's lessons, each unlocked by a medal in the one before.
+## The School's lessons, each opened by a medal in the one before (ChallengeMenu).
 @export_file("*.tres") var lessons: Array[String] = []
 ## The levels' challenges, open from the start.
 @export_file("*.tres") var challenges: Array[String] = []
@@ -30,13 +30,14 @@ static func load_challenge(path: String) -> Challenge:
 	return challenge
 
 
-## Whether lesson `index` is open: the first always, each other once the one before has a
-## medal on any bike.
-func lesson_open(index: int) -> bool:
-	if index <= 0:
-		return true
-	var before := load_challenge(lessons[index - 1])
-	return before == null or Progress.best_medal(before.key()) > Challenge.Medal.NONE
+## The challenges ridden on the level scene at `level_path`, in the catalogue's order.
+func challenges_on(level_path: String) -> Array[String]:
+	var found: Array[String] = []
+	for path in challenges:
+		var challenge := load_challenge(path)
+		if challenge != null and challenge.level == level_path:
+			found.append(path)
+	return found
 
 
 ## The lesson after the one at `path` (empty: it is the last, or not a lesson).

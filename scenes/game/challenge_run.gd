@@ -85,9 +85,16 @@ func begin() -> void:
 	_crash_cause = ""
 	if challenge.top_speed_kmh > 0.0:
 		_driver.max_speed_kmh = challenge.top_speed_kmh
+	if judge != null:
+		judge.end()
 	judge = challenge.judge.duplicate(true) as ChallengeJudge if challenge.judge != null else null
 	if judge != null and area != null:
 		judge.begin(area, _bike)
+
+
+func _exit_tree() -> void:
+	if judge != null:
+		judge.end()
 
 
 ## How the attempt stands after `delta` more seconds, given the level's own `outcome` for

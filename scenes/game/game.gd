@@ -157,7 +157,7 @@ func _physics_process(delta: float) -> void:
 		return
 	if _finished_for >= 0.0:
 		_finished_for += delta
-		if level.automatic and _finished_for >= RESULT_PAUSE:
+		if is_automatic() and _finished_for >= RESULT_PAUSE:
 			restart()
 		return
 	if bike.is_waiting_for_throttle():
@@ -192,7 +192,7 @@ func _unhandled_input(event: InputEvent) -> void:
 		_hud.announce("Camera: %s" % FollowCamera.MODE_LABELS[_camera.mode])
 	elif event.is_action_pressed(&"toggle_trajectories"):
 		Settings.set_value(&"show_trajectories", not Settings.get_value(&"show_trajectories"))
-	elif event.is_action_pressed(&"toggle_auto_accelerate") and not level.automatic:
+	elif event.is_action_pressed(&"toggle_auto_accelerate") and not is_automatic():
 		Settings.set_value(&"auto_accelerate", not Settings.get_value(&"auto_accelerate"))
 		_hud.announce("Auto-accelerate %s" % ("on" if _driver.auto_accelerate else "off"))
 
@@ -250,6 +250,12 @@ func spawn_index() -> int:
 	return _spawn_index
 
 
+## Whether the bike rides itself (the thesis's automatic test), as it does on an automatic
+## level unless a challenge there is the player's to ride.
+func is_automatic() -> bool:
+	return level.automatic and challenge_run == null
+
+
 ## Name of the bike ridden, for people.
 func bike_name() -> String:
 	return bike.bike.name if bike.bike != null else "Street 350"
@@ -275,7 +281,7 @@ func quit_to_menu() -> void:
 
 func _finish(outcome: String) -> void:
 	_finished_for = 0.0
-	_driver.stopping = level.automatic
+	_driver.stopping = is_automatic()
 	level.finish_attempt(outcome)
 	attempts += 1
 	if challenge_run != null:
@@ -290,7 +296,7 @@ func _finish(outcome: String) -> void:
 			_hud.announce("Out of time")
 		Level.FELL:
 			var fell := "Fell: %s" % _crash_cause if not _crash_cause.is_empty() else "Fell"
-			_hud.announce(fell if level.automatic else fell + "\nB / R to respawn, A / T to lift")
+			_hud.announce(fell if is_automatic() else fell + "\nB / R to respawn, A / T to lift")
 
 
 ## The lesson or challenge `challenge_path` names (null: none, or one that cannot be
@@ -313,6 +319,7 @@ func _start_challenge(challenge: Challenge) -> void:
 		return
 	challenge_run = ChallengeRun.new()
 	challenge_run.name = "ChallengeRun"
+	_driver.automatic = false
 	add_child(challenge_run)
 	challenge_run.setup(challenge_path, challenge, self, _driver)
 	var spawn := challenge_run.spawn_point()

@@ -17,3 +17,11 @@ const NAMES := {
 ## Path of the level scene for `key`, or "" for an unknown key.
 static func path_of(key: String) -> String:
 	return ALL.get(key, "")
+
+
+## The key of the level scene at `path` (empty: not one of the game's levels).
+static func key_of(path: String) -> String:
+	for key: String in ALL:
+		if ALL[key] == path:
+			return key
+	return ""

@@ -96,7 +96,7 @@ func _process(delta: float) -> void:
 		_performance.text += "  ·  " + _horizon_text(bike)
 		_performance.text += _diagnostics_text(bike.get_plan_diagnostics())
 	var status := "%s   ·   %s" % [_game.level.title, _game.level.status_line()]
-	if _game.level.automatic:
+	if _game.is_automatic():
 		status += "   ·   %d/%d reached the goal" % [_game.successes, _game.attempts]
 	else:
 		status += "   ·   falls %d" % _game.falls

@@ -1,17 +1,24 @@
 extends Control
-## The start menu: pick a level (that starts the ride; the backdrop shows the one in
+## The start menu: the School's lessons, or a level to ride freely or take on its
+## challenges (a list with the medals won on every bike; the backdrop shows the one in
 ## focus), the bike (the backdrop stands it at the start; its main figures below it), the
 ## controller, the trajectory count and the auto-accelerate speed; shows the track's best
 ## lap on that bike and what native module runs underneath. Works with a gamepad alone
 ## (d-pad/stick to move, A to choose).
 ## `--native-info` prints the native module and exits (smoke tests, bug reports).
 
-## The player chose a level to ride (its key in `Levels.ALL`), or a lesson (its file).
+## The player chose a level to ride freely (its key in `Levels.ALL`), or a lesson or
+## challenge (its file).
 signal ride_requested(level: String)
-signal lesson_requested(path: String)
+signal challenge_requested(path: String)
 
 const GAME := "res://scenes/game/game.tscn"
 const SCHOOL := "res://scenes/levels/school/school.tscn"
+## The start menu's entry of the School (a level's is its key).
+const SCHOOL_ENTRY := "School"
+
+## Whose list is open: SCHOOL_ENTRY or a level's key.
+var _list_owner := ""
 
 @onready var _version_label: Label = %VersionLabel
 @onready var _status_label: Label = %StatusLabel
@@ -25,7 +32,7 @@ const SCHOOL := "res://scenes/levels/school/school.tscn"
 @onready var _best_lap: Label = %BestLap
 @onready var _backdrop: MenuBackdrop = $Backdrop
 @onready var _choices: Control = $Choices
-@onready var _school: SchoolMenu = %School
+@onready var _list: ChallengeMenu = %Challenges
 
 
 func _ready() -> void:
@@ -36,7 +43,7 @@ func _ready() -> void:
 	# Only the menu that is the running scene navigates; embedded ones just report.
 	if get_tree().current_scene == self:
 		ride_requested.connect(_ride)
-		lesson_requested.connect(func(path: String) -> void: ChallengeRun.ride(get_tree(), path))
+		challenge_requested.connect(func(path: String) -> void: ChallengeRun.ride(get_tree(), path))
 	_build_choices()
 	if not NativeModule.is_loaded():
 		_status_label.text = "The native simulation is missing; the game cannot start."
@@ -51,80 +58,119 @@ func _unhandled_input(event: InputEvent) -> void:
 	if not event.is_action_pressed(&"ui_cancel"):
 		return
 	get_viewport().set_input_as_handled()
-	if _school.visible:
-		close_school()
+	if _list.visible:
+		close_list()
 	else:
 		get_tree().quit()
 
 
 ## Shows the School's lessons in place of the levels, the focus on lesson `index`.
 func open_school(index := 0) -> void:
-	_choices.visible = false
-	_school.visible = true
-	# The lessons take the room of the tagline and the hint (the Back button says it).
-	_tagline.visible = false
-	_status_label.visible = false
-	_school.show_lessons(ChallengeCatalogue.game(), str(Settings.get_value(&"bike")))
-	var button := _school.lesson_button(index)
-	if button != null and not button.disabled:
-		button.grab_focus()
-	elif _school.lesson_button(0) != null:
-		_school.lesson_button(0).grab_focus()
+	_open_list(SCHOOL_ENTRY)
+	_list.show_lessons(ChallengeCatalogue.game(), str(Settings.get_value(&"bike")))
+	_focus_entry(index)
 
 
-## Back from the School to the levels, the focus on its entry.
-func close_school() -> void:
-	_school.visible = false
+## Shows level `key`'s free ride and challenges, the focus on challenge `index` (−1: the
+## free ride); a level without challenges is ridden at once.
+func open_level(key: String, index := -1) -> void:
+	var paths := ChallengeCatalogue.game().challenges_on(Levels.path_of(key))
+	if paths.is_empty():
+		ride_requested.emit(key)
+		return
+	_open_list(key)
+	_list.show_level(key, paths, str(Settings.get_value(&"bike")))
+	_focus_entry(index)
+
+
+## Back from a list to the levels, the focus on the entry that opened it.
+func close_list() -> void:
+	_list.visible = false
 	_choices.visible = true
 	_tagline.visible = true
 	_status_label.visible = true
-	(_levels.get_node(^"School") as Button).grab_focus()
+	(_levels.get_node(NodePath(_list_owner)) as Button).grab_focus()
+
+
+func _open_list(owner_entry: String) -> void:
+	_list_owner = owner_entry
+	_choices.visible = false
+	_list.visible = true
+	# The list takes the room of the tagline and the hint (its Back button says it).
+	_tagline.visible = false
+	_status_label.visible = false
+
+
+func _focus_entry(index: int) -> void:
+	var button := _list.entry_button(index)
+	if button == null or button.disabled:
+		button = _list.entry_button(-1) if _list.entry_button(-1) != null else _list.entry_button(0)
+	if button != null:
+		button.grab_focus()
 
 
 ## Where the menu opens: on the first lesson until it has a medal, else on what was played
-## last (a lesson in the School, or a level).
+## last (a lesson, a level's challenge, or a level).
 func _focus_where_the_player_left_off() -> void:
 	var catalogue := ChallengeCatalogue.game()
 	var last := Progress.last_played()
-	var lessons := catalogue.lessons.map(
-		func(path: String) -> String: return path.get_file().get_basename()
-	)
 	var first := (
 		ChallengeCatalogue.load_challenge(catalogue.lessons[0])
 		if not catalogue.lessons.is_empty()
 		else null
 	)
+	var lesson := _index_of(catalogue.lessons, last)
+	var challenge := _index_of(catalogue.challenges, last)
 	if first != null and Progress.best_medal(first.key()) == Challenge.Medal.NONE:
 		open_school(0)
-	elif lessons.has(last):
-		open_school(lessons.find(last))
-	else:
-		var chosen := (
-			_levels.get_node_or_null(
-				NodePath(last if Levels.ALL.has(last) else str(Settings.get_value(&"level")))
-			)
-			as Button
-		)
-		(chosen if chosen != null else _levels.get_child(0) as Button).grab_focus()
+		return
+	if lesson >= 0:
+		open_school(lesson)
+		return
+	if challenge >= 0 and _open_level_at(catalogue.challenges[challenge]):
+		return
+	var key := last if Levels.ALL.has(last) else str(Settings.get_value(&"level"))
+	var chosen := _levels.get_node_or_null(NodePath(key)) as Button
+	(chosen if chosen != null else _levels.get_child(0) as Button).grab_focus()
+
+
+## Opens the list of the level the challenge at `path` is ridden on, the focus on it;
+## false when that is none of the game's levels.
+func _open_level_at(path: String) -> bool:
+	var challenge := ChallengeCatalogue.load_challenge(path)
+	var key := Levels.key_of(challenge.level) if challenge != null else ""
+	if key.is_empty():
+		return false
+	open_level(key, ChallengeCatalogue.game().challenges_on(challenge.level).find(path))
+	return true
+
+
+## Where the file named `key` (a challenge's key) stands in `paths`; −1: not there.
+static func _index_of(paths: Array[String], key: String) -> int:
+	for i in paths.size():
+		if paths[i].get_file().get_basename() == key:
+			return i
+	return -1
 
 
 func _build_choices() -> void:
 	var school := Button.new()
-	school.name = "School"
+	school.name = SCHOOL_ENTRY
 	school.text = "School: learn to ride"
 	school.add_theme_font_size_override(&"font_size", 26)
 	school.pressed.connect(open_school)
 	school.focus_entered.connect(func() -> void: _backdrop.show_level(SCHOOL))
 	_levels.add_child(school)
-	_school.lesson_chosen.connect(func(path: String) -> void: lesson_requested.emit(path))
-	_school.closed.connect(close_school)
-	_school.lesson_focused.connect(_backdrop.show_challenge)
+	_list.challenge_chosen.connect(func(path: String) -> void: challenge_requested.emit(path))
+	_list.free_ride_chosen.connect(func(key: String) -> void: ride_requested.emit(key))
+	_list.closed.connect(close_list)
+	_list.challenge_focused.connect(_show_in_backdrop)
 	for key: String in Levels.ALL:
 		var button := Button.new()
 		button.name = key
 		button.text = Levels.NAMES[key]
 		button.add_theme_font_size_override(&"font_size", 26)
-		button.pressed.connect(func() -> void: ride_requested.emit(key))
+		button.pressed.connect(open_level.bind(key, -1))
 		# The backdrop shows the level the focus is on.
 		button.focus_entered.connect(func() -> void: _backdrop.show_level(key))
 		_levels.add_child(button)
@@ -181,6 +227,14 @@ func _show_bike_figures() -> void:
 func _show_best_lap() -> void:
 	var key := Bikes.record_key("track", str(Settings.get_value(&"bike")))
 	_best_lap.text = "Best lap on the track: %s" % Level.format_time(Settings.best_lap(key))
+
+
+## The challenge at `path` in the backdrop, or the level whose list is open (empty path).
+func _show_in_backdrop(path: String) -> void:
+	if path.is_empty():
+		_backdrop.show_level(SCHOOL if _list_owner == SCHOOL_ENTRY else _list_owner)
+	else:
+		_backdrop.show_challenge(path)
 
 
 ## `--native-info`: print what native module is loaded and exit; non-zero when it is missing

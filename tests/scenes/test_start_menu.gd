@@ -13,7 +13,7 @@ func before_each() -> void:
 	add_child(_menu)
 	await wait_frames(1)
 	# A first launch opens on the School (test_school_menu.gd); these tests start at the levels.
-	_menu.call(&"close_school")
+	_menu.call(&"close_list")
 
 
 func after_each() -> void:
@@ -37,7 +37,7 @@ func test_offers_the_school_then_every_level() -> void:
 		assert_not_null(levels.get_node_or_null(NodePath(key)), "a button for %s" % key)
 
 
-func test_a_gamepad_alone_picks_the_second_level() -> void:
+func test_a_gamepad_alone_rides_the_second_level_freely() -> void:
 	var chosen: Array[String] = []
 	_menu.connect(&"ride_requested", func(level: String) -> void: chosen.append(level))
 	var levels: VBoxContainer = _menu.get_node("%Levels")
@@ -45,8 +45,27 @@ func test_a_gamepad_alone_picks_the_second_level() -> void:
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
 	assert_eq(get_viewport().gui_get_focus_owner(), levels.get_child(1), "d-pad down moves focus")
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
+	var list := _menu.get_node("%Challenges") as ChallengeMenu
+	assert_true(list.visible, "the level's free ride and challenges")
+	assert_eq(get_viewport().gui_get_focus_owner(), list.entry_button(-1), "on its free ride")
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_eq(chosen, [levels.get_child(1).name as String] as Array[String])
 	assert_ne(get_tree().current_scene, _menu, "an embedded menu does not navigate")
+
+
+func test_a_levels_challenges_show_their_medals_per_bike() -> void:
+	var gates := ChallengeCatalogue.load_challenge("res://scenes/challenges/levels/park_gates.tres")
+	Progress.record(gates, "dirt_125", gates.gold)
+	_menu.call(&"open_level", "skate_park", 0)
+	var list := _menu.get_node("%Challenges") as ChallengeMenu
+	assert_eq(list.entry_button(0).text, gates.title)
+	assert_eq(get_viewport().gui_get_focus_owner(), list.entry_button(0))
+	assert_not_null(list.entry_button(2), "the skate park's three challenges")
+	var golds := list.find_children("*", "Control", true, false).filter(
+		func(n: Node) -> bool:
+			return n is MedalBadge and (n as MedalBadge).medal == Challenge.Medal.GOLD
+	)
+	assert_eq(golds.size(), 1, "gold on the dirt 125")
 
 
 func test_the_backdrop_is_the_level_in_focus_in_the_games_light() -> void:

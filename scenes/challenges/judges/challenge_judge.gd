@@ -36,6 +36,12 @@ func begin(challenge_area: ChallengeArea, ridden: BikeSimulation) -> void:
 	_begin()
 
 
+## Lets go of whatever the attempt held on to (the level's signals); the game calls it
+## before the next attempt's copy begins.
+func end() -> void:
+	pass
+
+
 ## The verdict after `delta` more seconds of riding: null while the ride goes on.
 func judge(delta: float) -> ChallengeResult:
 	elapsed += delta
@@ -75,6 +81,14 @@ func marker(path: NodePath, type: Variant) -> Node3D:
 		push_error("Challenge: " + problem)
 		return null
 	return found
+
+
+## The level the area is part of.
+func level() -> Level:
+	var node := area.get_parent()
+	while node != null and not node is Level:
+		node = node.get_parent()
+	return node as Level
 
 
 ## What a subclass resets at the start of an attempt (its markers found again).

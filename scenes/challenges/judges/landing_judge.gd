@@ -3,8 +3,9 @@ class_name LandingJudge
 extends ChallengeJudge
 ## A jump: off the kicker, both wheels in the air, and down on both wheels, not on the
 ## front one, then on through the finish. In the air the rider's weight pitches the bike
-## (nose up or down). The score is how far the bike was pitched from the ground's slope
-## where it touched down (degrees); the air time and distance are told too.
+## (nose up or down). The score is how far the bike was pitched from level where it
+## touched down (degrees), or with `score_air_time` the time in the air (s); the air time
+## and distance are told either way.
 
 ## Wheels touching down within this long (s) of each other landed together.
 const TOGETHER := 0.05
@@ -16,6 +17,8 @@ const TOGETHER := 0.05
 ## Touching down with the nose further down than this (degrees) lands on the front wheel,
 ## however soon the rear follows.
 @export_range(1.0, 45.0, 0.5, "suffix:°") var nose_down_limit := 15.0
+## Score the time in the air instead of the landing's pitch.
+@export var score_air_time := false
 ## Both wheels off the ground this long (s) is a jump (a bump is not).
 @export_range(0.02, 1.0, 0.01, "suffix:s") var least_air := 0.15
 
@@ -73,7 +76,7 @@ func _judge(delta: float) -> ChallengeResult:
 		return null
 	if is_nan(_flight):
 		return ChallengeResult.failed("you never left the ground: ride over the kicker, and fast")
-	return ChallengeResult.passed_with(absf(_pitch), _facts())
+	return ChallengeResult.passed_with(_flight if score_air_time else absf(_pitch), _facts())
 
 
 func _landed(front: bool, rear: bool) -> void:

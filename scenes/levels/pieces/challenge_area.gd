@@ -7,16 +7,23 @@ extends Node3D
 ## with many areas shows the player the one in play and a free ride shows none.
 ## Put only markers here: level geometry stays where every ride meets it.
 
+## A spawn point of the level to start from (the track's start, say); empty: the first
+## SpawnPoint below this area.
+@export var start := NodePath()
 
-## The spawn point the challenge starts from (null: none below this area).
+
+## The spawn point the challenge starts from (null: none).
 func spawn_point() -> SpawnPoint:
+	if not start.is_empty():
+		return get_node_or_null(start) as SpawnPoint
 	for found in find_children("*", "Marker3D", true, false):
 		if found is SpawnPoint:
 			return found as SpawnPoint
 	return null
 
 
-## The marker at `path` below this area, or null.
+## The marker at `path` from this area (below it, or elsewhere in the level as "../Goal"),
+## or null.
 func marker(path: NodePath) -> Node3D:
 	return get_node_or_null(path) as Node3D
 
@@ -32,5 +39,7 @@ static func all_in(root: Node) -> Array[ChallengeArea]:
 
 func _get_configuration_warnings() -> PackedStringArray:
 	if spawn_point() == null:
-		return PackedStringArray(["Add a SpawnPoint: the challenge starts there."])
+		return PackedStringArray(
+			["Add a SpawnPoint or name one in start: the challenge starts there."]
+		)
 	return PackedStringArray()
