@@ -98,9 +98,11 @@ func _exit_tree() -> void:
 
 
 ## How the attempt stands after `delta` more seconds, given the level's own `outcome` for
-## them: Level.RIDING while it goes on, Level.GOAL when passed, MISSED or Level.FELL when
-## not (then `result` says why).
+## them: Level.RIDING while it goes on (or once judged, until the next attempt),
+## Level.GOAL when passed, MISSED or Level.FELL when not (then `result` says why).
 func judge_attempt(outcome: String, delta: float) -> String:
+	if result != null:
+		return Level.RIDING
 	if outcome == Level.FELL:
 		var cause := _crash_cause if not _crash_cause.is_empty() else "the bike went down"
 		result = ChallengeResult.failed("you fell: %s" % cause)

@@ -174,6 +174,11 @@ func _unhandled_input(event: InputEvent) -> void:
 		_pause_menu.open()
 	elif event.is_action_pressed(&"reset_bike"):
 		restart()
+	elif event.is_action_pressed(&"lift_bike") and challenge_run != null:
+		# A challenge's attempt is judged whole: lifting the bike starts it again. Over a
+		# result, A is the card's (its buttons), not the bike's.
+		if not challenge_card.is_result_shown():
+			restart()
 	elif event.is_action_pressed(&"lift_bike"):
 		bike.lift_upright()
 		_finished_for = -1.0

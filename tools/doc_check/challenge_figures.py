@@ -5,6 +5,7 @@ the catalogue lists (scenes/challenges/catalogue.tres), written as the game writ
 
 from __future__ import annotations
 
+import csv
 import json
 import re
 from pathlib import Path
@@ -75,3 +76,38 @@ def threshold(root: Path, key: str, medal: str) -> str:
                 c = challenge(path)
                 return format_score(c[medal], c["unit"])
     raise FigureError(f"the catalogue lists no challenge {key}")
+
+
+BOT_RIDES = Path("docs/challenges/bot-rides.csv")
+
+
+def bot_table(root: Path) -> str:
+    """| challenge | one column a bike |: the medal the bot's gold ride of each earned on
+    each bike (tools/challenge-survey.sh's rows), with its score, or why it missed."""
+    with (root / BOT_RIDES).open(encoding="utf-8", newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise FigureError(f"{BOT_RIDES} has no rows")
+    bikes = list(dict.fromkeys(r["bike"] for r in rows))
+    units = {}
+    for kind in ("lessons", "challenges"):
+        for path in _paths(root, kind):
+            c = challenge(path)
+            units[c["key"]] = (c["title"], c["unit"])
+    lines = ["| lesson or challenge | " + " | ".join(b.replace("_", " ") for b in bikes) + " |",
+             "|---|" + "---|" * len(bikes)]
+    for key in dict.fromkeys(r["challenge"] for r in rows):
+        if key not in units:
+            raise FigureError(f"{BOT_RIDES} rides {key}, which the catalogue does not list")
+        title, unit = units[key]
+        cells = []
+        for bike in bikes:
+            row = next((r for r in rows if r["challenge"] == key and r["bike"] == bike), None)
+            if row is None:
+                cells.append("–")
+            elif row["passed"] == "true":
+                cells.append(f"{row['medal']} ({format_score(float(row['score']), unit)})")
+            else:
+                cells.append(f"missed: {row['why']}")
+        lines.append(f"| {title} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)

@@ -76,6 +76,8 @@ def tables(experiment: ExperimentRows, scenarios_csv: Path) -> dict[str, Callabl
         # The School's lessons and the levels' challenges with their medals' thresholds.
         "lessons": lambda: challenge_figures.table(experiment.folder.parents[1], "lessons"),
         "challenges": lambda: challenge_figures.table(experiment.folder.parents[1], "challenges"),
+        # What the bot's gold rides earn on every bike (tools/challenge-survey.sh).
+        "challenge-bots": lambda: challenge_figures.bot_table(experiment.folder.parents[1]),
     }
 
 

@@ -50,6 +50,18 @@ class ChallengeFiguresTest(unittest.TestCase):
         self.assertEqual(len(markers.check(stale, figures, {})), 1)
         self.assertEqual(markers.update(stale, figures, {}), doc)
 
+    def test_the_bot_table_has_a_column_a_bike_and_says_why_a_ride_missed(self):
+        rides = self.root / challenge_figures.BOT_RIDES
+        rides.parent.mkdir(parents=True)
+        rides.write_text("challenge,bike,passed,score,medal,why\n"
+                         "stop,street_390,true,0.1,gold,\nstop,dirt_125,false,,no medal,"
+                         "you stopped 1.2 m past the box\nbend,street_390,true,39.04,silver,\n",
+                         encoding="utf-8")
+        self.assertEqual(challenge_figures.bot_table(self.root).splitlines(), [
+            "| lesson or challenge | street 390 | dirt 125 |", "|---|---|---|",
+            "| Stop | gold (0.10 m) | missed: you stopped 1.2 m past the box |",
+            "| The bend | silver (39.0°) | – |"])
+
     def test_an_unknown_challenge_is_an_error(self):
         with self.assertRaises(markers.FigureError):
             challenge_figures.threshold(self.root, "nowhere", "gold")
