@@ -60,6 +60,7 @@ func reload() -> void:
 			_values[key] = fitted
 	_records = ConfigStore.load_or_empty(records_path)
 	_apply_master_volume()
+	_apply_ui_scale()
 	reloaded.emit()
 
 
@@ -154,6 +155,8 @@ func set_value(key: StringName, value: Variant) -> void:
 	ConfigStore.save(config, settings_path)
 	if key == &"master_volume":
 		_apply_master_volume()
+	elif key == &"ui_scale":
+		_apply_ui_scale()
 	changed.emit(key)
 
 
@@ -195,6 +198,13 @@ func _apply_master_volume() -> void:
 	var volume := clampf(get_value(&"master_volume"), 0.0, 1.0)
 	AudioServer.set_bus_mute(0, volume <= 0.0)
 	AudioServer.set_bus_volume_db(0, linear_to_db(maxf(volume, 1e-4)))
+
+
+## Menus and the HUD are drawn at the player's size: the window's canvas (1280 × 720 at
+## 100 %, stretched to the window) shrinks as they grow.
+func _apply_ui_scale() -> void:
+	if is_inside_tree():
+		get_tree().root.content_scale_factor = float(get_value(&"ui_scale")) / 100.0
 
 
 ## The file the ghost of the best lap on `level` is kept in.

@@ -118,6 +118,9 @@ screenshots() {
          --set=level_path=$levels/test_level/test_level.tscn \
     && tools/screenshot.sh $game build/screenshots/track.png 240 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
+    && tools/screenshot.sh $game build/screenshots/telemetry.png 240 \
+         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
+         --setting=telemetry=true --setting=ui_scale=125 \
     && tools/screenshot.sh $game build/screenshots/track-low.png 240 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
          --setting=graphics_quality=low \
@@ -163,7 +166,8 @@ bike_gallery() {
 }
 
 # Screenshots of the menus (the School on a first launch and with medals, a level's
-# challenges), a lesson's briefing, medal and failed try, the levels, cameras, a full
+# challenges), a lesson's briefing, medal and failed try, the levels, the telemetry
+# overlay at 125 %, cameras, a full
 # brake's tyre marks, a crash's sparks, dust on the track's gravel, replay, ghost race and
 # each bike under Xvfb, failing on a blank picture (the ghost race races the lap the bot
 # rode in the GDScript suites).

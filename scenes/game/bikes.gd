@@ -50,6 +50,30 @@ static func rideable() -> Array[String]:
 	return keys
 
 
+## The chosen bike's file: the settings' choice, or, where that cannot be built (its
+## error names the bike and the field), the first bike that can.
+static func chosen_path() -> String:
+	var chosen := str(Settings.get_value(&"bike"))
+	if description(chosen) != null:
+		return path_of(chosen)
+	var can_ride := rideable()
+	if can_ride.is_empty():
+		push_error("Game: no bike can be built; riding the reference bike")
+		return ""
+	push_error("Game: %s cannot be ridden; riding %s" % [chosen, can_ride[0]])
+	return path_of(can_ride[0])
+
+
+## The bike described at `path`, or none (the reference bike) with an error saying why.
+static func load_description(path: String) -> BikeDescription:
+	var found := (
+		load(path) as BikeDescription if ResourceLoader.exists(path, "BikeDescription") else null
+	)
+	if found == null:
+		push_error("Game: %s is not a bike description; riding the reference bike" % path)
+	return found
+
+
 ## The key best laps and ghosts of `level_key` ridden on bike `key` are saved under.
 static func record_key(level_key: String, key: String) -> String:
 	return level_key if key == FIRST_BIKE else "%s@%s" % [level_key, key]

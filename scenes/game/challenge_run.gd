@@ -52,11 +52,7 @@ func setup(path: String, ridden: Challenge, game: Game, driver: BikeDriver) -> v
 	card.name = "ChallengeCard"
 	add_child(card)
 	card.setup(
-		self,
-		_bike,
-		driver,
-		"Lesson %d" % (lesson + 1) if lesson >= 0 else "Challenge",
-		not next.is_empty()
+		self, _bike, "Lesson %d" % (lesson + 1) if lesson >= 0 else "Challenge", not next.is_empty()
 	)
 	# Only a game that is the running scene leaves for the next (a test's stays).
 	card.next_requested.connect(

@@ -53,30 +53,6 @@ var _crash_cause := ""
 @onready var _pause_menu: PauseMenu = $PauseMenu
 
 
-## The chosen bike's file: the settings' choice, or, where that cannot be built (its
-## error names the bike and the field), the first bike that can.
-static func _chosen_bike_path() -> String:
-	var chosen := str(Settings.get_value(&"bike"))
-	if Bikes.description(chosen) != null:
-		return Bikes.path_of(chosen)
-	var rideable := Bikes.rideable()
-	if rideable.is_empty():
-		push_error("Game: no bike can be built; riding the reference bike")
-		return ""
-	push_error("Game: %s cannot be ridden; riding %s" % [chosen, rideable[0]])
-	return Bikes.path_of(rideable[0])
-
-
-## The bike described at `path`, or none (the reference bike) with an error saying why.
-static func _bike_description(path: String) -> BikeDescription:
-	var description := (
-		load(path) as BikeDescription if ResourceLoader.exists(path, "BikeDescription") else null
-	)
-	if description == null:
-		push_error("Game: %s is not a bike description; riding the reference bike" % path)
-	return description
-
-
 func _ready() -> void:
 	var challenge := _chosen_challenge()
 	if challenge != null:
@@ -98,9 +74,9 @@ func _ready() -> void:
 	bike = BIKE.instantiate() as BikeSimulation
 	bike.terrain_root = ^"../Level"
 	bike.wait_for_throttle = true
-	var bike_file := bike_path if not bike_path.is_empty() else _chosen_bike_path()
+	var bike_file := bike_path if not bike_path.is_empty() else Bikes.chosen_path()
 	if not bike_file.is_empty():
-		bike.bike = _bike_description(bike_file)
+		bike.bike = Bikes.load_description(bike_file)
 	bike_key = bike_file.get_file().get_basename()
 	if level is Track:
 		var track := level as Track
@@ -115,6 +91,9 @@ func _ready() -> void:
 	_hud.bind(self)
 	_pause_menu.restart_requested.connect(restart)
 	_pause_menu.replay_requested.connect(watch_replay)
+	# The pause menu stands over the ride with nothing of the HUD showing through.
+	_pause_menu.opened.connect(_show_overlays.bind(false))
+	_pause_menu.closed.connect(_show_overlays.bind(true))
 	_rumble = Rumble.new()
 	_rumble.name = "Rumble"
 	add_child(_rumble)
@@ -261,6 +240,11 @@ func is_automatic() -> bool:
 	return level.automatic and challenge_run == null
 
 
+## The player's hands (the driver), for the HUD's drawing of them.
+func driver() -> BikeDriver:
+	return _driver
+
+
 ## Name of the bike ridden, for people.
 func bike_name() -> String:
 	return bike.bike.name if bike.bike != null else "Street 350"
@@ -330,8 +314,16 @@ func _start_challenge(challenge: Challenge) -> void:
 	var spawn := challenge_run.spawn_point()
 	_spawn_index = maxi(level.spawn_points().find(spawn), 0) if spawn != null else 0
 	challenge_card = challenge_run.card
+	_hud.show_inputs(true)
 	challenge_card.retry_requested.connect(restart)
 	challenge_card.menu_requested.connect(quit_to_menu)
+
+
+## Shows or hides what is drawn over the ride: the HUD and a challenge's card.
+func _show_overlays(shown: bool) -> void:
+	_hud.visible = shown
+	if challenge_card != null:
+		challenge_card.visible = shown
 
 
 func _on_replay_closed() -> void:
@@ -376,6 +368,7 @@ func setting_targets() -> Array[Object]:
 	return [
 		_driver,
 		_camera,
+		_hud,
 		_rumble,
 		bike.get_node(^"TrajectoryView"),
 		bike.get_node(^"PhysicalBikeView"),

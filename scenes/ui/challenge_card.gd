@@ -2,8 +2,9 @@ class_name ChallengeCard
 extends CanvasLayer
 ## What a player reads around a lesson or challenge: before the ride, its briefing (what
 ## to do in one line, the controls that matter, the medals' thresholds, the best so far);
-## riding, how it stands and the player's hands on the pad; after, the result (the medal,
-## the score, what the ride measured, or what went wrong) with retry, next and menu.
+## riding, the HUD says how it stands and draws the player's hands; after, the result
+## (the medal, the score, what the ride measured, or what went wrong) with retry, next
+## and menu.
 
 ## The player asked to try again, to go on to the next lesson, or back to the menu.
 signal retry_requested
@@ -21,7 +22,6 @@ const PANEL_WIDTH := 760.0
 const FAIL_COLOUR := Color(1.0, 0.72, 0.35)
 
 var _run: ChallengeRun
-var _driver: BikeDriver
 var _bike: BikeSimulation
 ## "Lesson 3" or "Challenge", above the title.
 var _kind := ""
@@ -29,8 +29,6 @@ var _has_next := false
 
 var _briefing: PanelContainer
 var _result: PanelContainer
-var _live: Label
-var _inputs: InputDisplay
 var _result_badge: MedalBadge
 var _result_title: Label
 var _result_lines: Label
@@ -38,14 +36,11 @@ var _next_button: Button
 var _retry_button: Button
 
 
-## Shows `run` ridden on `bike` by `driver`; `kind` heads the card ("Lesson 2"), and
-## `has_next` offers the next lesson after a medal.
-func setup(
-	run: ChallengeRun, bike: BikeSimulation, driver: BikeDriver, kind: String, has_next: bool
-) -> void:
+## Shows `run` ridden on `bike`; `kind` heads the card ("Lesson 2"), and `has_next`
+## offers the next lesson after a medal.
+func setup(run: ChallengeRun, bike: BikeSimulation, kind: String, has_next: bool) -> void:
 	_run = run
 	_bike = bike
-	_driver = driver
 	_kind = kind
 	_has_next = has_next
 	_build()
@@ -78,21 +73,8 @@ func briefing_text() -> String:
 
 
 func _process(_delta: float) -> void:
-	if _run == null:
-		return
-	var riding := not _bike.is_waiting_for_throttle() and _run.result == null
-	if riding and _briefing.visible:
+	if _run != null and _briefing.visible and not _bike.is_waiting_for_throttle():
 		_briefing.visible = false
-	_live.visible = riding
-	_inputs.visible = riding or _result.visible
-	if riding:
-		var progress := _run.progress_text()
-		var clock := Level.format_time(_run.judge.elapsed) if _run.judge != null else ""
-		_live.text = "%s   ·   %s" % [progress, clock] if not progress.is_empty() else clock
-	_inputs.throttle = _driver.throttle
-	_inputs.brake = _driver.brake
-	_inputs.turn = _driver.turn
-	_inputs.rider = _driver.rider
 
 
 func _fill_briefing() -> void:
@@ -199,23 +181,6 @@ func _build() -> void:
 	buttons.add_child(_button("Menu", menu_requested))
 	result_lines.add_child(buttons)
 	_result.visible = false
-	_live = Label.new()
-	_live.name = "Live"
-	_live.horizontal_alignment = HORIZONTAL_ALIGNMENT_CENTER
-	_live.add_theme_font_size_override(&"font_size", 24)
-	_live.add_theme_color_override(&"font_shadow_color", Color(0, 0, 0, 0.6))
-	_live.set_anchors_and_offsets_preset(Control.PRESET_CENTER_TOP)
-	_live.offset_left = -PANEL_WIDTH / 2.0
-	_live.offset_right = PANEL_WIDTH / 2.0
-	_live.offset_top = 84.0
-	add_child(_live)
-	_inputs = InputDisplay.new()
-	_inputs.name = "Inputs"
-	_inputs.set_anchors_and_offsets_preset(Control.PRESET_BOTTOM_LEFT)
-	_inputs.offset_left = 24.0
-	_inputs.offset_top = -64.0 - _inputs.custom_minimum_size.y
-	_inputs.offset_bottom = -64.0
-	add_child(_inputs)
 	show_briefing()
 
 

@@ -1,14 +1,26 @@
 class_name Hud
 extends CanvasLayer
 ## The riding HUD: lean dial (wanted vs actual lean), the rider's weight (asked vs
-## actual), speed, controller with its trajectory count (and whether the game picks it),
-## planning time, late plans a second and the planner's own numbers about its plan
-## (C-PBP's resamplings, MPPI's effective samples, …), frame rate, the level's timer line, attempt
-## tally, banners for what just happened, and the split against a ghost at each
-## checkpoint.
+## actual), speed, the level's timer line and attempt tally, banners for what just
+## happened, the split against a ghost at each checkpoint (a sign and an arrow as well as
+## a colour), and in a lesson the player's hands on the pad. With `telemetry` on, the
+## overlay a researcher reads: controller with its trajectory count (and whether the game
+## picks it), planning time, late plans a second, the planner's own numbers about its plan
+## (C-PBP's resamplings, MPPI's effective samples, …) and the frame rate. Containers lay it
+## out, so a longer text pushes its neighbour rather than running into it
+## (tests/scenes/test_hud_layout.gd).
 
 ## Seconds a banner stays before fading.
 const BANNER_SECONDS := 3.0
+const AHEAD_COLOUR := Color(0.4, 1.0, 0.45)
+const BEHIND_COLOUR := Color(1.0, 0.35, 0.3)
+
+## The planner telemetry overlay (a setting, the Lab's).
+var telemetry := false:
+	set(value):
+		telemetry = value
+		if is_node_ready():
+			_telemetry.visible = value
 
 var _game: Game
 var _banner_left := 0.0
@@ -28,6 +40,12 @@ var _late_clock := 0.0
 @onready var _banner: Label = %Banner
 @onready var _split: Label = %Split
 @onready var _hint: Label = %Hint
+@onready var _telemetry: Control = %Telemetry
+@onready var _inputs: InputDisplay = %Inputs
+
+
+func _ready() -> void:
+	_telemetry.visible = telemetry
 
 
 ## Starts showing `game`'s bike and level.
@@ -42,13 +60,17 @@ func announce(text: String) -> void:
 	_banner_left = BANNER_SECONDS
 
 
+## Shows the player's hands on the pad (a lesson's inputs) under the hint, or not.
+func show_inputs(shown: bool) -> void:
+	_inputs.visible = shown
+
+
 ## Shows for a few seconds how far behind the ghost (seconds; negative: ahead) the rider
-## crossed `checkpoint`: green ahead, red behind, as in Trials.
+## crossed `checkpoint`: a sign and an arrow say it as well as the colour (green ahead, red
+## behind, as in Trials).
 func show_split(checkpoint: int, behind: float) -> void:
-	_split.text = "checkpoint %d   %+.2f s" % [checkpoint, behind]
-	_split.add_theme_color_override(
-		&"font_color", Color(1.0, 0.35, 0.3) if behind > 0.0 else Color(0.4, 1.0, 0.45)
-	)
+	_split.text = split_line(checkpoint, behind)
+	_split.add_theme_color_override(&"font_color", BEHIND_COLOUR if behind > 0.0 else AHEAD_COLOUR)
 	_split.modulate.a = 1.0
 	_split_left = BANNER_SECONDS
 
@@ -56,6 +78,21 @@ func show_split(checkpoint: int, behind: float) -> void:
 ## The split shown now (empty once it faded).
 func split_text() -> String:
 	return _split.text if _split_left > 0.0 else ""
+
+
+## "checkpoint 2   ↑ −0.42 s ahead" or "checkpoint 2   ↓ +0.42 s behind".
+static func split_line(checkpoint: int, behind: float) -> String:
+	var ahead := behind <= 0.0
+	return (
+		"checkpoint %d   %s %s%.2f s %s"
+		% [
+			checkpoint,
+			"↑" if ahead else "↓",
+			"−" if ahead else "+",
+			absf(behind),
+			"ahead" if ahead else "behind"
+		]
+	)
 
 
 func _process(delta: float) -> void:
@@ -75,10 +112,43 @@ func _process(delta: float) -> void:
 		"lean %+.0f°   wanted %+.0f°"
 		% [rad_to_deg(bike.get_lean()), rad_to_deg(bike.get_desired_lean())]
 	)
+	if _telemetry.visible:
+		_show_telemetry(bike, delta)
+	if _inputs.visible:
+		var hands := _game.driver()
+		_inputs.throttle = hands.throttle
+		_inputs.brake = hands.brake
+		_inputs.turn = hands.turn
+		_inputs.rider = hands.rider
+	var status := "%s   ·   %s" % [_game.level.title, _game.level.status_line()]
+	var run := _game.challenge_run
+	if run != null and run.judge != null:
+		var progress := run.progress_text()
+		status = (
+			"%s   ·   %s%s"
+			% [
+				run.challenge.title,
+				progress + "   ·   " if not progress.is_empty() else "",
+				Level.format_time(run.judge.elapsed)
+			]
+		)
+	elif _game.is_automatic():
+		status += "   ·   %d/%d reached the goal" % [_game.successes, _game.attempts]
+	else:
+		status += "   ·   falls %d" % _game.falls
+	# The bike on a line of its own below: the line above is full on a track.
+	_status.text = "%s\n%s" % [status, _game.bike_name()]
+	_hint.text = _hint_text(bike)
+
+
+## The overlay's lines: the controller and its planning, then the frame rate and the
+## planner's own numbers.
+func _show_telemetry(bike: BikeSimulation, delta: float) -> void:
 	var controller := _game.controller_name()
 	var failure := bike.get_controller_failure()
 	if not failure.is_empty():
-		controller += "  ·  %s" % failure
+		# Its whole story is the banner's (the game announces a failure to every player).
+		controller += "  ·  failed: arcade steers"
 	elif BikeSimulation.controller_plans(bike.controller):
 		controller += (
 			"  ·  %s%d trajectories  ·  planning %.1f ms  ·  %d late/s"
@@ -90,19 +160,10 @@ func _process(delta: float) -> void:
 			]
 		)
 	_controller.text = controller
-	# The planner's own numbers go on the line below, which has the room.
 	_performance.text = "%d fps" % Engine.get_frames_per_second()
 	if failure.is_empty() and BikeSimulation.controller_plans(bike.controller):
 		_performance.text += "  ·  " + _horizon_text(bike)
 		_performance.text += _diagnostics_text(bike.get_plan_diagnostics())
-	var status := "%s   ·   %s" % [_game.level.title, _game.level.status_line()]
-	if _game.is_automatic():
-		status += "   ·   %d/%d reached the goal" % [_game.successes, _game.attempts]
-	else:
-		status += "   ·   falls %d" % _game.falls
-	# The bike on a line of its own below: the line above is full on a track.
-	_status.text = "%s\n%s" % [status, _game.bike_name()]
-	_hint.text = _hint_text(bike)
 
 
 ## How far the plans look: "1.2 s ahead", or "0.6 s ahead + learned cost-to-go" when the

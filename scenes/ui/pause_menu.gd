@@ -11,6 +11,9 @@ extends CanvasLayer
 signal restart_requested
 signal replay_requested
 signal quit_requested
+## The menu opened over the game, or closed (the game hides its HUD behind it meanwhile).
+signal opened
+signal closed
 
 const CONTROLS := """Gamepad / keyboard
 RT / W, ↑        throttle
@@ -70,12 +73,14 @@ func open() -> void:
 	visible = true
 	get_tree().paused = true
 	_resume.grab_focus()
+	opened.emit()
 
 
 ## Hides the menu and resumes the game.
 func close() -> void:
 	visible = false
 	get_tree().paused = false
+	closed.emit()
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -98,6 +103,7 @@ func _on_restart() -> void:
 
 func _on_replay() -> void:
 	visible = false
+	closed.emit()
 	replay_requested.emit()
 
 

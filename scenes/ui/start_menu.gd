@@ -11,6 +11,8 @@ extends Control
 ## challenge (its file).
 signal ride_requested(level: String)
 signal challenge_requested(path: String)
+## The player confirmed they want to quit the game.
+signal quit_requested
 
 const GAME := "res://scenes/game/game.tscn"
 const SCHOOL := "res://scenes/levels/school/school.tscn"
@@ -19,6 +21,7 @@ const SCHOOL_ENTRY := "School"
 
 ## Whose list is open: SCHOOL_ENTRY or a level's key.
 var _list_owner := ""
+var _quit_confirm: QuitConfirm
 
 @onready var _version_label: Label = %VersionLabel
 @onready var _status_label: Label = %StatusLabel
@@ -41,8 +44,13 @@ func _ready() -> void:
 		return
 	_version_label.text = NativeModule.describe()
 	# Only the menu that is the running scene navigates; embedded ones just report.
+	_quit_confirm = QuitConfirm.new()
+	_quit_confirm.name = "QuitConfirm"
+	add_child(_quit_confirm)
+	_quit_confirm.quit_confirmed.connect(quit_requested.emit)
 	if get_tree().current_scene == self:
 		ride_requested.connect(_ride)
+		quit_requested.connect(get_tree().quit)
 		challenge_requested.connect(func(path: String) -> void: ChallengeRun.ride(get_tree(), path))
 	_build_choices()
 	if not NativeModule.is_loaded():
@@ -61,7 +69,7 @@ func _unhandled_input(event: InputEvent) -> void:
 	if _list.visible:
 		close_list()
 	else:
-		get_tree().quit()
+		_quit_confirm.ask()
 
 
 ## Shows the School's lessons in place of the levels, the focus on lesson `index`.

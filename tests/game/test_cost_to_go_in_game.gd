@@ -29,6 +29,8 @@ func after_each() -> void:
 
 
 func _ride(bike_path: String) -> BikeSimulation:
+	# How far the plans look is the telemetry overlay's to say.
+	Settings.set_value(&"telemetry", true)
 	_game = GAME.instantiate()
 	_game.level_path = LEVEL
 	_game.bike_path = bike_path

@@ -36,7 +36,7 @@ func test_every_game_and_display_setting_reaches_its_target_by_name() -> void:
 	# The level is chosen before the game is built (the start menu, then _ready).
 	var read_when_built: Array[StringName] = [&"level"]
 	# Followed for every scene, the menus' too, by an autoload (tested with it).
-	var followed_by_an_autoload: Array[StringName] = [&"graphics_quality"]
+	var followed_by_an_autoload: Array[StringName] = [&"graphics_quality", &"ui_scale"]
 	for key: StringName in Settings.entries:
 		var owner: String = Settings.entries[key].owner
 		if owner not in ["game", "display"] or key in read_when_built + followed_by_an_autoload:
@@ -240,6 +240,7 @@ func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
 	var before: bool = Settings.get_value(&"show_trajectories")
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_BACK)
 	assert_true(get_tree().paused, "Back pauses")
+	assert_false((_game.get_node("Hud") as CanvasLayer).visible, "the HUD hides behind the menu")
 	var menu: PauseMenu = _game.get_node("PauseMenu")
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%Resume"))
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
@@ -256,6 +257,7 @@ func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
 	assert_false(_game.bike.get_node("VisualBikeView").visible)
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_BACK)
 	assert_false(get_tree().paused, "Back resumes")
+	assert_true((_game.get_node("Hud") as CanvasLayer).visible, "and the HUD is back")
 
 
 func _frame_heading() -> Vector3:

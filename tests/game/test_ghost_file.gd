@@ -117,7 +117,7 @@ func test_the_game_sets_a_broken_ghost_aside_and_says_so() -> void:
 	await wait_frames(2)
 	assert_null(game.ghost_race.ghost(), "nothing to race")
 	assert_true(FileAccess.file_exists(path + ".broken"), "the file is kept aside")
-	var banner := (game.get_node(^"Hud/Banner") as Label).text
+	var banner := (game.get_node(^"Hud/%Banner") as Label).text
 	assert_true(banner.begins_with("Your ghost could not be read"), banner)
 	game.queue_free()
 	await wait_frames(1)

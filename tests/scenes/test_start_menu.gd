@@ -83,3 +83,20 @@ func test_the_backdrop_is_the_level_in_focus_in_the_games_light() -> void:
 	)
 	assert_eq(shown.size(), 1, "one level")
 	assert_eq((shown[0] as Node).scene_file_path, Levels.path_of("track"))
+
+
+func test_b_asks_before_quitting_and_b_again_stays() -> void:
+	var quits: Array[bool] = []
+	_menu.connect(&"quit_requested", func() -> void: quits.append(true))
+	var confirm := _menu.get_node("QuitConfirm") as QuitConfirm
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_B)
+	assert_true(confirm.visible, "asked")
+	assert_eq(get_viewport().gui_get_focus_owner().name, &"Stay", "the focus on staying")
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_B)
+	assert_false(confirm.visible, "B again stays")
+	assert_eq(quits, [] as Array[bool])
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_B)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_RIGHT)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
+	assert_eq(quits, [true] as Array[bool], "Quit chosen")
+	assert_true(is_instance_valid(_menu), "an embedded menu does not quit the game itself")

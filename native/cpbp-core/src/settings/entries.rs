@@ -300,6 +300,33 @@ pub const GRAPHICS_QUALITY: Setting = Setting {
     menu: "View",
     ..BASE
 };
+pub const UI_SCALE: Setting = Setting {
+    name: "ui_scale",
+    label: "Text and HUD size",
+    description: "How large the menus, the HUD and their text are drawn.",
+    unit: "%",
+    default: D::Float(100.0),
+    // Up to 125 % the HUD still fits the game's smallest canvas (1280 × 720 at 100 %,
+    // 1024 × 576 at 125 %) with its longest texts and no label over another
+    // (tests/scenes/test_hud_layout.gd); at 150 % its dial and the telemetry no longer do.
+    range: Some(Range::new(75.0, 125.0, 5.0)),
+    offered: &[75.0, 90.0, 100.0, 110.0, 125.0],
+    owner: Owner::Display,
+    player: true,
+    menu: "View",
+    ..BASE
+};
+pub const TELEMETRY: Setting = Setting {
+    name: "telemetry",
+    label: "Planner telemetry",
+    description: "Show the controller's and the planners' numbers over the HUD (the \
+                  controller, trajectories, planning time, late plans, the planner's own).",
+    default: D::Bool(false),
+    owner: Owner::Display,
+    player: true,
+    menu: "View",
+    ..BASE
+};
 pub const RUMBLE: Setting = Setting {
     name: "rumble",
     label: "Rumble",
@@ -340,6 +367,8 @@ pub const ENTRIES: &[Setting] = &[
     SHOW_TRAJECTORIES,
     PHYSICAL_MODEL,
     GRAPHICS_QUALITY,
+    UI_SCALE,
+    TELEMETRY,
     CONTROLLER,
     MAX_SPEED_KMH,
     MOTOR_FORCE,
