@@ -137,6 +137,8 @@ screenshots() {
          --hold=throttle:1.0@15- \
     && tools/screenshot.sh $game build/screenshots/pause-menu.png 60 \
          --set=level_path=$levels/track/track.tscn --tap=pause@40 \
+    && tools/screenshot.sh $game build/screenshots/lab.png 70 \
+         --set=level_path=$levels/track/track.tscn --tap=pause@40 --call=PauseMenu:open_lab@45 \
     && tools/screenshot.sh $game build/screenshots/camera-low-side.png 200 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 --hold=steer_right:0.4 \
          --tap=cycle_camera@5 \
@@ -167,7 +169,7 @@ bike_gallery() {
 
 # Screenshots of the menus (the School on a first launch and with medals, a level's
 # challenges), a lesson's briefing, medal and failed try, the levels, the telemetry
-# overlay at 125 %, cameras, a full
+# overlay at 125 %, the Lab, cameras, a full
 # brake's tyre marks, a crash's sparks, dust on the track's gravel, replay, ghost race and
 # each bike under Xvfb, failing on a blank picture (the ghost race races the lap the bot
 # rode in the GDScript suites).

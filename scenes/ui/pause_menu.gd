@@ -2,8 +2,9 @@ class_name PauseMenu
 extends CanvasLayer
 ## The pause menu (Back / Esc): stops the simulation, says which bike is ridden (the start
 ## menu chooses it) and offers resume, the replay of the last run, every player setting the
-## schema puts in a menu (`SettingControls`), the trajectory count, restart and quit; lists
-## the controls. Every change is saved in the settings at once.
+## schema puts in a player's menu group (`SettingControls`), the Lab (the research tools,
+## `LabPanel`), restart and quit; lists the controls. Every change is saved in the
+## settings at once.
 ## Works with a gamepad alone (d-pad/stick to move, A to choose, B or Back to resume).
 
 ## The player asked to start the attempt again, to watch the last run, or to leave for
@@ -25,36 +26,33 @@ Right stick / I J K L   rider's weight (fore, aft, sides)
   forward + brake        stoppie
 D-pad / numpad 8 4 6 2, right mouse drag   camera
 Left stick click / Tab   camera: chase, low side, helmet
-Start / C        cycle controller
+Start / C        Lab: next controller
 Back / Esc, P    pause
 B / R            respawn
 A / T            lift the bike upright
 LB RB / Q E      previous / next spawn point
 X / F            auto-accelerate
-Y / V            show trajectories"""
+Y / V            Lab: the lines ahead"""
 
-var _syncing := false
+var _lab: LabPanel
 
 @onready var _resume: Button = %Resume
 @onready var _settings: SettingControls = %Settings
-@onready var _trajectory_count: OptionButton = %TrajectoryCount
 @onready var _controls: Label = %Controls
 
 
 func _ready() -> void:
 	visible = false
 	_controls.text = CONTROLS
-	for label in Settings.trajectory_labels():
-		_trajectory_count.add_item(label)
+	_lab = LabPanel.new()
+	_lab.name = "Lab"
+	add_child(_lab)
+	_lab.closed.connect(_on_lab_closed)
+	%OpenLab.pressed.connect(open_lab)
 	_resume.pressed.connect(close)
 	%Restart.pressed.connect(_on_restart)
 	%WatchReplay.pressed.connect(_on_replay)
 	%Quit.pressed.connect(_on_quit)
-	_trajectory_count.item_selected.connect(
-		func(i: int) -> void:
-			if not _syncing:
-				Settings.choose_trajectories(i)
-	)
 
 
 ## Shows which bike is ridden: `text` names it and its main figures.
@@ -62,9 +60,17 @@ func show_bike(text: String) -> void:
 	%BikeSummary.text = text
 
 
-## The menu's control of setting `key` (null if it has none).
+## The menu's control of setting `key`, the Lab's for a research tool (null if neither
+## has one).
 func control_of(key: StringName) -> Control:
-	return _settings.control_of(key)
+	var control := _settings.control_of(key)
+	return control if control != null else _lab.control_of(key)
+
+
+## Shows the Lab over the menu.
+func open_lab() -> void:
+	$Panel.visible = false
+	_lab.open()
 
 
 ## Pauses the game and shows the menu with the current settings.
@@ -84,16 +90,20 @@ func close() -> void:
 
 
 func _unhandled_input(event: InputEvent) -> void:
+	if _lab.visible:
+		return
 	if visible and (event.is_action_pressed(&"pause") or event.is_action_pressed(&"ui_cancel")):
 		get_viewport().set_input_as_handled()
 		close()
 
 
 func _sync() -> void:
-	_syncing = true
 	_settings.sync()
-	_trajectory_count.selected = Settings.trajectory_choice()
-	_syncing = false
+
+
+func _on_lab_closed() -> void:
+	$Panel.visible = true
+	%OpenLab.grab_focus()
 
 
 func _on_restart() -> void:

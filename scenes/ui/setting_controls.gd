@@ -4,6 +4,13 @@ extends VBoxContainer
 ## entries with a `menu` group), built from the entries: a switch for a true/false
 ## setting, a list for one with offered values or choices or the controller, a slider over
 ## the range for any other number. Each control is named after its setting and saves at once.
+## The player's groups, or with `lab` the Lab's (the research tools).
+
+## The group of the research tools, shown only in the Lab.
+const LAB := "Lab"
+
+## Shows the Lab's settings instead of the player's.
+@export var lab := false
 
 var _syncing := false
 
@@ -11,7 +18,7 @@ var _syncing := false
 func _ready() -> void:
 	for key: StringName in Settings.entries:
 		var entry: Dictionary = Settings.entries[key]
-		if not entry.menu.is_empty():
+		if not entry.menu.is_empty() and (entry.menu == LAB) == lab:
 			_add_control(entry)
 	Graphics.applied.connect(_show_graphics_preset)
 

@@ -1,10 +1,10 @@
 extends Control
 ## The start menu: the School's lessons, or a level to ride freely or take on its
 ## challenges (a list with the medals won on every bike; the backdrop shows the one in
-## focus), the bike (the backdrop stands it at the start; its main figures below it), the
-## controller, the trajectory count and the auto-accelerate speed; shows the track's best
-## lap on that bike and what native module runs underneath. Works with a gamepad alone
-## (d-pad/stick to move, A to choose).
+## focus), the bike (the backdrop stands it at the start; its main figures below it) and
+## the Lab (the research tools: the controller, the trajectory count, what the planners
+## draw); shows the track's best lap on that bike and what native module runs underneath.
+## Works with a gamepad alone (d-pad/stick to move, A to choose).
 ## `--native-info` prints the native module and exits (smoke tests, bug reports).
 
 ## The player chose a level to ride freely (its key in `Levels.ALL`), or a lesson or
@@ -22,6 +22,7 @@ const SCHOOL_ENTRY := "School"
 ## Whose list is open: SCHOOL_ENTRY or a level's key.
 var _list_owner := ""
 var _quit_confirm: QuitConfirm
+var _lab: LabPanel
 
 @onready var _version_label: Label = %VersionLabel
 @onready var _status_label: Label = %StatusLabel
@@ -29,9 +30,6 @@ var _quit_confirm: QuitConfirm
 @onready var _levels: VBoxContainer = %Levels
 @onready var _bike: OptionButton = %Bike
 @onready var _bike_figures: Label = %BikeFigures
-@onready var _controller: OptionButton = %Controller
-@onready var _trajectories: OptionButton = %Trajectories
-@onready var _auto_speed: OptionButton = %AutoSpeed
 @onready var _best_lap: Label = %BestLap
 @onready var _backdrop: MenuBackdrop = $Backdrop
 @onready var _choices: Control = $Choices
@@ -63,7 +61,7 @@ func _ready() -> void:
 
 
 func _unhandled_input(event: InputEvent) -> void:
-	if not event.is_action_pressed(&"ui_cancel"):
+	if not event.is_action_pressed(&"ui_cancel") or _lab.visible:
 		return
 	get_viewport().set_input_as_handled()
 	if _list.visible:
@@ -183,27 +181,11 @@ func _build_choices() -> void:
 		button.focus_entered.connect(func() -> void: _backdrop.show_level(key))
 		_levels.add_child(button)
 	_build_bike_choice()
-	for name in NativeModule.controller_names():
-		_controller.add_item(NativeModule.controller_label(name))
-	_controller.selected = maxi(
-		NativeModule.controller_names().find(Settings.get_value(&"controller")), 0
-	)
-	_controller.item_selected.connect(
-		func(i: int) -> void: Settings.set_value(&"controller", NativeModule.controller_names()[i])
-	)
-	for label in Settings.trajectory_labels():
-		_trajectories.add_item(label)
-	_trajectories.selected = Settings.trajectory_choice()
-	_trajectories.item_selected.connect(Settings.choose_trajectories)
-	for speed in Settings.offered(&"auto_speed_kmh"):
-		_auto_speed.add_item("test speed %d km/h" % speed)
-	_auto_speed.selected = maxi(
-		Settings.offered(&"auto_speed_kmh").find(Settings.get_value(&"auto_speed_kmh")), 0
-	)
-	_auto_speed.item_selected.connect(
-		func(i: int) -> void:
-			Settings.set_value(&"auto_speed_kmh", Settings.offered(&"auto_speed_kmh")[i])
-	)
+	_lab = LabPanel.new()
+	_lab.name = "Lab"
+	add_child(_lab)
+	_lab.closed.connect(func() -> void: %OpenLab.grab_focus())
+	%OpenLab.pressed.connect(_lab.open)
 	_show_best_lap()
 
 

@@ -245,7 +245,9 @@ func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%Resume"))
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.get_node("%WatchReplay"))
-	await SimulatedInput.press_joypad_button(JOY_BUTTON_DPAD_DOWN)
+	# The trajectory view and the physical bodies are the Lab's, a button further down.
+	menu.get_node("%OpenLab").grab_focus()
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_eq(get_viewport().gui_get_focus_owner(), menu.control_of(&"show_trajectories"))
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_A)
 	assert_eq(Settings.get_value(&"show_trajectories"), not before, "A toggled the trajectory view")
@@ -255,6 +257,10 @@ func test_the_pause_menu_works_with_a_gamepad_alone() -> void:
 	assert_true(Settings.get_value(&"physical_model"))
 	assert_true(_game.bike.get_node("PhysicalBikeView").visible, "physical bodies shown")
 	assert_false(_game.bike.get_node("VisualBikeView").visible)
+	await SimulatedInput.press_joypad_button(JOY_BUTTON_BACK)
+	assert_eq(
+		get_viewport().gui_get_focus_owner(), menu.get_node("%OpenLab"), "Back: the Lab closes"
+	)
 	await SimulatedInput.press_joypad_button(JOY_BUTTON_BACK)
 	assert_false(get_tree().paused, "Back resumes")
 	assert_true((_game.get_node("Hud") as CanvasLayer).visible, "and the HUD is back")

@@ -9,7 +9,7 @@ extends Node
 ## part strength, `action@40-90` from frame 40 up to frame 90), `--tap=action@frame`
 ## (pressed once at that frame, repeatable) and
 ## `--call=node:method:argument@frame` (calls a method of a node under the scene's root,
-## found by name, with one string argument, at that frame; repeatable), and
+## found by name, with one string argument or none, at that frame; repeatable), and
 ## `--copy=SOURCE>user://DEST` (a file copied into the scratch user folder before the
 ## scene loads: a ghost to race, say; repeatable) and `--setting=key=value` (a player
 ## setting, repeatable). Pictures are drawn at the PICTURE_QUALITY preset unless a
@@ -118,14 +118,15 @@ func _wait_for_every_plan(node: Node) -> void:
 		node.set("wait_for_every_plan", true)
 
 
-## Calls `node:method:argument` on the node of that name under `root` that has the method
-## (a menu's label may share a name with the node meant, as the pause menu's did the bike's).
+## Calls `node:method:argument` (or `node:method`, with none) on the node of that name
+## under `root` that has the method (a menu's label may share a name with the node meant,
+## as the pause menu's did the bike's).
 func _call(root: Node, spec: String) -> void:
 	var parts := spec.split(":", true, 2)
-	var named := root.find_children(parts[0], "", true, false) if parts.size() == 3 else []
+	var named := root.find_children(parts[0], "", true, false) if parts.size() >= 2 else []
 	for target: Node in named:
 		if target.has_method(parts[1]):
-			target.call(parts[1], parts[2])
+			target.callv(parts[1], parts.slice(2))
 			return
 	push_error("--call=%s: no such node and method under the scene" % spec)
 

@@ -47,7 +47,7 @@ pub const MOTOR_FORCE: Setting = Setting {
     range: Some(Range::new(0.1, 1.0, 0.05)),
     owner: Owner::Ride,
     player: true,
-    menu: "Riding",
+    menu: "Lab",
     ..BASE
 };
 pub const SUBSTEPS: Setting = Setting {
@@ -140,7 +140,7 @@ pub const TERMINAL_VALUE: Setting = Setting {
     default: D::Bool(false),
     player_default: Some(D::Bool(true)),
     player: true,
-    menu: "Riding",
+    menu: "Lab",
     ..BASE
 };
 pub const VALUE_HORIZON_S: Setting = Setting {
@@ -209,7 +209,7 @@ pub const CONTROLLER: Setting = Setting {
     default: D::Text("combined"),
     owner: Owner::Game,
     player: true,
-    menu: "Riding",
+    menu: "Lab",
     ..BASE
 };
 pub const AUTO_SPEED_KMH: Setting = Setting {
@@ -275,7 +275,7 @@ pub const SHOW_TRAJECTORIES: Setting = Setting {
     default: D::Bool(true),
     owner: Owner::Display,
     player: true,
-    menu: "View",
+    menu: "Lab",
     ..BASE
 };
 pub const PHYSICAL_MODEL: Setting = Setting {
@@ -285,7 +285,7 @@ pub const PHYSICAL_MODEL: Setting = Setting {
     default: D::Bool(false),
     owner: Owner::Display,
     player: true,
-    menu: "View",
+    menu: "Lab",
     ..BASE
 };
 pub const GRAPHICS_QUALITY: Setting = Setting {
@@ -324,7 +324,7 @@ pub const TELEMETRY: Setting = Setting {
     default: D::Bool(false),
     owner: Owner::Display,
     player: true,
-    menu: "View",
+    menu: "Lab",
     ..BASE
 };
 pub const RUMBLE: Setting = Setting {

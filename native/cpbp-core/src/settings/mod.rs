@@ -109,7 +109,9 @@ pub struct Setting {
     pub owner: Owner,
     /// Whether players see it: kept in their settings file.
     pub player: bool,
-    /// The pause menu's group it is shown in ("": not shown there).
+    /// The menu group it is shown in: a player's ("Riding", "View", "Sound") in the pause
+    /// menu, "Lab" for the research tools (the Lab panel of the start and pause menus);
+    /// "": not shown.
     pub menu: &'static str,
 }
 
