@@ -89,7 +89,8 @@ step "test runner self-test" tools/test-runner-selftest.sh
 # and earns gold in every lesson of the School and every level's challenge through a
 # gamepad's events).
 step "GDScript suites"      godot_suites
-# Settings, records, medals and a ghost saved in a loop and killed with SIGKILL read back whole.
+# Settings, records, medals, controls and a ghost saved in a loop and killed with SIGKILL
+# read back whole.
 step "saves survive kill -9" tools/kill-test.sh 8
 # Quick mode with real workers: a run killed part-way resumes with nothing lost or doubled.
 step "experiment quick run" .venv/bin/python -m unittest -v cpbp_experiment.tests.check_quick_run
@@ -139,6 +140,9 @@ screenshots() {
          --set=level_path=$levels/track/track.tscn --tap=pause@40 \
     && tools/screenshot.sh $game build/screenshots/lab.png 70 \
          --set=level_path=$levels/track/track.tscn --tap=pause@40 --call=PauseMenu:open_lab@45 \
+    && tools/screenshot.sh $game build/screenshots/controls.png 70 \
+         --set=level_path=$levels/track/track.tscn --tap=pause@40 \
+         --call=PauseMenu:open_controls@45 \
     && tools/screenshot.sh $game build/screenshots/camera-low-side.png 200 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 --hold=steer_right:0.4 \
          --tap=cycle_camera@5 \
@@ -169,7 +173,7 @@ bike_gallery() {
 
 # Screenshots of the menus (the School on a first launch and with medals, a level's
 # challenges), a lesson's briefing, medal and failed try, the levels, the telemetry
-# overlay at 125 %, the Lab, cameras, a full
+# overlay at 125 %, the Lab, the Controls screen, cameras, a full
 # brake's tyre marks, a crash's sparks, dust on the track's gravel, replay, ghost race and
 # each bike under Xvfb, failing on a blank picture (the ghost race races the lap the bot
 # rode in the GDScript suites).

@@ -2,8 +2,9 @@ class_name PauseMenu
 extends CanvasLayer
 ## The pause menu (Back / Esc): stops the simulation, says which bike is ridden (the start
 ## menu chooses it) and offers resume, the replay of the last run, every player setting the
-## schema puts in a player's menu group (`SettingControls`), the Lab (the research tools,
-## `LabPanel`), restart and quit; lists the controls. Every change is saved in the
+## schema puts in a player's menu group (`SettingControls`), the controls (listed, and
+## rebound on the Controls screen, `ControlsMenu`), the Lab (the research tools,
+## `LabPanel`), restart and quit. Every change is saved in the
 ## settings at once.
 ## Works with a gamepad alone (d-pad/stick to move, A to choose, B or Back to resume).
 
@@ -16,25 +17,8 @@ signal quit_requested
 signal opened
 signal closed
 
-const CONTROLS := """Gamepad / keyboard
-RT / W, ↑        throttle
-LT / S, ↓        brake
-Left stick / A D, ← →   turn (sets the lean)
-Right stick / I J K L   rider's weight (fore, aft, sides)
-  back + throttle        wheelie
-  in the air             nose up (back) or down (forward)
-  forward + brake        stoppie
-D-pad / numpad 8 4 6 2, right mouse drag   camera
-Left stick click / Tab   camera: chase, low side, helmet
-Start / C        Lab: next controller
-Back / Esc, P    pause
-B / R            respawn
-A / T            lift the bike upright
-LB RB / Q E      previous / next spawn point
-X / F            auto-accelerate
-Y / V            Lab: the lines ahead"""
-
 var _lab: LabPanel
+var _controls_menu: ControlsMenu
 
 @onready var _resume: Button = %Resume
 @onready var _settings: SettingControls = %Settings
@@ -43,11 +27,17 @@ var _lab: LabPanel
 
 func _ready() -> void:
 	visible = false
-	_controls.text = CONTROLS
+	_list_controls()
+	Controls.changed.connect(_list_controls)
+	_controls_menu = ControlsMenu.new()
+	_controls_menu.name = "ControlsMenu"
+	add_child(_controls_menu)
+	_controls_menu.closed.connect(_on_sub_menu_closed.bind(%EditControls))
+	%EditControls.pressed.connect(open_controls)
 	_lab = LabPanel.new()
 	_lab.name = "Lab"
 	add_child(_lab)
-	_lab.closed.connect(_on_lab_closed)
+	_lab.closed.connect(_on_sub_menu_closed.bind(%OpenLab))
 	%OpenLab.pressed.connect(open_lab)
 	_resume.pressed.connect(close)
 	%Restart.pressed.connect(_on_restart)
@@ -65,6 +55,17 @@ func show_bike(text: String) -> void:
 func control_of(key: StringName) -> Control:
 	var control := _settings.control_of(key)
 	return control if control != null else _lab.control_of(key)
+
+
+## Lists the controls as they are bound now.
+func _list_controls() -> void:
+	_controls.text = Controls.summary()
+
+
+## Shows the Controls screen over the menu.
+func open_controls() -> void:
+	$Panel.visible = false
+	_controls_menu.open()
 
 
 ## Shows the Lab over the menu.
@@ -90,7 +91,7 @@ func close() -> void:
 
 
 func _unhandled_input(event: InputEvent) -> void:
-	if _lab.visible:
+	if _lab.visible or _controls_menu.visible:
 		return
 	if visible and (event.is_action_pressed(&"pause") or event.is_action_pressed(&"ui_cancel")):
 		get_viewport().set_input_as_handled()
@@ -101,9 +102,9 @@ func _sync() -> void:
 	_settings.sync()
 
 
-func _on_lab_closed() -> void:
+func _on_sub_menu_closed(opener: Button) -> void:
 	$Panel.visible = true
-	%OpenLab.grab_focus()
+	opener.grab_focus()
 
 
 func _on_restart() -> void:

@@ -23,6 +23,7 @@ const SCHOOL_ENTRY := "School"
 var _list_owner := ""
 var _quit_confirm: QuitConfirm
 var _lab: LabPanel
+var _controls_menu: ControlsMenu
 
 @onready var _version_label: Label = %VersionLabel
 @onready var _status_label: Label = %StatusLabel
@@ -58,10 +59,11 @@ func _ready() -> void:
 			button.disabled = true
 		return
 	_focus_where_the_player_left_off()
+	_show_file_problems()
 
 
 func _unhandled_input(event: InputEvent) -> void:
-	if not event.is_action_pressed(&"ui_cancel") or _lab.visible:
+	if not event.is_action_pressed(&"ui_cancel") or _lab.visible or _controls_menu.visible:
 		return
 	get_viewport().set_input_as_handled()
 	if _list.visible:
@@ -113,6 +115,19 @@ func _focus_entry(index: int) -> void:
 		button = _list.entry_button(-1) if _list.entry_button(-1) != null else _list.entry_button(0)
 	if button != null:
 		button.grab_focus()
+
+
+## Says what was wrong with the player's medals or controls files when they were read
+## (each kept aside as *.broken, the game going on without them).
+func _show_file_problems() -> void:
+	var problems := PackedStringArray()
+	for problem: String in [Progress.problem, Controls.problem]:
+		if not problem.is_empty():
+			problems.append(problem.left(1).to_upper() + problem.substr(1) + ".")
+	if problems.is_empty():
+		return
+	%FileProblems.text = " ".join(problems)
+	%FileProblems.visible = true
 
 
 ## Where the menu opens: on the first lesson until it has a medal, else on what was played
@@ -186,6 +201,11 @@ func _build_choices() -> void:
 	add_child(_lab)
 	_lab.closed.connect(func() -> void: %OpenLab.grab_focus())
 	%OpenLab.pressed.connect(_lab.open)
+	_controls_menu = ControlsMenu.new()
+	_controls_menu.name = "ControlsMenu"
+	add_child(_controls_menu)
+	_controls_menu.closed.connect(func() -> void: %EditControls.grab_focus())
+	%EditControls.pressed.connect(_controls_menu.open)
 	_show_best_lap()
 
 

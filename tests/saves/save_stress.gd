@@ -28,6 +28,8 @@ func _ready() -> void:
 	Settings.reload()
 	Progress.medals_path = FOLDER.path_join("medals.cfg")
 	Progress.reload()
+	Controls.controls_path = FOLDER.path_join("controls.cfg")
+	Controls.reload()
 	if "--check" in OS.get_cmdline_user_args():
 		get_tree().quit(_check())
 	else:
@@ -43,6 +45,7 @@ func _write_forever() -> void:
 		Settings.set_value(&"trajectories", Settings.offered(&"trajectories")[round % 6])
 		Settings.record_lap(LEVEL, _lap_time(round))
 		Progress.record(ChallengeCatalogue.load_challenge(LESSON), BIKE, _lap_time(round))
+		Controls.bind(&"throttle", _throttle_key(round))
 		GhostFile.save(_ghost(round), LEVEL, Settings.ghost_path(LEVEL))
 		print("saved round %d" % round)
 		await get_tree().process_frame
@@ -78,13 +81,29 @@ func _check() -> int:
 			)
 	if not Progress.problem.is_empty():
 		problems.append(Progress.problem)
+	if not Controls.problem.is_empty():
+		problems.append(Controls.problem)
+	var throttle := Controls.events_of(&"throttle", Controls.KEYBOARD)
+	if throttle.size() != 2:
+		problems.append("the throttle has %d keys, not two" % throttle.size())
 	for problem in problems:
 		printerr("kill test: ", problem)
 	if problems.is_empty():
 		print(
-			"kill test: settings, record, medal and the ghost of round %d read back whole" % round
+			(
+				"kill test: settings, record, medal, controls and ghost of round %d read back whole"
+				% round
+			)
 		)
 	return 0 if problems.is_empty() else 1
+
+
+## A letter key for the throttle each round (G to Z, round and round: never W's place
+## twice in a row).
+static func _throttle_key(round: int) -> InputEventKey:
+	var key := InputEventKey.new()
+	key.physical_keycode = (KEY_G + round % 20) as Key
+	return key
 
 
 ## Laps get faster every round, so every one is a new best.
