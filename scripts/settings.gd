@@ -158,6 +158,9 @@ func set_value(key: StringName, value: Variant) -> void:
 	elif key == &"ui_scale":
 		_apply_ui_scale()
 	changed.emit(key)
+	if key == &"assist":
+		# A level stands for a set of settings: choosing one sets them.
+		Assists.apply(fitted)
 
 
 ## What the menus' trajectory list shows: "auto", then each fixed count.

@@ -57,9 +57,9 @@ func control_of(key: StringName) -> Control:
 	return control if control != null else _lab.control_of(key)
 
 
-## Lists the controls as they are bound now.
+## Lists what each assist level does, then the controls as they are bound now.
 func _list_controls() -> void:
-	_controls.text = Controls.summary()
+	_controls.text = "Assist levels\n%s\n\n%s" % [Assists.summary(), Controls.summary()]
 
 
 ## Shows the Controls screen over the menu.

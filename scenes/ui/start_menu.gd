@@ -196,6 +196,7 @@ func _build_choices() -> void:
 		button.focus_entered.connect(func() -> void: _backdrop.show_level(key))
 		_levels.add_child(button)
 	_build_bike_choice()
+	_build_assist_choice()
 	_lab = LabPanel.new()
 	_lab.name = "Lab"
 	add_child(_lab)
@@ -227,6 +228,25 @@ func _build_bike_choice() -> void:
 			_show_best_lap()
 			_backdrop.show_bike(keys[i])
 	)
+
+
+## The assist levels, the chosen one selected, with what it does below.
+func _build_assist_choice() -> void:
+	var levels: Array = Assists.LEVELS.keys()
+	for level: String in levels:
+		%Assist.add_item("Assist: %s" % Assists.LEVELS[level].name)
+	%Assist.selected = maxi(levels.find(Settings.get_value(&"assist")), 0)
+	%Assist.item_selected.connect(
+		func(i: int) -> void:
+			Settings.set_value(&"assist", levels[i])
+			_show_assist()
+	)
+	_show_assist()
+
+
+func _show_assist() -> void:
+	var about: String = Assists.LEVELS[Settings.get_value(&"assist")].about
+	%AssistAbout.text = about.left(1).to_upper() + about.substr(1) + "."
 
 
 func _show_bike_figures() -> void:

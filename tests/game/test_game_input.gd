@@ -36,7 +36,7 @@ func test_every_game_and_display_setting_reaches_its_target_by_name() -> void:
 	# The level is chosen before the game is built (the start menu, then _ready).
 	var read_when_built: Array[StringName] = [&"level"]
 	# Followed for every scene, the menus' too, by an autoload (tested with it).
-	var followed_by_an_autoload: Array[StringName] = [&"graphics_quality", &"ui_scale"]
+	var followed_by_an_autoload: Array[StringName] = [&"graphics_quality", &"ui_scale", &"assist"]
 	for key: StringName in Settings.entries:
 		var owner: String = Settings.entries[key].owner
 		if owner not in ["game", "display"] or key in read_when_built + followed_by_an_autoload:

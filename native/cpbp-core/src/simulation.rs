@@ -27,6 +27,10 @@ pub struct SimulationConfig {
     /// Solver, wheel gyroscopics and the rollouts' stepping (`PhysicsModel`).
     pub physics: PhysicsModel,
     pub bike: BikeParams,
+    /// ABS as the bike's brakes have it, or off (false): then a braked wheel is let lock
+    /// at any speed (the players' Pro assist). Every world of the ride, the planners'
+    /// rollouts too, is built with the same.
+    pub abs: bool,
 }
 
 impl Default for SimulationConfig {
@@ -37,6 +41,7 @@ impl Default for SimulationConfig {
             substeps: crate::settings::SUBSTEPS.default_number() as usize,
             physics: PhysicsModel::default(),
             bike: BikeParams::default(),
+            abs: true,
         }
     }
 }
@@ -271,6 +276,23 @@ impl Simulation {
             .fold(f64::INFINITY, f64::min)
     }
 
+    /// Turns ABS on or off (`SimulationConfig::abs`), keeping the ride's state: the bike is
+    /// built again with its brakes so and the world restored into it. A replica or a
+    /// rollout world made after this brakes the same way.
+    pub fn set_abs(&mut self, abs: bool) {
+        if self.config.abs == abs {
+            return;
+        }
+        self.config.abs = abs;
+        let state = self.world.snapshot();
+        let (world, bike) = build_world(&self.config, &self.terrain, &self.spawn);
+        self.world = world;
+        self.bike = bike;
+        self.world
+            .restore(&state)
+            .expect("the same bike is built in every world");
+    }
+
     /// Swaps the terrain (a level changed or was regenerated), keeping the ride's state.
     pub fn set_terrain(&mut self, terrain: Arc<Terrain>) {
         let state = self.world.snapshot();
@@ -335,11 +357,14 @@ fn build_world(config: &SimulationConfig, terrain: &Terrain, spawn: &Placement) 
     world.set_solver(config.physics.solver());
     // The bike first: its bodies and joints then have the same indices in every world,
     // whatever the terrain, so snapshots move between worlds and levels.
-    let params = if config.physics.suspended() {
+    let mut params = if config.physics.suspended() {
         config.bike.clone()
     } else {
         config.bike.rigid()
     };
+    if !config.abs {
+        params.without_abs();
+    }
     let bike =
         Bike::build(&mut world, &params, spawn).with_arm_strength(config.physics.arm_strength());
     for wheel in [Part::RearWheel, Part::FrontWheel] {

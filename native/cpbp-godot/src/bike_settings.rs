@@ -6,7 +6,7 @@
 use cpbp_core::control::learned::{LoadedPolicy, LoadedValue};
 use cpbp_core::physics::PhysicsModel;
 use cpbp_core::ride::PlannerSettings;
-use cpbp_core::settings::{TERMINAL_VALUE, WAIT_FOR_THROTTLE};
+use cpbp_core::settings::{ABS, LEAN_SHARE, TERMINAL_VALUE, WAIT_FOR_THROTTLE};
 
 use godot::global::godot_warn;
 
@@ -38,6 +38,7 @@ impl BikeSimulation {
                 ride.planner = planner;
             }
             ride.wait_for_throttle = self.settings.flag(&WAIT_FOR_THROTTLE);
+            ride.set_aids(self.settings.flag(&ABS), self.settings.number(&LEAN_SHARE));
         }
     }
 

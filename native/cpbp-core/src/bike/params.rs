@@ -218,6 +218,18 @@ impl BikeParams {
         self.planners_rider_hold * (forward_speed / full_from).clamp(0.0, 1.0)
     }
 
+    /// Takes ABS away, as a bike without it brakes (the players' Pro assist): no wheel
+    /// kept turning (`FrontBrake::abs_above` beyond any speed), so a braked wheel may lock,
+    /// the front's as the rear's; no rear-lift mitigation (`tipping_share`), so the full
+    /// brake may tip the bike over its front tyre; no cornering ABS (`cornering_lean`).
+    pub fn without_abs(&mut self) {
+        if let Some(brake) = self.front_brake.as_mut() {
+            brake.abs_above = f64::INFINITY;
+            brake.tipping_share = 0.0;
+            brake.cornering_lean = 0.0;
+        }
+    }
+
     /// The same bike without suspension: lower legs fixed to the fork, swingarm to the
     /// frame (and no anti-wheelie, which reads the fork, and no feet: the thesis's bike).
     pub fn rigid(&self) -> Self {

@@ -23,6 +23,7 @@ use glam::DVec3;
 
 use crate::bike::{Controls, Placement};
 use crate::control::{Goal, HandoverStats, Plan, TurnIntent};
+use crate::settings::LEAN_SHARE;
 use crate::simulation::{Simulation, StepEvents};
 use crate::terrain::Terrain;
 
@@ -237,6 +238,21 @@ impl Ride {
     pub fn lift_upright(&mut self) {
         self.sim.lift_upright();
         self.forget_plans();
+    }
+
+    /// The player's aids: ABS (`SimulationConfig::abs`) and the share of the bike's lean the
+    /// turn may ask for (0.5–1). A change of ABS keeps the ride's state; the planners'
+    /// worlds brake the old way, so they are built anew when next they drive.
+    pub fn set_aids(&mut self, abs: bool, lean_share: f64) {
+        if self.sim.config().abs != abs {
+            self.sim.set_abs(abs);
+            self.built.retain(|(kind, _)| !kind.plans());
+        }
+        let share = LEAN_SHARE
+            .range
+            .map_or(1.0, |range| range.clamp(lean_share, 1.0));
+        self.turn = TurnIntent::for_bike(&self.sim.config().bike);
+        self.turn.max_lean *= share;
     }
 
     /// Swaps the terrain (a level changed), keeping the ride's state. The planners' worlds

@@ -202,6 +202,42 @@ pub const PLANNER_SEED: Setting = Setting {
 
 // The game's own.
 
+pub const ABS: Setting = Setting {
+    name: "abs",
+    label: "ABS",
+    description: "The brakes keep the wheels turning under a hard brake; off, a wheel braked \
+                  too hard locks and slides, the front's as the rear's.",
+    default: D::Bool(true),
+    owner: Owner::Ride,
+    player: true,
+    menu: "Lab",
+    ..BASE
+};
+pub const LEAN_SHARE: Setting = Setting {
+    name: "lean_share",
+    label: "Lean the stick may ask",
+    description: "The share of the bike's lean a full turn of the stick asks for.",
+    unit: "share",
+    default: D::Float(1.0),
+    range: Some(Range::new(0.5, 1.0, 0.05)),
+    owner: Owner::Ride,
+    player: true,
+    menu: "Lab",
+    ..BASE
+};
+pub const ASSIST: Setting = Setting {
+    name: "assist",
+    label: "Assist",
+    description: "How much the game helps you ride: who balances the bike, ABS, how far \
+                  the stick leans it (the table in the README says what each level does).",
+    default: D::Text("full"),
+    // From the most help to the least; the game's Assists table says what each sets.
+    choices: &["learner", "full", "standard", "pro"],
+    owner: Owner::Game,
+    player: true,
+    menu: "Riding",
+    ..BASE
+};
 pub const CONTROLLER: Setting = Setting {
     name: "controller",
     label: "Controller",
@@ -369,7 +405,10 @@ pub const ENTRIES: &[Setting] = &[
     GRAPHICS_QUALITY,
     UI_SCALE,
     TELEMETRY,
+    ASSIST,
     CONTROLLER,
+    ABS,
+    LEAN_SHARE,
     MAX_SPEED_KMH,
     MOTOR_FORCE,
     AUTO_SPEED_KMH,

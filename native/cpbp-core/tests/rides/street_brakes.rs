@@ -1,11 +1,14 @@
 //! The game's street bike (scenes/bike/bikes/street_390.tres) brakes as a road bike with
 //! ABS does: a full brake from 60 km/h averages 0.9 g or more from the moment the trigger
 //! is pulled, the rear tyre stays on the road, no step of it speeds the bike up, and it
-//! ends standing; with the weight forward the same trigger still lifts a stoppie.
+//! ends standing; with the weight forward the same trigger still lifts a stoppie. Without
+//! ABS (the players' Pro assist) the same full brake throws the rider over the bar.
 
 use crate::common;
 
-use cpbp_core::bike::{index, Controls, DriveInput, RiderPosition, UPPER};
+use cpbp_core::bike::{
+    index, Controls, CrashCause::Touched, DriveInput, Part, RiderPosition, UPPER,
+};
 use cpbp_core::control::PlanWait;
 use cpbp_core::ride::{ControllerKind, Intent, Ride};
 use cpbp_core::simulation::SimulationConfig;
@@ -159,4 +162,52 @@ fn braking_the_rider_holds_the_arms_sideways_whatever_a_planner_asks() {
     let free = wrists_driven_sideways(false).to_degrees();
     assert!(held < 3.0, "braking, the wrists turned {held:.1}°");
     assert!(free > 15.0, "off the brake they follow: only {free:.1}°");
+}
+
+#[test]
+fn without_abs_a_full_brake_from_60_throws_the_rider_over_the_bar_where_abs_stops_standing() {
+    // Arcade balances both (the players' Standard and Pro assists); the same full brake.
+    for abs in [true, false] {
+        let mut ride = street_ride(ControllerKind::ARCADE, 60.0);
+        ride.set_aids(abs, 1.0);
+        assert_eq!(ride.sim().config().abs, abs);
+        common::full_brake(&mut ride);
+        let mut crash = None;
+        for _ in 0..90 {
+            ride.step();
+            crash = crash.or(ride.sim().crashed());
+        }
+        if abs {
+            assert_eq!(crash, None, "with ABS it stops standing");
+            assert!(speed(&ride).abs() < 0.1, "and stopped");
+        } else {
+            // No rear-lift mitigation: the rear rises and the bike goes over its front tyre.
+            let crash = crash.expect("without ABS the bike goes over");
+            assert_eq!(crash.cause, Touched(Part::Torso), "{crash:?}");
+        }
+    }
+}
+
+#[test]
+fn abs_comes_back_on_and_a_lean_share_limits_the_turn() {
+    let mut ride = street_ride(ControllerKind::ARCADE, 20.0);
+    let full = ride.sim().config().bike.max_lean;
+    ride.set_aids(false, 0.75);
+    assert!(!ride.sim().config().abs);
+    let mut intent = Intent::cruise(20.0);
+    intent.lean = Some(2.0);
+    ride.set_intent(intent);
+    assert!(
+        (ride.desired_lean() - 0.75 * full).abs() < 1e-12,
+        "held to 3/4 of the lean"
+    );
+    ride.set_aids(true, 1.0);
+    assert!(ride.sim().config().abs, "on again");
+    assert_eq!(ride.desired_lean(), full, "the whole lean again, exactly");
+    ride.set_aids(true, f64::NAN);
+    assert_eq!(
+        ride.desired_lean(),
+        full,
+        "a share that is not a number is the whole"
+    );
 }
