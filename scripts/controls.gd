@@ -33,6 +33,7 @@ const ACTIONS := {
 	&"cycle_camera": "camera: chase, low side, helmet",
 	&"pause": "pause menu",
 	&"reset_bike": "respawn at the spawn point (in a lesson: try again)",
+	&"rewind": "rewind the ride a few seconds (again: further; not in a lesson)",
 	&"lift_bike": "stand the bike up where it lies",
 	&"previous_spawn": "previous spawn point",
 	&"next_spawn": "next spawn point",
@@ -161,6 +162,17 @@ static func binding_text(action: StringName, kind: String) -> String:
 	for event in events_of(action, kind):
 		names.append(event_text(event))
 	return ", ".join(names) if not names.is_empty() else "–"
+
+
+## How a prompt names `action` as it is bound now, the pad's first binding then the
+## keyboard's: "B / R" (one of them alone when the other has none).
+static func prompt(action: StringName) -> String:
+	var names := PackedStringArray()
+	for kind: String in [PAD, KEYBOARD]:
+		var events := events_of(action, kind)
+		if not events.is_empty():
+			names.append(event_text(events[0]))
+	return " / ".join(names) if not names.is_empty() else "(unbound)"
 
 
 ## The controls as the pause menu lists them, a line each: "RT / W, ↑   throttle

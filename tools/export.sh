@@ -26,6 +26,9 @@ if [ -z "${GODOT:-}" ]; then
 fi
 
 rm -rf "${out_dir:?}"/*
+# Convert every resource afresh, as a clean clone does: a script that stays loaded past the
+# exit shows only when its resources are converted, not from the cache of an export before.
+rm -rf .godot/exported
 tools/godot --headless --path . --export-release "Linux" "$PROJECT_ROOT/$binary" >build/logs/export.log 2>&1 \
   || { cat build/logs/export.log >&2; die "export failed"; }
 tools/check-godot-log build/logs/export.log

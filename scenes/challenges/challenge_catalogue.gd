@@ -30,6 +30,18 @@ static func load_challenge(path: String) -> Challenge:
 	return challenge
 
 
+## The challenge at `path` if it can be ridden; null for an empty path, or (with an error
+## saying why) for one that cannot: then the ride is free.
+static func load_rideable(path: String) -> Challenge:
+	if path.is_empty():
+		return null
+	var challenge := load_challenge(path)
+	if challenge != null and not challenge.problem().is_empty():
+		push_error("ChallengeCatalogue: %s cannot be ridden: %s" % [path, challenge.problem()])
+		return null
+	return challenge
+
+
 ## The challenges ridden on the level scene at `level_path`, in the catalogue's order.
 func challenges_on(level_path: String) -> Array[String]:
 	var found: Array[String] = []

@@ -3,6 +3,9 @@ extends RefCounted
 ## How an attempt at a lesson or challenge ended, as its judge saw it from the simulation:
 ## passed with a score, or failed with what went wrong in words a player understands; and
 ## what the ride measured that is worth telling ("braked from 61 km/h in 16.0 m: 0.91 g").
+## Judges make them (`ChallengeJudge.passed_with`, `ChallengeJudge.failed`): a script
+## that names its own class stays loaded past an export's exit in Godot 4.6, so this one
+## does not.
 
 var passed := false
 ## The measure the medals are given by (NAN when failed).
@@ -11,20 +14,3 @@ var score := NAN
 var why := ""
 ## What the ride measured, a line each.
 var facts := PackedStringArray()
-
-
-## An attempt that reached its goal with `score`.
-static func passed_with(score_value: float, measured := PackedStringArray()) -> ChallengeResult:
-	var result := ChallengeResult.new()
-	result.passed = true
-	result.score = score_value
-	result.facts = measured
-	return result
-
-
-## An attempt that missed its goal, and why.
-static func failed(reason: String, measured := PackedStringArray()) -> ChallengeResult:
-	var result := ChallengeResult.new()
-	result.why = reason
-	result.facts = measured
-	return result

@@ -79,6 +79,18 @@ static func record_key(level_key: String, key: String) -> String:
 	return level_key if key == FIRST_BIKE else "%s@%s" % [level_key, key]
 
 
+## `bike`'s name for people (null: the reference bike the scene carries).
+static func name_of(bike: BikeDescription) -> String:
+	return bike.name if bike != null else "Street 350"
+
+
+## `bike`'s name and its main figures, as the pause menu shows them.
+static func summary_text(bike: BikeDescription) -> String:
+	if bike == null:
+		return name_of(bike)
+	return "%s   ·   %s" % [name_of(bike), figures_text(bike)]
+
+
 ## A line of `bike`'s main figures for a menu: "94 kg · 26.7 kW · 38.5° lean · 315 mm
 ## travel" (the power where the bike has a limit).
 static func figures_text(bike: BikeDescription) -> String:

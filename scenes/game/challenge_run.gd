@@ -41,7 +41,7 @@ func setup(path: String, ridden: Challenge, game: Game, driver: BikeDriver) -> v
 	area = game.level.get_node_or_null(challenge.area) as ChallengeArea
 	if area == null:
 		push_error("ChallengeRun: %s has no ChallengeArea %s" % [game.level.name, challenge.area])
-	for other in ChallengeArea.all_in(game.level):
+	for other in game.level.challenge_areas():
 		other.visible = other == area
 	_bike.crashed.connect(func(cause: String) -> void: _crash_cause = cause)
 	Progress.set_last_played(challenge.key())
@@ -101,13 +101,13 @@ func judge_attempt(outcome: String, delta: float) -> String:
 		return Level.RIDING
 	if outcome == Level.FELL:
 		var cause := _crash_cause if not _crash_cause.is_empty() else "the bike went down"
-		result = ChallengeResult.failed("you fell: %s" % cause)
+		result = ChallengeJudge.failed("you fell: %s" % cause)
 		return Level.FELL
 	if judge == null or area == null:
 		return Level.RIDING
 	var verdict := judge.judge(delta)
 	if verdict == null and judge.elapsed > challenge.time_limit:
-		verdict = ChallengeResult.failed(
+		verdict = ChallengeJudge.failed(
 			"out of time: this one takes at most %s" % Level.format_time(challenge.time_limit)
 		)
 	if verdict == null:

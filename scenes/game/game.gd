@@ -12,6 +12,9 @@ const REPLAY := preload("res://scenes/replay/replay.tscn")
 const START_MENU := "res://scenes/ui/start_menu.tscn"
 ## Seconds a result stays on screen before an automatic level starts the next attempt.
 const RESULT_PAUSE := 2.5
+## Seconds of the ride kept to rewind into, and how far a press of rewind goes back.
+const REWIND_KEPT := 10.0
+const REWIND_STEP := 3.0
 
 ## Level scene to ride; empty: the one chosen in the settings.
 @export_file("*.tscn") var level_path := ""
@@ -54,7 +57,7 @@ var _crash_cause := ""
 
 
 func _ready() -> void:
-	var challenge := _chosen_challenge()
+	var challenge := ChallengeCatalogue.load_rideable(challenge_path)
 	if challenge != null:
 		level_path = challenge.level
 	var path := (
@@ -74,6 +77,7 @@ func _ready() -> void:
 	bike = BIKE.instantiate() as BikeSimulation
 	bike.terrain_root = ^"../Level"
 	bike.wait_for_throttle = true
+	bike.rewind_seconds = REWIND_KEPT
 	var bike_file := bike_path if not bike_path.is_empty() else Bikes.chosen_path()
 	if not bike_file.is_empty():
 		bike.bike = Bikes.load_description(bike_file)
@@ -91,6 +95,10 @@ func _ready() -> void:
 	_hud.bind(self)
 	_pause_menu.restart_requested.connect(restart)
 	_pause_menu.replay_requested.connect(watch_replay)
+	_pause_menu.rewind_requested.connect(rewind)
+	_pause_menu.opened.connect(
+		func() -> void: _pause_menu.offer_rewind(REWIND_STEP, rewind_refusal())
+	)
 	# The pause menu stands over the ride with nothing of the HUD showing through.
 	_pause_menu.opened.connect(_show_overlays.bind(false))
 	_pause_menu.closed.connect(_show_overlays.bind(true))
@@ -112,7 +120,7 @@ func _ready() -> void:
 	replay.setup(bike)
 	replay.closed.connect(_on_replay_closed)
 	_pause_menu.quit_requested.connect(quit_to_menu)
-	_pause_menu.show_bike(bike_summary())
+	_pause_menu.show_bike(Bikes.summary_text(bike.bike))
 	level.attach(bike)
 	level.announced.connect(_hud.announce)
 	if level is Track:
@@ -153,6 +161,8 @@ func _unhandled_input(event: InputEvent) -> void:
 		_pause_menu.open()
 	elif event.is_action_pressed(&"reset_bike"):
 		restart()
+	elif event.is_action_pressed(&"rewind"):
+		rewind()
 	elif event.is_action_pressed(&"lift_bike") and challenge_run != null:
 		# A challenge's attempt is judged whole: lifting the bike starts it again. Over a
 		# result, A is the card's (its buttons), not the bike's.
@@ -201,6 +211,37 @@ func restart() -> void:
 	_driver.stopping = false
 
 
+## Puts the ride back REWIND_STEP seconds (as far as it was kept), the level's clock and the
+## replay with it, and rides on from there: a fall undone is no longer a fall.
+func rewind() -> void:
+	var refusal := rewind_refusal()
+	var seconds := 0.0
+	if refusal.is_empty():
+		var result := bike.rewind(REWIND_STEP)
+		seconds = result.rewound
+		refusal = result.why
+	if seconds <= 0.0:
+		_hud.announce("No rewind: %s" % refusal)
+		return
+	# After a finish the level's clock stood still while the bike rode on.
+	level.rewound(bike, maxf(seconds - maxf(_finished_for, 0.0), 0.0))
+	recorder.rewind(seconds)
+	_finished_for = -1.0
+	_hud.announce("Rewound %.1f s" % seconds)
+
+
+## Why this ride cannot be rewound ("": it can, as far as the bike kept it): a lesson's or
+## a challenge's attempt is judged whole, and the automatic test rides itself.
+func rewind_refusal() -> String:
+	if challenge_run != null:
+		return "a lesson is judged whole (%s to try again)" % Controls.prompt(&"reset_bike")
+	if is_automatic():
+		return "the automatic test rides itself"
+	if bike.get_rewindable() <= 0.0:
+		return "nothing to rewind yet: ride first"
+	return ""
+
+
 ## Shows the replay of the last run (the game stays paused); back to the pause menu after.
 func watch_replay() -> void:
 	get_tree().paused = true
@@ -219,7 +260,9 @@ func cycle_spawn(step: int) -> void:
 	if spawns.size() == 0:
 		return
 	if challenge_run != null:
-		_hud.announce("A lesson starts where it starts: R / B to try again")
+		_hud.announce(
+			"A lesson starts where it starts: %s to try again" % Controls.prompt(&"reset_bike")
+		)
 		return
 	_spawn_index = posmod(_spawn_index + step, spawns.size())
 	restart()
@@ -247,14 +290,7 @@ func driver() -> BikeDriver:
 
 ## Name of the bike ridden, for people.
 func bike_name() -> String:
-	return bike.bike.name if bike.bike != null else "Street 350"
-
-
-## The bike ridden and its main figures, as the pause menu shows them.
-func bike_summary() -> String:
-	if bike.bike == null:
-		return bike_name()
-	return "%s   ·   %s" % [bike_name(), Bikes.figures_text(bike.bike)]
+	return Bikes.name_of(bike.bike)
 
 
 ## Name of the controller in use.
@@ -285,25 +321,13 @@ func _finish(outcome: String) -> void:
 			_hud.announce("Out of time")
 		Level.FELL:
 			var fell := "Fell: %s" % _crash_cause if not _crash_cause.is_empty() else "Fell"
-			_hud.announce(fell if is_automatic() else fell + "\nB / R to respawn, A / T to lift")
-
-
-## The lesson or challenge `challenge_path` names (null: none, or one that cannot be
-## ridden, with an error saying why; then the ride is free).
-func _chosen_challenge() -> Challenge:
-	if challenge_path.is_empty():
-		return null
-	var challenge := ChallengeCatalogue.load_challenge(challenge_path)
-	if challenge != null and not challenge.problem().is_empty():
-		push_error("Game: %s cannot be ridden: %s" % [challenge_path, challenge.problem()])
-		return null
-	return challenge
+			_hud.announce(fell if is_automatic() else fell + "\n" + Hud.fallen_hint())
 
 
 ## Rides `challenge` (null: a free ride, where no challenge's markers show).
 func _start_challenge(challenge: Challenge) -> void:
 	if challenge == null:
-		for area in ChallengeArea.all_in(level):
+		for area in level.challenge_areas():
 			area.visible = false
 		return
 	challenge_run = ChallengeRun.new()

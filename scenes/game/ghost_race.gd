@@ -48,6 +48,11 @@ func ghost() -> RideRecording:
 	return _ghost
 
 
+## Whether the lap under way is being recorded (a ghost can be made of it).
+func is_recording() -> bool:
+	return _recording != null
+
+
 ## Whether the ghost is drawn now, and its drawing.
 func is_ghost_shown() -> bool:
 	return _view.visible

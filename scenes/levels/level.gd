@@ -43,6 +43,15 @@ func spawn_points() -> Array[SpawnPoint]:
 	return found
 
 
+## The level's ChallengeAreas, in tree order.
+func challenge_areas() -> Array[ChallengeArea]:
+	var areas: Array[ChallengeArea] = []
+	for found in find_children("*", "Node3D", true, false):
+		if found is ChallengeArea:
+			areas.append(found as ChallengeArea)
+	return areas
+
+
 ## Starts an attempt (the bike was just placed at a spawn point). `seed_value` varies what
 ## a level randomises; a level whose shapes change emits `terrain_changed`.
 func begin_attempt(_bike: BikeSimulation, _seed_value: int) -> void:
@@ -64,6 +73,13 @@ func judge(bike: BikeSimulation, delta: float) -> String:
 ## exactly as it judges them.
 func finish_attempt(_outcome: String) -> void:
 	pass
+
+
+## The ride was put back `seconds` (a rewind, in a free ride): the level's clock goes back
+## with it. A level whose records a rewind would falsify (a lap) says so and sets them
+## aside.
+func rewound(_bike: BikeSimulation, seconds: float) -> void:
+	elapsed = maxf(elapsed - seconds, 0.0)
 
 
 ## One line for the HUD about the attempt (timer, lap, best).

@@ -45,6 +45,16 @@ func start_run() -> void:
 	_last_step = -1
 
 
+## The ride was put back `seconds` (a rewind): the frames of the time undone are dropped,
+## and the run goes on from the moment it went back to, as it will be watched.
+func rewind(seconds: float) -> void:
+	var kept := _in_order()
+	kept.resize(maxi(kept.size() - roundi(seconds * _rate), 0))
+	_frames = kept
+	_oldest = 0
+	_last_step = -1
+
+
 ## The run to replay, oldest frame first: the current one, or the one before when the
 ## current has barely begun.
 func run() -> Array[Dictionary]:

@@ -142,6 +142,7 @@ func _show_result(result: ChallengeResult, medal: Challenge.Medal, new_best: boo
 	lines.append_array(result.facts)
 	_result_lines.text = "\n".join(lines)
 	_next_button.visible = _has_next and _run.medal_so_far() > Challenge.Medal.NONE
+	_retry_button.text = "Retry  (%s)" % Controls.prompt(&"reset_bike")
 	(_next_button if _next_button.visible else _retry_button).grab_focus()
 
 
@@ -174,7 +175,7 @@ func _build() -> void:
 	var buttons := HBoxContainer.new()
 	buttons.alignment = BoxContainer.ALIGNMENT_CENTER
 	buttons.add_theme_constant_override(&"separation", 16)
-	_retry_button = _button("Retry  (B / R)", retry_requested)
+	_retry_button = _button("Retry", retry_requested)
 	_next_button = _button("Next lesson", next_requested)
 	buttons.add_child(_retry_button)
 	buttons.add_child(_next_button)

@@ -203,9 +203,21 @@ func _late_per_second(bike: BikeSimulation, delta: float) -> int:
 	return _late_last_second
 
 
+## What a fallen rider's player can do, as the buttons are bound now.
+static func fallen_hint() -> String:
+	return (
+		"%s respawn   ·   %s lift the bike   ·   %s rewind"
+		% [
+			Controls.prompt(&"reset_bike"),
+			Controls.prompt(&"lift_bike"),
+			Controls.prompt(&"rewind")
+		]
+	)
+
+
 func _hint_text(bike: BikeSimulation) -> String:
 	if bike.is_waiting_for_throttle():
-		return "RT / W to ride"
+		return "%s to ride" % Controls.prompt(&"throttle")
 	if bike.is_crashed():
-		return "B / R respawn   ·   A / T lift the bike"
-	return "Back / Esc: pause and controls"
+		return fallen_hint()
+	return "%s: pause and controls" % Controls.prompt(&"pause")

@@ -75,7 +75,7 @@ func show_scene(path: String, area := NodePath()) -> void:
 	_level = level
 	_viewport.add_child(level)
 	var shown := level.get_node_or_null(area) as ChallengeArea if not area.is_empty() else null
-	for other in ChallengeArea.all_in(level):
+	for other in level.challenge_areas():
 		other.visible = other == shown
 	var spawns := level.spawn_points()
 	if shown != null and shown.spawn_point() != null:

@@ -1,16 +1,16 @@
 class_name PauseMenu
 extends CanvasLayer
 ## The pause menu (Back / Esc): stops the simulation, says which bike is ridden (the start
-## menu chooses it) and offers resume, the replay of the last run, every player setting the
-## schema puts in a player's menu group (`SettingControls`), the controls (listed, and
-## rebound on the Controls screen, `ControlsMenu`), the Lab (the research tools,
-## `LabPanel`), restart and quit. Every change is saved in the
-## settings at once.
+## menu chooses it) and offers resume, a rewind, the replay of the last run, every player
+## setting the schema puts in a player's menu group (`SettingControls`), the controls
+## (listed, and rebound on the Controls screen, `ControlsMenu`), the Lab (the research
+## tools, `LabPanel`), restart and quit. Every change is saved in the settings at once.
 ## Works with a gamepad alone (d-pad/stick to move, A to choose, B or Back to resume).
 
 ## The player asked to start the attempt again, to watch the last run, or to leave for
 ## the start menu.
 signal restart_requested
+signal rewind_requested
 signal replay_requested
 signal quit_requested
 ## The menu opened over the game, or closed (the game hides its HUD behind it meanwhile).
@@ -41,6 +41,7 @@ func _ready() -> void:
 	%OpenLab.pressed.connect(open_lab)
 	_resume.pressed.connect(close)
 	%Restart.pressed.connect(_on_restart)
+	%Rewind.pressed.connect(_on_rewind)
 	%WatchReplay.pressed.connect(_on_replay)
 	%Quit.pressed.connect(_on_quit)
 
@@ -48,6 +49,14 @@ func _ready() -> void:
 ## Shows which bike is ridden: `text` names it and its main figures.
 func show_bike(text: String) -> void:
 	%BikeSummary.text = text
+
+
+## Offers a rewind of `seconds`, or says why there is none (`refusal` not empty).
+func offer_rewind(seconds: float, refusal: String) -> void:
+	var rewind: Button = %Rewind
+	rewind.disabled = not refusal.is_empty()
+	rewind.text = "Rewind %d s" % roundi(seconds) if refusal.is_empty() else "No rewind: " + refusal
+	rewind.focus_mode = Control.FOCUS_NONE if rewind.disabled else Control.FOCUS_ALL
 
 
 ## The menu's control of setting `key`, the Lab's for a research tool (null if neither
@@ -110,6 +119,11 @@ func _on_sub_menu_closed(opener: Button) -> void:
 func _on_restart() -> void:
 	close()
 	restart_requested.emit()
+
+
+func _on_rewind() -> void:
+	close()
+	rewind_requested.emit()
 
 
 func _on_replay() -> void:

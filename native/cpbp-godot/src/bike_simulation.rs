@@ -52,6 +52,10 @@ pub struct BikeSimulation {
     #[export]
     #[init(val = ControllerChoice(ControllerKind::ARCADE))]
     pub(crate) controller: ControllerChoice,
+    /// How much of the ride (s) is kept to rewind into (`rewind`); 0, the default, keeps
+    /// nothing (the experiment's worker pays nothing for it). Read when the ride is built.
+    #[export]
+    pub(crate) rewind_seconds: f64,
     /// The learned network's model file (the `learned` and `guided` controllers); empty:
     /// the bike's own (`res://models/policy-<bike file's name>.safetensors`, which
     /// `make train BIKE=` writes). A bike without one of its own does not offer `learned`
@@ -104,6 +108,7 @@ impl INode3D for BikeSimulation {
             self.controller_kind(),
         );
         ride.set_intent(self.intent);
+        ride.keep_history(self.rewind_seconds);
         self.ride = Some(ride);
         self.sync_settings();
         self.remember_poses();

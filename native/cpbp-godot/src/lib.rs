@@ -6,6 +6,7 @@ mod bike_foot;
 mod bike_ground;
 mod bike_horizon;
 mod bike_queries;
+mod bike_rewind;
 mod bike_rider;
 mod bike_settings;
 mod bike_shape;

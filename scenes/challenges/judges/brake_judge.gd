@@ -37,14 +37,14 @@ func progress_text() -> String:
 
 func _judge(_delta: float) -> ChallengeResult:
 	if _marker == null or _line == null:
-		return ChallengeResult.failed("this lesson is broken: " + problem)
+		return failed("this lesson is broken: " + problem)
 	var centre := bike.get_center_of_mass()
 	if is_nan(_at_marker):
 		if _marker.distance_past(front_tyre()) < 0.0:
 			return null
 		_at_marker = speed_kmh()
 		if _at_marker < min_kmh:
-			return ChallengeResult.failed(
+			return failed(
 				(
 					"you reached the cones at %d km/h: be at %d km/h or more there"
 					% [floori(_at_marker), min_kmh]
@@ -65,7 +65,5 @@ func _judge(_delta: float) -> ChallengeResult:
 		)
 	var short := -_line.distance_past(front_tyre())
 	if short < 0.0:
-		return ChallengeResult.failed(
-			"you braked too late: stopped %.1f m past the line" % -short, facts
-		)
-	return ChallengeResult.passed_with(short, facts)
+		return failed("you braked too late: stopped %.1f m past the line" % -short, facts)
+	return passed_with(short, facts)

@@ -26,6 +26,23 @@ var still_for := 0.0
 var problem := ""
 
 
+## An attempt that reached its goal with `score`.
+static func passed_with(score: float, measured := PackedStringArray()) -> ChallengeResult:
+	var result := ChallengeResult.new()
+	result.passed = true
+	result.score = score
+	result.facts = measured
+	return result
+
+
+## An attempt that missed its goal, and why.
+static func failed(reason: String, measured := PackedStringArray()) -> ChallengeResult:
+	var result := ChallengeResult.new()
+	result.why = reason
+	result.facts = measured
+	return result
+
+
 ## Starts judging an attempt on `bike` in `challenge_area`.
 func begin(challenge_area: ChallengeArea, ridden: BikeSimulation) -> void:
 	area = challenge_area

@@ -45,17 +45,17 @@ func progress_text() -> String:
 
 func _judge(delta: float) -> ChallengeResult:
 	if not problem.is_empty() or _gates.is_empty():
-		return ChallengeResult.failed("this course is broken: " + problem)
+		return failed("this course is broken: " + problem)
 	if _watch != null:
 		_watch.watch(bike, delta)
 	var centre := bike.get_center_of_mass()
 	var verdict := _crossings(_previous, centre)
 	_previous = centre
 	if verdict == null and _strayed(centre):
-		verdict = ChallengeResult.failed("you missed gate %d" % (_next + 1), _facts())
+		verdict = failed("you missed gate %d" % (_next + 1), _facts())
 	if verdict != null or _next < _gates.size():
 		return verdict
-	return ChallengeResult.passed_with(_score(), _facts())
+	return passed_with(_score(), _facts())
 
 
 ## The verdict of the ride from `from` to `to`: a gate passed moves `_next` on; riding
@@ -73,9 +73,9 @@ func _crossings(from: Vector3, to: Vector3) -> ChallengeResult:
 		if i > _next and not inside:
 			continue
 		if i > _next or not inside:
-			return ChallengeResult.failed("you missed gate %d" % (_next + 1), _facts())
+			return failed("you missed gate %d" % (_next + 1), _facts())
 		if i < gate_min_kmh.size() and speed_kmh() < gate_min_kmh[i]:
-			return ChallengeResult.failed(
+			return failed(
 				(
 					"you rode through gate %d at %d km/h: it needs %d km/h"
 					% [i + 1, floori(speed_kmh()), gate_min_kmh[i]]

@@ -38,7 +38,7 @@ func progress_text() -> String:
 
 func _judge(delta: float) -> ChallengeResult:
 	if _box == null or _finish == null:
-		return ChallengeResult.failed("this lesson is broken: " + problem)
+		return failed("this lesson is broken: " + problem)
 	var centre := bike.get_center_of_mass()
 	var standing := _stood_for >= stand_seconds
 	if not standing:
@@ -46,14 +46,14 @@ func _judge(delta: float) -> ChallengeResult:
 			_stood_at = centre if _stood_for <= 0.0 else _stood_at
 			_stood_for += delta
 		elif _stood_for > 0.0:
-			return ChallengeResult.failed(
+			return failed(
 				(
 					"you stood %.1f s: stand still %.0f s before pulling away"
 					% [_stood_for, stand_seconds]
 				)
 			)
 		elif _finish.distance_past(centre) >= 0.0:
-			return ChallengeResult.failed("you rode up without stopping in the box")
+			return failed("you rode up without stopping in the box")
 		return null
 	var uphill := -_finish.global_basis.z
 	_rolled_back = maxf(_rolled_back, -(centre - _stood_at).dot(uphill))
@@ -62,4 +62,4 @@ func _judge(delta: float) -> ChallengeResult:
 	var facts := PackedStringArray(
 		["stood %.1f s, rolled back %.2f m" % [_stood_for, _rolled_back]]
 	)
-	return ChallengeResult.passed_with(_rolled_back, facts)
+	return passed_with(_rolled_back, facts)

@@ -50,7 +50,7 @@ func progress_text() -> String:
 
 func _judge(delta: float) -> ChallengeResult:
 	if _finish == null:
-		return ChallengeResult.failed("this lesson is broken: " + problem)
+		return failed("this lesson is broken: " + problem)
 	var front := bike.is_front_wheel_grounded()
 	var rear := bike.is_rear_wheel_grounded()
 	if is_nan(_flight):
@@ -61,7 +61,7 @@ func _judge(delta: float) -> ChallengeResult:
 		elif _air >= least_air:
 			_landed(front, rear)
 			if _pitch < -nose_down_limit:
-				return ChallengeResult.failed(_front_first_text(), _facts())
+				return failed(_front_first_text(), _facts())
 		else:
 			_air = 0.0
 	elif not _both_down:
@@ -69,14 +69,12 @@ func _judge(delta: float) -> ChallengeResult:
 		if not _both_down:
 			_other_waited += delta
 			if _front_first and _other_waited >= front_first_limit:
-				return ChallengeResult.failed(
-					"the front wheel landed first: lean back in the air", _facts()
-				)
+				return failed("the front wheel landed first: lean back in the air", _facts())
 	if _finish.distance_past(bike.get_center_of_mass()) < 0.0:
 		return null
 	if is_nan(_flight):
-		return ChallengeResult.failed("you never left the ground: ride over the kicker, and fast")
-	return ChallengeResult.passed_with(_flight if score_air_time else absf(_pitch), _facts())
+		return failed("you never left the ground: ride over the kicker, and fast")
+	return passed_with(_flight if score_air_time else absf(_pitch), _facts())
 
 
 func _landed(front: bool, rear: bool) -> void:

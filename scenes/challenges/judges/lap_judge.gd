@@ -49,12 +49,12 @@ func progress_text() -> String:
 
 func _judge(_delta: float) -> ChallengeResult:
 	if _track == null:
-		return ChallengeResult.failed("this challenge is broken: " + problem)
+		return failed("this challenge is broken: " + problem)
 	if _missed > 0:
-		return ChallengeResult.failed("you missed checkpoint %d: the lap does not count" % _missed)
+		return failed("you missed checkpoint %d: the lap does not count" % _missed)
 	if is_nan(_lap):
 		return null
-	return ChallengeResult.passed_with(_lap, ["a lap in %s" % Level.format_time(_lap)])
+	return passed_with(_lap, ["a lap in %s" % Level.format_time(_lap)])
 
 
 func _on_lap_finished(lap_time: float, _best: bool) -> void:

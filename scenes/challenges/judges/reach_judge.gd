@@ -24,9 +24,7 @@ func progress_text() -> String:
 
 func _judge(_delta: float) -> ChallengeResult:
 	if _goal == null:
-		return ChallengeResult.failed("this challenge is broken: " + problem)
+		return failed("this challenge is broken: " + problem)
 	if not _goal.contains(bike.get_center_of_mass()):
 		return null
-	return ChallengeResult.passed_with(
-		elapsed, ["reached the goal in %s" % Level.format_time(elapsed)]
-	)
+	return passed_with(elapsed, ["reached the goal in %s" % Level.format_time(elapsed)])

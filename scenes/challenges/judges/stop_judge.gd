@@ -41,7 +41,7 @@ func progress_text() -> String:
 
 func _judge(_delta: float) -> ChallengeResult:
 	if _box == null or _from == null or _to == null:
-		return ChallengeResult.failed("this lesson is broken: " + problem)
+		return failed("this lesson is broken: " + problem)
 	var centre := bike.get_center_of_mass()
 	var held := _held_speed(centre)
 	if held != null:
@@ -51,11 +51,11 @@ func _judge(_delta: float) -> ChallengeResult:
 		facts.append("held %d–%d km/h between the lines" % [floori(_slowest), ceili(_fastest)])
 	var past_middle := _box_middle_line_distance(centre)
 	if past_middle > _box.size.z / 2.0 + overrun:
-		return ChallengeResult.failed("you rode through the box without stopping", facts)
+		return failed("you rode through the box without stopping", facts)
 	if not stopped():
 		return null
 	if _to.distance_past(centre) < 0.0:
-		return ChallengeResult.failed("you stopped before the second line", facts)
+		return failed("you stopped before the second line", facts)
 	var side := "past" if past_middle > 0.0 else "short of"
 	facts.append("stopped %.2f m %s the box's middle" % [absf(past_middle), side])
 	return _stop_verdict(centre, past_middle, facts)
@@ -69,13 +69,9 @@ func _held_speed(centre: Vector3) -> ChallengeResult:
 	_fastest = maxf(_fastest, speed_kmh())
 	var band := "keep to %d–%d km/h" % [hold_min_kmh, hold_max_kmh]
 	if _slowest < hold_min_kmh:
-		return ChallengeResult.failed(
-			"you slowed to %d km/h between the lines: %s" % [floori(_slowest), band]
-		)
+		return failed("you slowed to %d km/h between the lines: %s" % [floori(_slowest), band])
 	if _fastest > hold_max_kmh:
-		return ChallengeResult.failed(
-			"you rode %d km/h between the lines: %s" % [ceili(_fastest), band]
-		)
+		return failed("you rode %d km/h between the lines: %s" % [ceili(_fastest), band])
 	return null
 
 
@@ -84,13 +80,13 @@ func _stop_verdict(
 	centre: Vector3, past_middle: float, facts: PackedStringArray
 ) -> ChallengeResult:
 	if _box.contains(centre):
-		return ChallengeResult.passed_with(absf(past_middle), facts)
+		return passed_with(absf(past_middle), facts)
 	var outside := absf(past_middle) - _box.size.z / 2.0
 	if outside <= 0.0:
-		return ChallengeResult.failed("you stopped beside the box, not in it", facts)
+		return failed("you stopped beside the box, not in it", facts)
 	if past_middle < 0.0:
-		return ChallengeResult.failed("you stopped %.1f m before the box" % outside, facts)
-	return ChallengeResult.failed("you stopped %.1f m past the box" % outside, facts)
+		return failed("you stopped %.1f m before the box" % outside, facts)
+	return failed("you stopped %.1f m past the box" % outside, facts)
 
 
 ## How far (m) `point` lies past the box's middle along the way (its −z).

@@ -41,7 +41,7 @@ func progress_text() -> String:
 
 func _judge(_delta: float) -> ChallengeResult:
 	if not problem.is_empty():
-		return ChallengeResult.failed("this lesson is broken: " + problem)
+		return failed("this lesson is broken: " + problem)
 	var centre := bike.get_center_of_mass()
 	var moved := Vector2(centre.x - _previous.x, centre.z - _previous.z).length()
 	_previous = centre
@@ -52,12 +52,10 @@ func _judge(_delta: float) -> ChallengeResult:
 	elif not front_up:
 		_wheelie = 0.0
 	if _log != null and _hit_the_log(not front_up):
-		return ChallengeResult.failed(
-			"the front wheel hit the log: lean back and open the throttle before it"
-		)
+		return failed("the front wheel hit the log: lean back and open the throttle before it")
 	if _finish.distance_past(centre) < 0.0:
 		return null
-	return ChallengeResult.passed_with(_longest, ["the longest wheelie: %.1f m" % _longest])
+	return passed_with(_longest, ["the longest wheelie: %.1f m" % _longest])
 
 
 ## Whether the front wheel, `down` on the ground, is at the log (it hit it); notes once it

@@ -5,7 +5,9 @@ extends Node3D
 ## (the first SpawnPoint below it) and the markers its judge reads by name (gates, lines,
 ## boxes). Its markers show only while its own lesson or challenge is ridden, so a level
 ## with many areas shows the player the one in play and a free ride shows none.
-## Put only markers here: level geometry stays where every ride meets it.
+## Put only markers here: level geometry stays where every ride meets it. (The level lists
+## its areas, `Level.challenge_areas`: a script that names its own class stays loaded past
+## an export's exit in Godot 4.6.)
 
 ## A spawn point of the level to start from (the track's start, say); empty: the first
 ## SpawnPoint below this area.
@@ -26,15 +28,6 @@ func spawn_point() -> SpawnPoint:
 ## or null.
 func marker(path: NodePath) -> Node3D:
 	return get_node_or_null(path) as Node3D
-
-
-## Every ChallengeArea below `root`.
-static func all_in(root: Node) -> Array[ChallengeArea]:
-	var areas: Array[ChallengeArea] = []
-	for found in root.find_children("*", "Node3D", true, false):
-		if found is ChallengeArea:
-			areas.append(found as ChallengeArea)
-	return areas
 
 
 func _get_configuration_warnings() -> PackedStringArray:

@@ -140,6 +140,19 @@ impl ArcadeController {
         self.previous = None;
     }
 
+    /// Its memory of the last step as numbers (none yet: empty), for a rewind.
+    pub fn memory(&self) -> Vec<f64> {
+        self.previous.map_or(Vec::new(), |(a, b)| vec![a, b])
+    }
+
+    /// Takes back what `memory` gave (anything else: nothing remembered).
+    pub fn recall(&mut self, memory: &[f64]) {
+        self.previous = match memory {
+            [a, b] => Some((*a, *b)),
+            _ => None,
+        };
+    }
+
     /// Controls for `sim`'s next control step towards `goal`.
     pub fn controls_of(&mut self, sim: &Simulation, goal: &Goal) -> Controls {
         let (bike, world, gravity) = (sim.bike(), sim.world(), sim.config().gravity);

@@ -59,6 +59,15 @@ pub trait Controller: Send {
     /// Forgets plans and memory: the ride was placed anew, lifted, or another controller
     /// drove in between, so what it remembers is for a state long gone.
     fn reset(&mut self);
+    /// What it remembers from step to step, as numbers a rewind keeps and puts back
+    /// (`recall`), so the ride goes on from a moment exactly as it did then; None for a
+    /// controller whose memory cannot be kept so (a planner and its thread), which a
+    /// rewind resets instead.
+    fn memory(&self) -> Option<Vec<f64>> {
+        None
+    }
+    /// Takes back what `memory` gave.
+    fn recall(&mut self, _memory: &[f64]) {}
     /// The plan driving the bike now (planners only).
     fn plan(&self) -> Option<&Plan> {
         None

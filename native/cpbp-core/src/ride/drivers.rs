@@ -29,6 +29,14 @@ impl Controller for ArcadeDriver {
     fn reset(&mut self) {
         self.0.reset();
     }
+
+    fn memory(&self) -> Option<Vec<f64>> {
+        Some(self.0.memory())
+    }
+
+    fn recall(&mut self, memory: &[f64]) {
+        self.0.recall(memory);
+    }
 }
 
 /// The learned network (issue 34) on the master. The arcade controller keeps its memory
@@ -127,6 +135,11 @@ impl Controller for ManualDriver {
     }
 
     fn reset(&mut self) {}
+
+    fn memory(&self) -> Option<Vec<f64>> {
+        // It remembers nothing from step to step.
+        Some(Vec::new())
+    }
 }
 
 /// A planner on its own thread, handed over at control steps.

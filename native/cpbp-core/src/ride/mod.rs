@@ -10,12 +10,14 @@ pub mod fidelity;
 pub mod limits;
 mod planner_settings;
 mod registry;
+mod rewind;
 pub mod schema;
 
 pub use auto_trajectories::AutoTrajectories;
 pub use controller::{Controller, Intent, RideState};
 pub use planner_settings::{PlannerSettings, GAME_PLAN_WAIT};
 pub use registry::{ControllerEntry, ControllerKind, Drives};
+pub use rewind::RewindRefusal;
 
 use std::sync::Arc;
 
@@ -46,6 +48,8 @@ pub struct Ride {
     started: bool,
     steps: u64,
     late_plans: u64,
+    /// The moments a rewind can go back to (`keep_history`).
+    history: rewind::History,
 }
 
 impl Ride {
@@ -70,6 +74,7 @@ impl Ride {
             started: false,
             steps: 0,
             late_plans: 0,
+            history: rewind::History::default(),
         }
     }
 
@@ -195,6 +200,7 @@ impl Ride {
 
     /// Simulates one control step with the active controller (or the raw controls).
     pub fn step(&mut self) -> StepEvents {
+        self.remember_moment();
         let goal = self.goal();
         let controls = match self.raw_controls {
             Some(controls) => {
@@ -214,6 +220,7 @@ impl Ride {
         self.steps += 1;
         if events.recovered_from.is_some() {
             self.forget_plans();
+            self.history.clear();
         }
         events
     }
@@ -224,6 +231,7 @@ impl Ride {
         // A controller whose planning thread died starts afresh with the new ride.
         self.built.retain(|(_, controller)| !controller.died());
         self.forget_plans();
+        self.history.clear();
         self.started = false;
         self.steps = 0;
         self.late_plans = 0;
@@ -238,6 +246,7 @@ impl Ride {
     pub fn lift_upright(&mut self) {
         self.sim.lift_upright();
         self.forget_plans();
+        self.history.clear();
     }
 
     /// The player's aids: ABS (`SimulationConfig::abs`) and the share of the bike's lean the
@@ -247,6 +256,7 @@ impl Ride {
         if self.sim.config().abs != abs {
             self.sim.set_abs(abs);
             self.built.retain(|(kind, _)| !kind.plans());
+            self.history.clear();
         }
         let share = LEAN_SHARE
             .range
@@ -260,6 +270,8 @@ impl Ride {
     pub fn set_terrain(&mut self, terrain: Arc<Terrain>) {
         self.sim.set_terrain(terrain);
         self.built.retain(|(kind, _)| !kind.plans());
+        // The moments kept were on the old terrain.
+        self.history.clear();
     }
 
     /// What the controllers serve this step: the intent with the turn made a lean.

@@ -11,8 +11,11 @@ use crate::bike::{
     Placement, GRAVITY,
 };
 use crate::ode::World;
+
+mod state;
 use crate::physics::PhysicsModel;
 use crate::terrain::Terrain;
+pub use state::SimulationState;
 
 /// How the world is stepped.
 #[derive(Clone, Debug, PartialEq)]
