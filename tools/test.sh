@@ -133,6 +133,9 @@ screenshots() {
     && tools/screenshot.sh $game build/screenshots/crash.png 214 \
          --set=level_path=$levels/track/track.tscn --call=Bike:set_controller:manual@140 \
          --hold=throttle:1.0@5-150 --hold=steer_right:1.0@150-175 \
+    && tools/screenshot.sh $game build/screenshots/rewind.png 345 \
+         --set=level_path=$levels/track/track.tscn --call=Bike:set_controller:manual@200 \
+         --hold=throttle:0.6@0-400 --hold=steer_left:0.5@210-220 --tap=rewind@330 \
     && tools/screenshot.sh $game build/screenshots/dust.png 285 \
          --set=level_path=$levels/track/track.tscn --tap=next_spawn@5 --tap=next_spawn@10 \
          --hold=throttle:1.0@15- \
@@ -151,7 +154,7 @@ screenshots() {
          --tap=cycle_camera@5 --tap=cycle_camera@8 \
     && tools/screenshot.sh $game build/screenshots/replay.png 330 \
          --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 --hold=rider_back:0.4 \
-         --tap=pause@200 --tap=ui_down@205 --tap=ui_accept@210 \
+         --tap=pause@200 --tap=ui_down@205 --tap=ui_down@208 --tap=ui_accept@212 \
     && tools/screenshot.sh $game build/screenshots/rider-foot-down.png 400 \
          --set=level_path=$levels/skate_park/skate_park.tscn --hold=throttle:0.5@0-100 \
          --hold=brake:0.6@100- --hold=camera_left:0.5@150-175 \
@@ -174,7 +177,7 @@ bike_gallery() {
 # Screenshots of the menus (the School on a first launch and with medals, a level's
 # challenges), a lesson's briefing, medal and failed try, the levels, the telemetry
 # overlay at 125 %, the Lab, the Controls screen, cameras, a full
-# brake's tyre marks, a crash's sparks, dust on the track's gravel, replay, ghost race and
+# brake's tyre marks, a crash's sparks, a fall rewound, dust on the track's gravel, replay, ghost race and
 # each bike under Xvfb, failing on a blank picture (the ghost race races the lap the bot
 # rode in the GDScript suites).
 step "screenshots (Xvfb)"   screenshots

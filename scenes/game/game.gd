@@ -231,15 +231,14 @@ func rewind() -> void:
 
 
 ## Why this ride cannot be rewound ("": it can, as far as the bike kept it): a lesson's or
-## a challenge's attempt is judged whole, and the automatic test rides itself.
+## a challenge's attempt is judged whole, the automatic test rides itself, and a ride
+## keeps nothing before its first throttle.
 func rewind_refusal() -> String:
 	if challenge_run != null:
 		return "a lesson is judged whole (%s to try again)" % Controls.prompt(&"reset_bike")
 	if is_automatic():
 		return "the automatic test rides itself"
-	if bike.get_rewindable() <= 0.0:
-		return "nothing to rewind yet: ride first"
-	return ""
+	return bike.get_rewind_refusal()
 
 
 ## Shows the replay of the last run (the game stays paused); back to the pause menu after.

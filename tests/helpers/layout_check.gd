@@ -4,6 +4,18 @@ extends RefCounted
 ## controls that draw something (a label with text, a dial, a pad) are compared in pairs
 ## by their rectangles; a rectangle is never allowed to leave the area.
 
+## The game's canvas (project.godot's viewport size); windows stretch it, keeping its
+## aspect or widening it (`expand`). The windows every layout is checked in.
+const BASE := Vector2(1280, 720)
+const WINDOWS: Array[Vector2] = [Vector2(1280, 720), Vector2(1920, 1080), Vector2(800, 600)]
+
+
+## The canvas a `window` gives the UI at UI scale `scale`: the game's canvas stretched to
+## the window keeping its aspect and widened to fill it, then shrunk by the scale.
+static func canvas(window: Vector2, scale: float) -> Vector2:
+	var stretch := minf(window.x / BASE.x, window.y / BASE.y)
+	return (window / stretch / scale).floor()
+
 
 ## The controls below `root` that are shown and draw something: labels with text and
 ## any control that is not a container (a dial, a pad, the drawn inputs).

@@ -7,10 +7,6 @@ extends TestCase
 ## two labels, dials or pads may overlap, and none may leave the screen.
 
 const HUD := preload("res://scenes/ui/hud.tscn")
-## The game's canvas (project.godot's viewport size); windows stretch it, keeping its
-## aspect or widening it (`expand`).
-const BASE := Vector2(1280, 720)
-const WINDOWS: Array[Vector2] = [Vector2(1280, 720), Vector2(1920, 1080), Vector2(800, 600)]
 
 const LONGEST := {
 	"Status":
@@ -25,20 +21,18 @@ const LONGEST := {
 	),
 	"Speed": "199 km/h",
 	"Lean": "lean -75°   wanted +75°",
-	"Hint": "B / R respawn   ·   A / T lift the bike",
 }
-const BANNER := (
-	"Fell: low-side, the tyres slid out: the rider's head or body hit the ground\n"
-	+ "B / R to respawn, A / T to lift"
-)
+## The banner's longest: a fall's cause, then what the player can do (`Hud.fallen_hint`,
+## which is the hint's longest too).
+const FALL := "Fell: low-side, the tyres slid out: the rider's head or body hit the ground"
 
 
 func test_the_longest_texts_fit_every_window_at_every_ui_scale() -> void:
 	var largest: float = Settings.entries[&"ui_scale"].max / 100.0
 	var least_gap := INF
-	for window in WINDOWS:
+	for window in LayoutCheck.WINDOWS:
 		for scale: float in [1.0, largest]:
-			var canvas := _canvas(window, scale)
+			var canvas := LayoutCheck.canvas(window, scale)
 			var hud := await _laid_out(canvas)
 			var drawn := LayoutCheck.drawn(hud)
 			assert_gt(drawn.size(), 8, "the HUD's labels, dial and pads are drawn")
@@ -64,25 +58,20 @@ func test_the_ui_scale_setting_sizes_the_canvas_and_telemetry_starts_off() -> vo
 
 
 func test_a_label_moved_onto_another_is_caught() -> void:
-	var hud := await _laid_out(BASE)
+	var hud := await _laid_out(LayoutCheck.BASE)
 	var speed := hud.get_node("%Speed") as Label
 	var moved := Label.new()
 	moved.text = "on the speed"
 	hud.add_child(moved)
 	moved.global_position = speed.get_global_rect().get_center()
 	await wait_frames(1)
-	var problems := LayoutCheck.problems(LayoutCheck.drawn(hud), Rect2(Vector2.ZERO, BASE))
+	var problems := LayoutCheck.problems(
+		LayoutCheck.drawn(hud), Rect2(Vector2.ZERO, LayoutCheck.BASE)
+	)
 	assert_eq(problems.size(), 1, "one overlap: %s" % problems)
 	if not problems.is_empty():
 		assert_has(problems[0], "overlaps")
 	hud.get_parent().queue_free()
-
-
-## The canvas a `window` gives the HUD at UI scale `scale`: the game's canvas stretched to
-## the window keeping its aspect and widened to fill it, then shrunk by the scale.
-static func _canvas(window: Vector2, scale: float) -> Vector2:
-	var stretch := minf(window.x / BASE.x, window.y / BASE.y)
-	return (window / stretch / scale).floor()
 
 
 ## The overlay's first line at its longest: the longest controller's name planning with
@@ -107,7 +96,8 @@ func _laid_out(size: Vector2) -> Hud:
 	for label: String in LONGEST:
 		(hud.get_node("%" + label) as Label).text = LONGEST[label]
 	(hud.get_node("%Controller") as Label).text = _longest_controller_line()
-	hud.announce(BANNER)
+	(hud.get_node("%Hint") as Label).text = Hud.fallen_hint()
+	hud.announce(FALL + "\n" + Hud.fallen_hint())
 	hud.show_split(12, 99.99)
 	await wait_frames(3)
 	return hud

@@ -5,6 +5,9 @@ use godot::prelude::*;
 
 use crate::bike_simulation::BikeSimulation;
 
+/// Why a node whose ride is not built yet cannot rewind.
+const NOT_STARTED: &str = "the ride has not started";
+
 #[godot_api(secondary)]
 impl BikeSimulation {
     /// Puts the ride back `seconds` (as far as its history goes, when that is shorter):
@@ -14,7 +17,7 @@ impl BikeSimulation {
     fn rewind(&mut self, seconds: f64) -> VarDictionary {
         let outcome = match self.ride.as_mut() {
             Some(ride) => ride.rewind(seconds).map_err(|refusal| refusal.to_string()),
-            None => Err("the ride has not started".to_owned()),
+            None => Err(NOT_STARTED.to_owned()),
         };
         if outcome.is_ok() {
             // Drawn from here: no blend from the moment the rewind left.
@@ -25,6 +28,17 @@ impl BikeSimulation {
             Err(why) => (0.0, why),
         };
         vdict! { "rewound" => rewound, "why" => why.as_str() }
+    }
+
+    /// Why a rewind would do nothing now ("": it would go back), in the player's words.
+    #[func]
+    fn get_rewind_refusal(&self) -> GString {
+        match self.ride.as_ref() {
+            Some(ride) => ride
+                .rewind_refusal()
+                .map_or_else(GString::new, |refusal| refusal.to_string().as_str().into()),
+            None => NOT_STARTED.into(),
+        }
     }
 
     /// How far back (s) a rewind can go now.

@@ -73,16 +73,24 @@ impl Ride {
         self.history.moments.len() as f64 * self.sim.config().control_dt
     }
 
+    /// Why a rewind would do nothing now (None: it would go back).
+    pub fn rewind_refusal(&self) -> Option<RewindRefusal> {
+        if self.history.capacity == 0 {
+            Some(RewindRefusal::NotKept)
+        } else if self.history.moments.is_empty() {
+            Some(RewindRefusal::NothingYet)
+        } else {
+            None
+        }
+    }
+
     /// Puts the ride back `seconds` (whole control steps; as far as the history goes if it
     /// is shorter) and returns how far back it went. The moments after it are dropped.
     pub fn rewind(&mut self, seconds: f64) -> Result<f64, RewindRefusal> {
-        if self.history.capacity == 0 {
-            return Err(RewindRefusal::NotKept);
+        if let Some(refusal) = self.rewind_refusal() {
+            return Err(refusal);
         }
         let kept = self.history.moments.len();
-        if kept == 0 {
-            return Err(RewindRefusal::NothingYet);
-        }
         let dt = self.sim.config().control_dt;
         let back = if seconds.is_finite() {
             ((seconds / dt).round() as usize).clamp(1, kept)
