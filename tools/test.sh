@@ -184,8 +184,9 @@ step "screenshots (Xvfb)"   screenshots
 # The engine recorded by Godot's movie writer sounds at its firing frequency, rising with
 # speed; a paused game is exactly silent.
 step "bike sound (Xvfb)"    tools/sound-check.sh
-# An export with Debian unstable's template, started once: its native module loads and
-# needs no glibc newer than 2.36 (make export-check rides the portable build by hand).
+# An export with Debian unstable's template, every resource converted afresh, started
+# once: its native module loads and needs no glibc newer than 2.36 (make export-check
+# rides the portable build by hand).
 step "export + smoke run"   tools/export.sh
 # The player's own Godot folder came out of the run exactly as it went in.
 step "the player's files untouched" player_data_unchanged
