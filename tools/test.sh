@@ -177,12 +177,13 @@ bike_gallery() {
 # Screenshots of the menus (the School on a first launch and with medals, a level's
 # challenges), a lesson's briefing, medal and failed try, the levels, the telemetry
 # overlay at 125 %, the Lab, the Controls screen, cameras, a full
-# brake's tyre marks, a crash's sparks, a fall rewound, dust on the track's gravel, replay, ghost race and
-# each bike under Xvfb, failing on a blank picture (the ghost race races the lap the bot
+# brake's tyre marks, a crash's sparks, a fall rewound, dust on the track's gravel,
+# replay, ghost race and each bike under Xvfb, failing on a blank picture (the ghost race races the lap the bot
 # rode in the GDScript suites).
 step "screenshots (Xvfb)"   screenshots
-# The engine recorded by Godot's movie writer sounds at its firing frequency, rising with
-# speed; a paused game is exactly silent.
+# Each bike's engine recorded by Godot's movie writer sounds at the firing frequency of its
+# layout (a four-stroke single, a two-stroke single, an inline four), rising with speed;
+# a paused game is exactly silent.
 step "bike sound (Xvfb)"    tools/sound-check.sh
 # An export with Debian unstable's template, every resource converted afresh, started
 # once: its native module loads and needs no glibc newer than 2.36 (make export-check

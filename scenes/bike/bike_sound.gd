@@ -1,9 +1,9 @@
 class_name BikeSound
 extends AudioStreamPlayer
-## The bike's sound: engine, tyres and thumps synthesised at run time by `BikeSynth`
-## from what the simulation measures each physics tick, streamed through an
-## `AudioStreamGenerator`. Pausing the game fades it to silence; the engine's loudness
-## is the player's setting.
+## The bike's sound: the engine its file names (`engine/layout`), tyres, thumps and wind,
+## synthesised at run time by `BikeSynth` from what the simulation measures each physics
+## tick, streamed through an `AudioStreamGenerator`. Pausing the game fades it to
+## silence; the engine's loudness is the player's setting.
 
 ## Seconds of sound kept ready ahead of the mixer: enough to ride out a slow frame,
 ## short enough that the engine answers the throttle at once.
@@ -31,6 +31,7 @@ func _ready() -> void:
 	generator.buffer_length = BUFFER_SECONDS
 	stream = generator
 	_synth = BikeSynth.at_rate(generator.mix_rate)
+	_synth.hear_engine_of(_simulation)
 	_synth.set_engine_volume(Settings.get_value(&"engine_volume"))
 	Settings.changed.connect(_on_setting_changed)
 	play()
@@ -58,6 +59,17 @@ func _process(_delta: float) -> void:
 ## Crank speed (rpm) and gear now, and the pitch one hears (Hz).
 func rpm() -> float:
 	return _synth.get_rpm()
+
+
+## Crank speed as a share of the rev limiter's (0–1): how hard the engine is revving.
+func revs() -> float:
+	return _synth.get_rpm() / float(_synth.get_engine().limiter_rpm)
+
+
+## The engine's layout (`BikeSynth.get_engine`: name, label, cylinders, strokes, idle and
+## limiter rpm).
+func engine() -> Dictionary:
+	return _synth.get_engine()
 
 
 func gear() -> int:

@@ -68,8 +68,8 @@ func _physics_process(_delta: float) -> void:
 		return
 	var grounded: Array[bool] = [_bike.is_rear_wheel_grounded(), _bike.is_front_wheel_grounded()]
 	var abs_on := abs_working(_bike.get_tyres(), grounded, _bike.get_speed(), _deceleration)
-	var rpm := _sound.rpm() if _sound != null else 0.0
-	riding(abs_on, rpm)
+	var revs := _sound.revs() if _sound != null else 0.0
+	riding(abs_on, revs)
 
 
 ## Whether the ABS is at work on `tyres` (contact, and slide speed as the fourth number)
@@ -85,19 +85,19 @@ static func abs_working(
 	return false
 
 
-## The light motor's buzz (0–ENGINE_BUZZ) at crank speed `rpm`.
-static func engine_buzz(rpm: float) -> float:
-	var limiter := BikeSynth.limiter_rpm()
-	var share := (rpm / limiter - ENGINE_FROM) / (1.0 - ENGINE_FROM)
+## The light motor's buzz (0–ENGINE_BUZZ) with the crank at `revs` of its limiter's speed
+## (`BikeSound.revs`).
+static func engine_buzz(revs: float) -> float:
+	var share := (revs - ENGINE_FROM) / (1.0 - ENGINE_FROM)
 	return clampf(share, 0.0, 1.0) * ENGINE_BUZZ if is_finite(share) else 0.0
 
 
 ## The riding rumble for one physics frame: the ABS's pulse, else the engine's buzz;
 ## nothing over a landing's or a crash's shake.
-func riding(abs_on: bool, rpm: float) -> void:
+func riding(abs_on: bool, revs: float) -> void:
 	if not rumble or Time.get_ticks_msec() < _event_until:
 		return
-	var light := ABS_PULSE if abs_on else engine_buzz(rpm)
+	var light := ABS_PULSE if abs_on else engine_buzz(revs)
 	if light > 0.0:
 		Input.start_joy_vibration(device, light, 0.0, RIDING_S)
 

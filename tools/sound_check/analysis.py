@@ -1,6 +1,7 @@
 """What a recording of the bike says: its pitch window by window, how loud it is, and
 whether silence is exactly silent, set against the engine state the game logged each
-frame (tests/sound/sound_capture.gd)."""
+frame (tests/sound/sound_capture.gd): its crank speed and its layout's cylinders and
+strokes, from which the firing frequency is worked out here, not taken from the game."""
 
 import csv
 import wave
@@ -9,8 +10,9 @@ from dataclasses import dataclass
 import numpy as np
 
 FRAME_RATE = 60
-# The engine's pitch range (Hz): idle fires 14 times a second, the limiter 92.
-LOWEST, HIGHEST = 10.0, 200.0
+# The engines' pitch range (Hz): a four-stroke single idles at 14 firings a second, an
+# inline four shifting up at 10 500 rpm fires 350 times.
+LOWEST, HIGHEST = 10.0, 400.0
 
 
 @dataclass
@@ -40,14 +42,26 @@ def load(wav_path: str, csv_path: str) -> Recording:
     return Recording(samples, rate, frames)
 
 
+def layout_frequency(row: dict) -> float:
+    """Exhaust pulses per second at the row's crank speed, for its engine's layout: each
+    cylinder fires once a turn on a two-stroke, every second turn on a four-stroke."""
+    return row["rpm"] / 60.0 * row["cylinders"] * 2.0 / row["strokes"]
+
+
 def pitch(samples: np.ndarray, rate: int) -> float:
-    """Fundamental frequency by autocorrelation: the first peak that comes within 10 % of
-    the best in the engine's range, so a period's multiples are not taken for it."""
+    """Fundamental frequency by autocorrelation: past the first lobe (where the
+    correlation first falls below zero, so a slowly decaying pulse's own width is not
+    taken for a period), the first peak that comes within 10 % of the best in the
+    engines' range, so a period's multiples are not taken for it."""
     x = samples - samples.mean()
     n = len(x)
     spectrum = np.fft.rfft(x, 2 * n)
     correlation = np.fft.irfft(spectrum * np.conj(spectrum))[:n]
-    low, high = int(rate / HIGHEST), min(int(rate / LOWEST), n - 2)
+    high = min(int(rate / LOWEST), n - 2)
+    below = np.flatnonzero(correlation[:high] < 0.0)
+    if len(below) == 0:
+        return float("nan")
+    low = max(int(rate / HIGHEST), int(below[0]))
     window = correlation[low:high]
     best = window.max()
     for i in range(1, len(window) - 1):
@@ -61,7 +75,7 @@ class Window:
     first_frame: int
     speed: float
     gear: int
-    expected: float  # the logged firing frequency (Hz), mean over the window
+    expected: float  # the layout's firing frequency (Hz) at the logged rpm, window mean
     heard: float  # the recording's pitch (Hz)
 
     @property
@@ -78,7 +92,7 @@ def pitch_windows(rec: Recording, lag: int, length: int = 15, hop: int = 5) -> l
         rows = rec.frames[first:first + length]
         if any(r["paused"] for r in rows):
             continue
-        expected = np.array([r["firing_frequency"] for r in rows])
+        expected = np.array([layout_frequency(r) for r in rows])
         if expected.max() > 1.1 * expected.min() or len({r["gear"] for r in rows}) > 1:
             continue
         heard = pitch(rec.frame_samples(first, length, lag), rec.rate)

@@ -2,12 +2,14 @@
 //! edits in the inspector (bikes/*.tres). `BikeSimulation.bike` takes one; a second bike
 //! is a second file. Its defaults are the core's reference bike (`BikeParams::default()`);
 //! the Rust tools read the same file through `cpbp_core::bike::read_bike_file`.
-//! Its looks (paint, bodywork) are the drawing's alone: the core never sees them.
+//! Its looks (paint, bodywork) are the drawing's alone and its engine (`engine`, one of
+//! `cpbp_sound`'s layouts) the sound's: the core never sees them.
 
-use cpbp_core::bike::{BikeParams, FIELDS};
+use cpbp_core::bike::{BikeField, BikeParams, FIELDS};
+use cpbp_sound::layout::EngineLayout;
 use godot::classes::{ClassDb, IResource, Resource};
 use godot::prelude::*;
-use godot::register::info::{PropertyHintInfo, PropertyInfo, PropertyUsageFlags};
+use godot::register::info::{PropertyHint, PropertyHintInfo, PropertyInfo, PropertyUsageFlags};
 
 use crate::node_settings::range_hint;
 
@@ -35,6 +37,9 @@ pub struct BikeDescription {
     /// size); none draws the standard naked bodywork.
     #[export]
     bodywork: Option<Gd<Resource>>,
+    /// How the engine is built, for its sound (`engine/layout`, an `EngineLayout::name`:
+    /// four_stroke_single, …); listed from the layouts, so not an `#[export]`.
+    engine: String,
     /// One number per bike field, in the field's file unit, as set (checked when built).
     numbers: Vec<f64>,
     /// Properties set that are neither a bike field nor one Godot knows (a field
@@ -66,6 +71,7 @@ impl IResource for BikeDescription {
             suspension: BikeParams::default().suspension.is_some(),
             paint: STREET_ORANGE,
             bodywork: None,
+            engine: EngineLayout::default().name.to_owned(),
             numbers: reference_numbers(),
             unknown: Vec::new(),
             base,
@@ -73,31 +79,39 @@ impl IResource for BikeDescription {
     }
 
     fn on_get_property_list(&mut self) -> Vec<PropertyInfo> {
-        FIELDS
+        let engine = PropertyInfo {
+            variant_type: VariantType::STRING,
+            class_name: StringName::default(),
+            property_name: ENGINE.into(),
+            hint_info: PropertyHintInfo {
+                hint: PropertyHint::ENUM,
+                hint_string: EngineLayout::names().as_str().into(),
+            },
+            usage: PropertyUsageFlags::DEFAULT,
+        };
+        // Beside the engine's numbers, so the inspector groups them under one heading.
+        let mut properties: Vec<PropertyInfo> = FIELDS.iter().map(field_property).collect();
+        let at = FIELDS
             .iter()
-            .map(|f| PropertyInfo {
-                variant_type: if f.is_switch() {
-                    VariantType::BOOL
-                } else {
-                    VariantType::FLOAT
-                },
-                class_name: StringName::default(),
-                property_name: f.name.into(),
-                hint_info: if f.is_switch() {
-                    PropertyHintInfo::none()
-                } else {
-                    range_hint(f.range, f.unit)
-                },
-                usage: PropertyUsageFlags::DEFAULT,
-            })
-            .collect()
+            .position(|f| f.name.starts_with("engine/"))
+            .unwrap_or(properties.len());
+        properties.insert(at, engine);
+        properties
     }
 
     fn on_get(&self, property: StringName) -> Option<Variant> {
+        if property == ENGINE {
+            return Some(self.engine.to_variant());
+        }
         index_of(&property).map(|i| field_variant(i, self.numbers[i]))
     }
 
     fn on_set(&mut self, property: StringName, value: Variant) -> bool {
+        if property == ENGINE {
+            // Kept as given, an unknown one too: `problem` names it.
+            self.engine = value.try_to::<String>().unwrap_or_default();
+            return true;
+        }
         let Some(i) = index_of(&property) else {
             let name = property.to_string();
             if !godot_knows(&name) && !self.unknown.contains(&name) {
@@ -114,7 +128,32 @@ impl IResource for BikeDescription {
     }
 
     fn on_property_get_revert(&self, property: StringName) -> Option<Variant> {
+        if property == ENGINE {
+            return Some(EngineLayout::default().name.to_variant());
+        }
         index_of(&property).map(|i| field_variant(i, reference_numbers()[i]))
+    }
+}
+
+/// The property naming the engine's layout, in the inspector beside the engine's numbers.
+const ENGINE: &str = "engine/layout";
+
+/// Bike field `f` as an inspector property: a switch, or a number in its range and unit.
+fn field_property(f: &BikeField) -> PropertyInfo {
+    PropertyInfo {
+        variant_type: if f.is_switch() {
+            VariantType::BOOL
+        } else {
+            VariantType::FLOAT
+        },
+        class_name: StringName::default(),
+        property_name: f.name.into(),
+        hint_info: if f.is_switch() {
+            PropertyHintInfo::none()
+        } else {
+            range_hint(f.range, f.unit)
+        },
+        usage: PropertyUsageFlags::DEFAULT,
     }
 }
 
@@ -143,7 +182,7 @@ impl BikeDescription {
     /// the core refuses), naming the bike and the field; empty when it can.
     #[func]
     fn problem(&self) -> GString {
-        match self.params() {
+        match self.params().and(self.engine()) {
             Ok(_) => GString::new(),
             Err(why) => GString::from(&format!("{}: {why}", self.name)),
         }
@@ -174,6 +213,17 @@ impl BikeDescription {
 }
 
 impl BikeDescription {
+    /// The engine's layout, or why the file's is none of them.
+    pub fn engine(&self) -> Result<EngineLayout, String> {
+        EngineLayout::named(&self.engine).ok_or_else(|| {
+            format!(
+                "engine '{}' is not one of {}",
+                self.engine,
+                EngineLayout::names().replace(',', ", ")
+            )
+        })
+    }
+
     /// The bike's name, for people.
     pub fn name(&self) -> GString {
         self.name.clone()

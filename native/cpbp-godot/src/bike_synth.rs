@@ -1,6 +1,7 @@
-//! `BikeSynth`: the bike's engine, tyres and thumps (`cpbp_sound::BikeVoice`) listening to
-//! a `BikeSimulation` and rendering samples for an `AudioStreamGenerator`.
+//! `BikeSynth`: the bike's engine, tyres, thumps and wind (`cpbp_sound::BikeVoice`)
+//! listening to a `BikeSimulation` and rendering samples for an `AudioStreamGenerator`.
 
+use cpbp_sound::layout::EngineLayout;
 use cpbp_sound::{BikeVoice, Sources};
 use godot::classes::AudioServer;
 use godot::prelude::*;
@@ -14,6 +15,8 @@ use crate::bike_simulation::BikeSimulation;
 #[class(base=RefCounted)]
 pub struct BikeSynth {
     voice: BikeVoice,
+    sample_rate: f32,
+    engine_volume: f32,
     /// The step whose ground blow was last heard: a blow sounds once, however many ticks
     /// read it.
     heard_step: i64,
@@ -36,9 +39,41 @@ impl BikeSynth {
         Gd::from_init_fn(|base| Self::at(sample_rate, base))
     }
 
+    /// Sounds the engine `bike`'s file names (its `engine`; a four-stroke single for the
+    /// reference bike, or, with a warning, for a file naming none of the layouts).
+    #[func]
+    fn hear_engine_of(&mut self, bike: Gd<BikeSimulation>) {
+        let layout = match bike.bind().bike.as_ref() {
+            Some(description) => description.bind().engine().unwrap_or_else(|why| {
+                godot_warn!("BikeSynth: {why}; it sounds as a four-stroke single");
+                EngineLayout::default()
+            }),
+            None => EngineLayout::default(),
+        };
+        if *self.voice.engine() != layout {
+            self.voice = BikeVoice::with_engine(layout, self.sample_rate);
+            self.voice.set_engine_volume(self.engine_volume);
+        }
+    }
+
+    /// The engine's layout: `name` and `label` ("two-stroke single"), `cylinders`,
+    /// `strokes`, `idle_rpm`, `limiter_rpm`.
+    #[func]
+    fn get_engine(&self) -> VarDictionary {
+        let layout = self.voice.engine();
+        vdict! {
+            "name" => layout.name,
+            "label" => layout.label,
+            "cylinders" => layout.cylinders,
+            "strokes" => layout.strokes,
+            "idle_rpm" => layout.idle_rpm,
+            "limiter_rpm" => layout.limiter_rpm,
+        }
+    }
+
     /// Reads what `bike` did over the last `delta` seconds: the rear rim's speed and the
-    /// throttle (engine), each tyre's slide, the ground's blow, and whether it crashed
-    /// (the engine stalls).
+    /// throttle (engine), each tyre's slide, the ground's blow, whether it crashed (the
+    /// engine stalls) and its speed (the wind).
     #[func]
     fn listen(&mut self, bike: Gd<BikeSimulation>, delta: f64) {
         let bike = bike.bind();
@@ -59,6 +94,7 @@ impl BikeSynth {
             front_slip: front_slip as f32,
             impact: impact as f32,
             running: sim.crashed().is_none(),
+            speed: sim.bike().center_of_mass_velocity(sim.world()).length() as f32,
         };
         self.voice.update(sources, delta as f32);
     }
@@ -75,6 +111,7 @@ impl BikeSynth {
     /// Engine loudness against tyres and thumps (0–1).
     #[func]
     fn set_engine_volume(&mut self, volume: f32) {
+        self.engine_volume = volume;
         self.voice.set_engine_volume(volume);
     }
 
@@ -88,13 +125,6 @@ impl BikeSynth {
     #[func]
     fn get_rpm(&self) -> f32 {
         self.voice.rpm()
-    }
-
-    /// The crank speed the rev limiter holds (rpm): the top of a rev counter, and where
-    /// the pad's engine buzz is strongest.
-    #[func]
-    fn limiter_rpm() -> f32 {
-        cpbp_sound::engine::LIMITER_RPM
     }
 
     /// Gear engaged (1–6).
@@ -114,6 +144,8 @@ impl BikeSynth {
     fn at(sample_rate: f32, base: Base<RefCounted>) -> Self {
         Self {
             voice: BikeVoice::new(sample_rate),
+            sample_rate,
+            engine_volume: 1.0,
             heard_step: -1,
             samples: Vec::new(),
             base,

@@ -1,17 +1,21 @@
 //! Counter-Steer's bike sounds, synthesised at run time from what the simulation measures
-//! (no recorded samples): the engine (`engine`), the tyres (`tyres`) and landings and
-//! impacts (`thump`), mixed by `BikeVoice`. Free of Godot types; `cpbp-godot` feeds the
+//! (no recorded samples): the engine of the bike's layout (`engine`, `layout`), the tyres
+//! (`tyres`), landings and impacts (`thump`) and the wind (`wind`), mixed by `BikeVoice`. Free of Godot types; `cpbp-godot` feeds the
 //! samples to an `AudioStreamGenerator`.
 
 pub mod dsp;
 pub mod engine;
+pub mod layout;
 pub mod thump;
 pub mod tyres;
+pub mod wind;
 
 use dsp::{approach, DcBlocker};
 use engine::{Drivetrain, EngineVoice};
+use layout::EngineLayout;
 use thump::{thump_strength, ThumpVoice};
 use tyres::TyreVoice;
+use wind::WindVoice;
 
 /// The mix's overall level: a revving engine sits around −14 dBFS RMS, leaving headroom
 /// for a landing on top.
@@ -32,6 +36,8 @@ pub struct Sources {
     pub impact: f32,
     /// The engine runs (false after a crash: it stalls).
     pub running: bool,
+    /// The bike's speed through the air (m/s): the wind.
+    pub speed: f32,
 }
 
 /// The whole bike's sound: engine, both tyres and thumps, mixed to one channel.
@@ -43,6 +49,7 @@ pub struct BikeVoice {
     rear_tyre: TyreVoice,
     front_tyre: TyreVoice,
     thump: ThumpVoice,
+    wind: WindVoice,
     dc: DcBlocker,
     engine_volume: f32,
     /// The engine's own level (0 when stalled), and the whole voice's (0 when muted).
@@ -53,15 +60,22 @@ pub struct BikeVoice {
 }
 
 impl BikeVoice {
+    /// A bike with the default engine (a four-stroke single).
     pub fn new(sample_rate: f32) -> Self {
+        Self::with_engine(EngineLayout::default(), sample_rate)
+    }
+
+    /// A bike whose engine is built as `layout` says.
+    pub fn with_engine(layout: EngineLayout, sample_rate: f32) -> Self {
         let sample_rate = sample_rate.max(8_000.0);
         Self {
             sample_rate,
-            drivetrain: Drivetrain::default(),
-            engine: EngineVoice::new(sample_rate),
+            drivetrain: Drivetrain::new(layout),
+            engine: EngineVoice::new(layout, sample_rate),
             rear_tyre: TyreVoice::new(700.0, 0x0ea7_0001, sample_rate),
             front_tyre: TyreVoice::new(820.0, 0x0ea7_0002, sample_rate),
             thump: ThumpVoice::new(sample_rate),
+            wind: WindVoice::new(sample_rate),
             dc: DcBlocker::new(8.0, sample_rate),
             engine_volume: 1.0,
             engine_level: 1.0,
@@ -84,6 +98,12 @@ impl BikeVoice {
         self.rear_tyre.set_slip(finite(sources.rear_slip));
         self.front_tyre.set_slip(finite(sources.front_slip));
         self.thump.hit(thump_strength(finite(sources.impact)));
+        self.wind.set_speed(finite(sources.speed));
+    }
+
+    /// The engine's layout.
+    pub fn engine(&self) -> &EngineLayout {
+        self.drivetrain.layout()
     }
 
     /// Engine loudness relative to the tyres and thumps (0–1, the player's setting).
@@ -111,7 +131,7 @@ impl BikeVoice {
 
     /// The engine's firing frequency now (Hz): the pitch one hears.
     pub fn firing_frequency(&self) -> f32 {
-        Drivetrain::firing_frequency(self.drivetrain.rpm())
+        self.drivetrain.firing_frequency()
     }
 
     /// Fills `out` with the next samples (mono, −1 to 1).
@@ -127,7 +147,8 @@ impl BikeVoice {
             let engine = self.engine.sample() * self.engine_level * self.engine_volume;
             let mixed = 0.8 * engine
                 + 0.35 * (self.rear_tyre.sample() + self.front_tyre.sample())
-                + 0.6 * self.thump.sample();
+                + 0.6 * self.thump.sample()
+                + 0.5 * self.wind.sample();
             // A soft clip keeps a loud landing over a revving engine from wrapping.
             *sample = (self.dc.process(mixed) * MIX_LEVEL * self.gain).tanh();
         }

@@ -2,60 +2,12 @@
 //! frequency and rises with the rear wheel's speed through the gears, the tyres are silent
 //! until they slide, a thump is as loud as the blow, and muted is exactly silent.
 
-use cpbp_sound::engine::{Drivetrain, IDLE_RPM, LAUNCH_RPM, SHIFT_DOWN_RPM, SHIFT_UP_RPM};
+mod common;
+
+use common::{pitch, render, riding, rms, RATE, TICK};
+use cpbp_sound::engine::Drivetrain;
+use cpbp_sound::layout::EngineLayout;
 use cpbp_sound::{BikeVoice, Sources};
-
-const RATE: f32 = 44_100.0;
-const TICK: f32 = 1.0 / 60.0;
-
-/// Rides `seconds` with the same measurements every tick and returns the last `keep`
-/// seconds of sound.
-fn render(voice: &mut BikeVoice, sources: Sources, seconds: f32, keep: f32) -> Vec<f32> {
-    let per_tick = (RATE * TICK) as usize;
-    let ticks = (seconds / TICK) as usize;
-    let mut sound = Vec::new();
-    let mut block = vec![0.0; per_tick];
-    for _ in 0..ticks {
-        voice.update(sources, TICK);
-        voice.render(&mut block);
-        sound.extend_from_slice(&block);
-    }
-    sound.split_off(sound.len() - (keep * RATE) as usize)
-}
-
-fn riding(speed: f32, throttle: f32) -> Sources {
-    Sources {
-        rear_wheel_speed: speed,
-        throttle,
-        running: true,
-        ..Sources::default()
-    }
-}
-
-/// Fundamental frequency by autocorrelation (10–200 Hz): the first lag whose correlation
-/// comes within 10 % of the best, so a period's multiples are not taken for it.
-fn pitch(sound: &[f32]) -> f32 {
-    let lags = (RATE / 200.0) as usize..(RATE / 10.0) as usize;
-    let n = sound.len() - lags.end;
-    let correlation: Vec<f32> = lags
-        .clone()
-        .map(|lag| (0..n).map(|i| sound[i] * sound[i + lag]).sum::<f32>())
-        .collect();
-    let best = correlation.iter().cloned().fold(f32::MIN, f32::max);
-    // The first local maximum that comes close to the best.
-    let first = (1..correlation.len() - 1)
-        .find(|&i| {
-            correlation[i] >= 0.9 * best
-                && correlation[i] >= correlation[i - 1]
-                && correlation[i] >= correlation[i + 1]
-        })
-        .unwrap();
-    RATE / (lags.start + first) as f32
-}
-
-fn rms(sound: &[f32]) -> f32 {
-    (sound.iter().map(|s| s * s).sum::<f32>() / sound.len() as f32).sqrt()
-}
 
 #[test]
 fn the_engine_sounds_at_its_firing_frequency_and_rises_with_speed_in_a_gear() {
@@ -77,6 +29,7 @@ fn the_engine_sounds_at_its_firing_frequency_and_rises_with_speed_in_a_gear() {
 
 #[test]
 fn the_box_shifts_up_with_speed_and_down_again_without_hunting() {
+    let single = EngineLayout::FOUR_STROKE_SINGLE;
     let mut drivetrain = Drivetrain::default();
     let mut gears = Vec::new();
     for tick in 0..1200 {
@@ -85,13 +38,13 @@ fn the_box_shifts_up_with_speed_and_down_again_without_hunting() {
         drivetrain.update(speed, 0.8, TICK);
         gears.push(drivetrain.gear());
         assert!(
-            drivetrain.rpm() <= SHIFT_UP_RPM + 500.0,
+            drivetrain.rpm() <= single.shift_up_rpm + 500.0,
             "{} rpm",
             drivetrain.rpm()
         );
         if drivetrain.gear() > 1 {
             assert!(
-                drivetrain.rpm() >= SHIFT_DOWN_RPM - 500.0,
+                drivetrain.rpm() >= single.shift_down_rpm - 500.0,
                 "{}",
                 drivetrain.rpm()
             );
@@ -109,11 +62,21 @@ fn the_box_shifts_up_with_speed_and_down_again_without_hunting() {
 
 #[test]
 fn standing_still_it_idles_and_the_throttle_revs_it_on_the_clutch() {
-    let mut voice = BikeVoice::new(RATE);
-    render(&mut voice, riding(0.0, 0.0), 1.0, 0.1);
-    assert!((voice.rpm() - IDLE_RPM).abs() < 50.0, "{}", voice.rpm());
-    render(&mut voice, riding(0.0, 1.0), 1.0, 0.1);
-    assert!((voice.rpm() - LAUNCH_RPM).abs() < 100.0, "{}", voice.rpm());
+    for layout in EngineLayout::ALL {
+        let mut voice = BikeVoice::with_engine(layout, RATE);
+        render(&mut voice, riding(0.0, 0.0), 1.0, 0.1);
+        assert!(
+            (voice.rpm() - layout.idle_rpm).abs() < 50.0,
+            "{}",
+            voice.rpm()
+        );
+        render(&mut voice, riding(0.0, 1.0), 1.0, 0.1);
+        assert!(
+            (voice.rpm() - layout.launch_rpm).abs() < 100.0,
+            "{}",
+            voice.rpm()
+        );
+    }
 }
 
 #[test]
@@ -202,6 +165,7 @@ fn a_stalled_engine_falls_silent_and_nonsense_input_stays_quiet() {
         front_slip: -f32::INFINITY,
         impact: f32::NAN,
         running: true,
+        speed: f32::NAN,
     };
     let sound = render(&mut BikeVoice::new(RATE), broken, 0.5, 0.3);
     assert!(sound.iter().all(|s| s.is_finite() && s.abs() <= 1.0));

@@ -1,7 +1,8 @@
 //! A bike file (scenes/bike/bikes/*.tres, a Godot `BikeDescription` resource) read
 //! without Godot, so the Rust tools ride the bike the game rides: the `[resource]`
 //! section's `key = value` lines, numbers by the `fields` table, `suspension` as a
-//! switch, `name` as the bike's name; the drawing's keys (paint, bodywork) are skipped.
+//! switch, `name` as the bike's name; the drawing's and the sound's keys (paint,
+//! bodywork, engine/layout) are skipped.
 
 use std::path::Path;
 
@@ -24,8 +25,14 @@ pub struct BikeFile {
 /// `--bike`.
 pub const REFERENCE_BIKE: &str = "street_350";
 
-/// The keys a bike file holds for the drawing alone.
-const LOOKS: &[&str] = &["paint", "bodywork", "resource_name", "script"];
+/// The keys a bike file holds for the drawing and the sound alone.
+const LOOKS: &[&str] = &[
+    "paint",
+    "bodywork",
+    "engine/layout",
+    "resource_name",
+    "script",
+];
 
 /// Reads the bike file at `path`; the error names the file and the field.
 pub fn read_bike_file(path: &Path) -> Result<BikeFile, String> {
