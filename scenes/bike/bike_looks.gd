@@ -71,6 +71,14 @@ static func ghost_material(look: String, colour := Color(0, 0, 0, 0)) -> Standar
 	return made
 
 
+## Dresses `node` in `look` (`colour` for the paint): see-through and casting no shadow
+## for a ghost, so every piece of a ghost is drawn alike.
+static func dress(node: GeometryInstance3D, look: String, colour: Color, ghost: bool) -> void:
+	node.material_override = ghost_material(look, colour) if ghost else material(look, colour)
+	if ghost:
+		node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+
+
 ## The material of a mesh coloured by its vertices (the skinned rider, whose vertices
 ## carry their look's colour), see-through for a ghost.
 static func skin_material(ghost: bool) -> StandardMaterial3D:

@@ -357,12 +357,7 @@ func _set_up_head(head: Vector3) -> void:
 func _head_piece(attachment: Node3D, mesh: Mesh, look: String, at: Transform3D) -> void:
 	var piece := MeshInstance3D.new()
 	piece.mesh = mesh
-	piece.material_override = _material(look)
+	BikeLooks.dress(piece, look, paint if look == "paint" else Color(0, 0, 0, 0), ghost)
 	piece.transform = at
 	piece.layers = HEAD_LAYER
 	attachment.add_child(piece)
-
-
-func _material(look: String) -> StandardMaterial3D:
-	var colour := paint if look == "paint" else Color(0, 0, 0, 0)
-	return BikeLooks.ghost_material(look, colour) if ghost else BikeLooks.material(look, colour)

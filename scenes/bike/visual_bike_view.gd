@@ -240,7 +240,7 @@ func _build_swingarm() -> void:
 	coil.height = _shock_rest_length
 	_shock = MeshInstance3D.new()
 	_shock.mesh = coil
-	_shock.material_override = BikeLooks.material("spring")
+	BikeLooks.dress(_shock, "spring", Color(0, 0, 0, 0), ghost)
 	_shock.top_level = true
 	_shock.name = "shock_spring"
 	add_child(_shock)
@@ -376,11 +376,7 @@ func _add(body: int, mesh: Mesh, look: String, world_at_rest: Transform3D) -> vo
 	var node := MeshInstance3D.new()
 	node.mesh = mesh
 	var colour := _paint if look == "paint" else Color(0, 0, 0, 0)
-	if ghost:
-		node.material_override = BikeLooks.ghost_material(look, colour)
-		node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-	else:
-		node.material_override = BikeLooks.material(look, colour)
+	BikeLooks.dress(node, look, colour, ghost)
 	node.top_level = true
 	node.name = "%s_%d" % [look, _pieces.size()]
 	add_child(node)

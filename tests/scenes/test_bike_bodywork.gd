@@ -2,7 +2,7 @@ extends TestCase
 ## A bike's looks are data: its bodywork (a BikeBodywork file) is drawn as authored on the
 ## bike it was drawn on, fitted to a bike of another size and painted in the bike's own
 ## colour; a description naming something that is not usable bodywork draws the standard
-## bodywork, with an error saying why.
+## bodywork, with an error saying why. A ghost is see-through all over and casts no shadow.
 
 const GAME := preload("res://scenes/game/game.tscn")
 const LEVEL := "res://scenes/levels/test_level/test_level.tscn"
@@ -170,3 +170,32 @@ func test_a_rounded_box_has_flat_faces_and_rounded_corners() -> void:
 	assert_almost_eq(widest, Vector3.ONE * 0.5, Vector3.ONE * 1e-3, "a metre each way")
 	assert_lt(farthest, sqrt(3.0) / 2.0 - 0.05, "its corners rounded off")
 	assert_gt(farthest, 0.6, "squarer than a sphere")
+
+
+func test_a_ghost_is_see_through_all_over_and_casts_no_shadow() -> void:
+	for key: String in Bikes.keys():
+		var level := FlatLevel.create()
+		var bike := BikeSimulation.new()
+		bike.bike = Bikes.description(key)
+		level.add_child(bike)
+		var view := VisualBikeView.new()
+		view.ghost = true
+		view.posed_by_recording = true
+		view.simulation_path = ^".."
+		bike.add_child(view)
+		add_child(level)
+		await wait_frames(2)
+		var pieces := view.find_children("*", "GeometryInstance3D", true, false)
+		assert_gt(pieces.size(), 20, "%s: the bike and its rider are drawn" % key)
+		for piece: GeometryInstance3D in pieces:
+			if not piece.is_visible_in_tree():
+				continue
+			var where := "%s: %s" % [key, piece.name]
+			assert_eq(piece.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_OFF, where)
+			var material := piece.material_override as BaseMaterial3D
+			if material == null and piece is MeshInstance3D:
+				material = (piece as MeshInstance3D).mesh.surface_get_material(0) as BaseMaterial3D
+			assert_not_null(material, where)
+			if material != null:
+				assert_ne(material.transparency, BaseMaterial3D.TRANSPARENCY_DISABLED, where)
+		level.free()
