@@ -8,7 +8,9 @@ extends MeshInstance3D
 ## deceleration and lean ask for (its speed's change and its lean, against the bike's
 ## `tyre_friction`): the simulated tyres grip without creeping until they slide, so a
 ## stop at 0.9 g marks the road through the grip it uses, as a real tyre's creep does.
-## The newest MAX_SEGMENTS pieces of mark are kept; the oldest go first.
+## A mark fades in over its first FADE_PIECES pieces and out over its last, and its edges
+## are soft (the rubber is laid thickest in the middle of the contact patch). The newest
+## MAX_SEGMENTS pieces of mark are kept; the oldest go first.
 
 ## Sliding faster than this (m/s) marks the ground; faster than SMOKE_SLIP it smokes.
 const MARK_SLIP := 1.2
@@ -28,14 +30,22 @@ const LIFT := 0.012
 const FAINT := 0.25
 const DARK := 0.8
 const RUBBER := Color(0.04, 0.04, 0.045)
+## Pieces over which a mark fades in at its start and out at its end.
+const FADE_PIECES := 4
 
 ## The bike whose tyres mark the ground.
 @export var bike: BikeSimulation
 
 var _last: Array = [null, null]
-## Each piece of mark as four corners and an opacity, oldest first.
+## Each piece of mark as four corners and its opacity where it starts and where it ends
+## (a mark's pieces meet at the same opacity), oldest first; `_serial` numbers them, so a
+## mark's pieces are found however many old ones have gone since.
 var _pieces: Array[PackedVector3Array] = []
+var _start_opacity: PackedFloat32Array = []
 var _opacity: PackedFloat32Array = []
+var _first_serial := 0
+## Per wheel: the serial numbers of the mark it is laying (empty: none).
+var _run: Array[PackedInt64Array] = [PackedInt64Array(), PackedInt64Array()]
 var _changed := false
 var _smoke: Array[CPUParticles3D] = []
 var _slowing := StepRate.new()
@@ -52,6 +62,7 @@ func _ready() -> void:
 	material.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
 	material.cull_mode = BaseMaterial3D.CULL_DISABLED
 	material.roughness = 0.95
+	material.albedo_texture = _soft_edges()
 	material_override = material
 	for wheel in 2:
 		var smoke := Puffs.cloud(Puffs.SMOKE)
@@ -65,6 +76,11 @@ func piece_count() -> int:
 	return _pieces.size()
 
 
+## Piece `index`'s (oldest first) opacity where it starts and where it ends.
+func piece_opacity(index: int) -> Vector2:
+	return Vector2(_start_opacity[index], _opacity[index])
+
+
 ## Whether wheel `wheel` (0 rear, 1 front) smokes now.
 func smoking(wheel: int) -> bool:
 	return _smoke[wheel].emitting
@@ -73,7 +89,9 @@ func smoking(wheel: int) -> bool:
 ## Forgets every mark (a new ride on the same ground).
 func clear() -> void:
 	_pieces.clear()
+	_start_opacity.clear()
 	_opacity.clear()
+	_run = [PackedInt64Array(), PackedInt64Array()]
 	_last = [null, null]
 	_changed = true
 
@@ -122,6 +140,7 @@ func follow(tyres: Array[Vector4], grounded: Array[bool], grip := 0.0) -> void:
 		var working := grounded[wheel] and grip > MARK_GRIP
 		if slide <= MARK_SLIP and not working:
 			_last[wheel] = null
+			_end_run(wheel)
 			continue
 		if _last[wheel] == null:
 			_last[wheel] = at
@@ -132,20 +151,62 @@ func follow(tyres: Array[Vector4], grounded: Array[bool], grip := 0.0) -> void:
 		var sliding := clampf((slide - MARK_SLIP) / (SMOKE_SLIP * 2.0), 0.0, 1.0)
 		var gripping := clampf((grip - MARK_GRIP) / (1.0 - MARK_GRIP), 0.0, 1.0)
 		var strength := maxf(sliding, gripping)
-		_add_piece(from, at, lerpf(FAINT, DARK, strength))
+		_add_piece(wheel, from, at, lerpf(FAINT, DARK, strength))
 		_last[wheel] = at
 	if _changed:
 		_rebuild()
 
 
-func _add_piece(from: Vector3, to: Vector3, opacity: float) -> void:
+func _add_piece(wheel: int, from: Vector3, to: Vector3, opacity: float) -> void:
 	var across := (to - from).cross(Vector3.UP).normalized() * WIDTH / 2.0
+	var run := _run[wheel]
+	var fade_in := minf(float(run.size() + 1) / FADE_PIECES, 1.0)
+	var previous := _index_of(run[-1]) if not run.is_empty() else -1
 	_pieces.append(PackedVector3Array([from - across, from + across, to + across, to - across]))
-	_opacity.append(opacity)
+	_start_opacity.append(_opacity[previous] if previous >= 0 else 0.0)
+	_opacity.append(opacity * fade_in)
+	run.append(_first_serial + _pieces.size() - 1)
 	if _pieces.size() > MAX_SEGMENTS:
 		_pieces.pop_front()
+		_start_opacity.remove_at(0)
 		_opacity.remove_at(0)
+		_first_serial += 1
 	_changed = true
+
+
+## The wheel's mark ended: its last pieces fade out to nothing at its end.
+func _end_run(wheel: int) -> void:
+	var run := _run[wheel]
+	var count := mini(run.size(), FADE_PIECES)
+	for back in count:
+		var index := _index_of(run[run.size() - 1 - back])
+		if index < 0:
+			break
+		_opacity[index] *= float(back) / count
+		_start_opacity[index] *= float(back + 1) / count
+		_changed = true
+	_run[wheel] = PackedInt64Array()
+
+
+## Where piece `serial` is in `_pieces` now (-1: it has gone).
+func _index_of(serial: int) -> int:
+	var index := serial - _first_serial
+	return index if index >= 0 and index < _pieces.size() else -1
+
+
+## A strip's texture across the mark: opaque in the middle, fading to nothing at both
+## edges.
+static func _soft_edges() -> GradientTexture2D:
+	var gradient := Gradient.new()
+	gradient.offsets = PackedFloat32Array([0.0, 0.3, 0.7, 1.0])
+	gradient.colors = PackedColorArray(
+		[Color(1, 1, 1, 0), Color(1, 1, 1, 1), Color(1, 1, 1, 1), Color(1, 1, 1, 0)]
+	)
+	var texture := GradientTexture2D.new()
+	texture.gradient = gradient
+	texture.width = 32
+	texture.height = 1
+	return texture
 
 
 func _rebuild() -> void:
@@ -157,16 +218,21 @@ func _rebuild() -> void:
 	var vertices := PackedVector3Array()
 	var colours := PackedColorArray()
 	var normals := PackedVector3Array()
+	var uvs := PackedVector2Array()
+	# Corners 0 and 1 are where a piece starts, 2 and 3 where it ends; 0 and 3 on one edge.
+	var across := [0.0, 1.0, 1.0, 0.0]
 	for i in _pieces.size():
 		var quad := _pieces[i]
-		var colour := Color(RUBBER, _opacity[i])
+		var opacity := [_start_opacity[i], _start_opacity[i], _opacity[i], _opacity[i]]
 		for corner: int in [0, 1, 2, 0, 2, 3]:
 			vertices.append(to_local(quad[corner]))
-			colours.append(colour)
+			colours.append(Color(RUBBER, opacity[corner]))
 			normals.append(Vector3.UP)
+			uvs.append(Vector2(across[corner], 0.5))
 	var arrays := []
 	arrays.resize(Mesh.ARRAY_MAX)
 	arrays[Mesh.ARRAY_VERTEX] = vertices
 	arrays[Mesh.ARRAY_NORMAL] = normals
 	arrays[Mesh.ARRAY_COLOR] = colours
+	arrays[Mesh.ARRAY_TEX_UV] = uvs
 	array_mesh.add_surface_from_arrays(Mesh.PRIMITIVE_TRIANGLES, arrays)

@@ -1,7 +1,8 @@
 extends TestCase
 ## Tyre marks and smoke answer how fast a tyre slides and how much grip it uses: a sliding
 ## tyre on the ground marks it, and so does one braking near its grip; a rolling or lifted
-## one does not; a hard slide smokes; the marks kept are bounded.
+## one does not; a hard slide smokes; a mark fades in and out and has soft edges; the
+## marks kept are bounded.
 
 var _marks: TyreMarks
 
@@ -61,6 +62,26 @@ func test_a_hard_slide_smokes_and_a_light_one_does_not() -> void:
 	assert_false(_marks.smoking(1), "the front rolls")
 	_slide_rear(TyreMarks.MARK_SLIP + 0.5, 1.0)
 	assert_false(_marks.smoking(0), "light: no smoke")
+
+
+func test_a_mark_fades_in_at_its_start_and_out_at_its_end_and_its_edges_are_soft() -> void:
+	_slide_rear(2.5, 4.0)
+	_slide_rear(0.0, 0.5)
+	var count := _marks.piece_count()
+	assert_gt(count, 2 * TyreMarks.FADE_PIECES, "a mark")
+	assert_eq(_marks.piece_opacity(0).x, 0.0, "it starts from nothing")
+	assert_eq(_marks.piece_opacity(count - 1).y, 0.0, "and ends in nothing")
+	var middle := _marks.piece_opacity(count / 2)
+	assert_almost_eq(middle.x, middle.y, 1e-6, "full in the middle")
+	assert_gt(middle.y, TyreMarks.FAINT)
+	for i in range(1, count):
+		var meet := _marks.piece_opacity(i).x - _marks.piece_opacity(i - 1).y
+		assert_almost_eq(meet, 0.0, 1e-6, "piece %d meets the one before" % i)
+	var texture := (_marks.material_override as StandardMaterial3D).albedo_texture
+	var across := (texture as GradientTexture2D).gradient
+	assert_eq(across.sample(0.0).a, 0.0, "an edge is soft")
+	assert_eq(across.sample(0.5).a, 1.0, "the middle is dark")
+	assert_eq(across.sample(1.0).a, 0.0, "so is the other edge")
 
 
 func test_the_oldest_marks_go_first() -> void:
