@@ -36,7 +36,8 @@ const LOOK_DOWN := 1.2
 
 ## Drawn see-through (a ghost).
 var ghost := false
-## The bike's paint, which the helmet's stripe and spoiler wear (set before `build`).
+## The bike's paint, which the helmet's stripe and spoiler wear and the jacket is dyed
+## after, so a rider reads as the bike's at a glance (set before `build`).
 var paint := Color.WHITE
 
 var _skeleton: Skeleton3D
@@ -92,6 +93,7 @@ func build(frame: BikeRestFrame) -> void:
 		hand = forearm[1]
 	}
 	var mesh := RiderMesh.new()
+	mesh.colours = {jacket = jacket_colour(paint)}
 	for side in SIDES:
 		var at := {}
 		for joint: String in joints:
@@ -312,6 +314,14 @@ func _skin_torso(mesh: RiderMesh, local: Callable, hip: Vector3, along: Vector3)
 		Vector3.RIGHT,
 		1.25
 	)
+
+
+## The jacket of a rider of a bike painted `bike_paint`: the paint as a textile wears it,
+## a shade darker and less saturated than the bike's gloss.
+static func jacket_colour(bike_paint: Color) -> Color:
+	var dyed := bike_paint.darkened(0.15)
+	dyed.s *= 0.9
+	return dyed
 
 
 ## The skin, bound to the skeleton (its skin made from the rest pose).

@@ -16,6 +16,10 @@ const CAP_RINGS := 3
 ## skin is shared between the two bones meeting at it.
 const BLEND_RADII := 1.2
 
+## Colours that replace a look's own (BikeLooks.COLOURS), by look: the rider's jacket in
+## the colours of the bike ridden.
+var colours := {}
+
 ## The triangles collected so far, and how many vertices they have.
 var _tool := SurfaceTool.new()
 var _count := 0
@@ -176,7 +180,7 @@ static func _add_cap(
 func _emit(look: String, rings: Array[Dictionary], side: Vector3, widen: float) -> void:
 	var tool := _tool
 	var first := _count
-	var colour: Color = BikeLooks.COLOURS[look]
+	var colour: Color = colours.get(look, BikeLooks.COLOURS[look])
 	for ring: Dictionary in rings:
 		var along := (ring.along as Vector3).normalized()
 		var across := side - along * side.dot(along)

@@ -2,6 +2,7 @@ extends TestCase
 ## The skinned rider is posed by IK on the simulated bodies: hands on the simulated
 ## hands, feet on the simulated feet, elbows and knees bent towards the simulated ones,
 ## the head turned into a turn; after a crash the drawn rider follows the tumbling bodies.
+## The jacket is dyed after the bike's paint.
 
 ## How close (m) the IK puts a hand or foot to where the simulation has it.
 const REACH := 0.02
@@ -65,14 +66,11 @@ func test_the_skin_is_bound_to_a_skeleton_of_two_armed_two_legged_rider() -> voi
 	var vertices := (arrays[Mesh.ARRAY_VERTEX] as PackedVector3Array).size()
 	assert_eq((arrays[Mesh.ARRAY_BONES] as PackedInt32Array).size(), 4 * vertices, "4 bones each")
 	assert_eq((arrays[Mesh.ARRAY_WEIGHTS] as PackedFloat32Array).size(), 4 * vertices, "weights")
-	var looks := {}
-	for colour: Color in arrays[Mesh.ARRAY_COLOR] as PackedColorArray:
-		for look: String in BikeLooks.COLOURS:
-			var near: Color = BikeLooks.COLOURS[look]
-			if Vector4(colour.r - near.r, colour.g - near.g, colour.b - near.b, 0).length() < 0.01:
-				looks[look] = true
+	var colours := arrays[Mesh.ARRAY_COLOR] as PackedColorArray
+	var worn := BikeLooks.COLOURS.duplicate()
+	worn.jacket = RiderFigure.jacket_colour(_game.bike.bike.paint)
 	for look: String in ["jacket", "trousers", "boots", "gloves"]:
-		assert_true(looks.has(look), "%s in the skin's colours" % look)
+		assert_true(_has_colour(colours, worn[look]), "%s in the skin's colours" % look)
 	assert_false(body.skeleton.is_empty(), "the skin follows the skeleton")
 	assert_eq(_inward_faces(mesh), 0, "every face faces outwards")
 	assert_not_null(skeleton.get_node_or_null(^"LimbIK") as TwoBoneIK3D, "limbs by TwoBoneIK3D")
@@ -162,3 +160,23 @@ func test_the_helmet_wears_the_bikes_paint_and_a_visor() -> void:
 	assert_has(colours, _game.bike.bike.paint, "a stripe in the bike's paint")
 	assert_has(colours, BikeLooks.COLOURS.visor, "a visor")
 	assert_has(colours, BikeLooks.COLOURS.helmet, "a shell")
+
+
+func test_the_jacket_is_dyed_after_the_bikes_paint() -> void:
+	var body := _view().rider().skeleton().get_node(^"Body") as MeshInstance3D
+	var colours := body.mesh.surface_get_arrays(0)[Mesh.ARRAY_COLOR] as PackedColorArray
+	var jacket := RiderFigure.jacket_colour(_game.bike.bike.paint)
+	assert_true(_has_colour(colours, jacket), "the jacket in the bike's colours")
+	assert_false(_has_colour(colours, BikeLooks.COLOURS.jacket), "not the stock blue")
+	assert_true(_has_colour(colours, BikeLooks.COLOURS.trousers), "the trousers stay dark")
+	var dyed := RiderFigure.jacket_colour(Color(0.38, 0.72, 0.08))
+	assert_lt(dyed.v, 0.72, "a shade darker than the gloss")
+	assert_almost_eq(dyed.h, Color(0.38, 0.72, 0.08).h, 0.01, "the same hue")
+
+
+## Whether `colours` (a mesh's, stored at 8 bits a channel) hold one within 0.01 of `near`.
+func _has_colour(colours: PackedColorArray, near: Color) -> bool:
+	for colour in colours:
+		if Vector3(colour.r - near.r, colour.g - near.g, colour.b - near.b).length() < 0.01:
+			return true
+	return false
