@@ -45,6 +45,9 @@ func _ready() -> void:
 	environment.environment = ENVIRONMENT
 	_viewport.add_child(environment)
 	_viewport.add_child(SUN.instantiate())
+	var horizon := Horizon.new()
+	horizon.name = "Horizon"
+	_viewport.add_child(horizon)
 	show_level(str(Settings.get_value(&"level")))
 	show_bike(str(Settings.get_value(&"bike")))
 	resized.connect(func() -> void: _viewport.render_target_update_mode = SubViewport.UPDATE_ONCE)

@@ -3,7 +3,8 @@ extends TestCase
 ## tone mapping, distance fog), a sun whose shadows the player sees, and surfaces with a
 ## texture (grass, asphalt, concrete), made procedurally so no image can go missing. A sun
 ## behind the chase camera throws the bike's shadow straight behind the bike, out of view:
-## the game once rode a whole phase like that, shadows on and none to be seen.
+## the game once rode a whole phase like that, shadows on and none to be seen. Clouds in
+## the sky, and land out to hills on the horizon round every level.
 
 const GAME := preload("res://scenes/game/game.tscn")
 const ENVIRONMENT := "res://scenes/world/outdoor_environment.tres"
@@ -97,3 +98,25 @@ func _assert_every_sampler_has_a_texture(surface: ShaderMaterial, path: String) 
 		assert_not_null(texture, "%s: %s has a texture" % [path, uniform.name])
 		relief += int(texture is NoiseTexture2D and (texture as NoiseTexture2D).as_normal_map)
 	assert_gt(relief, 0, "%s has relief" % path)
+
+
+func test_the_sky_has_clouds_and_the_land_runs_out_to_hills_on_the_horizon() -> void:
+	var world := _game.get_node(^"Environment") as WorldEnvironment
+	var sky := world.environment.sky.sky_material as ShaderMaterial
+	assert_not_null(sky, "a sky of our own shader")
+	if sky != null:
+		assert_not_null(sky.get_shader_parameter(&"cloud_noise"), "clouds")
+	var horizon := _game.get_node(^"Horizon") as Horizon
+	assert_not_null(horizon, "the game stands every level in the land")
+	var mesh := Horizon.build_mesh(70.0, 7)
+	var vertices := mesh.surface_get_arrays(0)[Mesh.ARRAY_VERTEX] as PackedVector3Array
+	var normals := mesh.surface_get_arrays(0)[Mesh.ARRAY_NORMAL] as PackedVector3Array
+	var tallest := 0.0
+	for i in vertices.size():
+		var flat := Vector2(vertices[i].x, vertices[i].z).length()
+		if flat <= Horizon.FLAT_RADIUS:
+			assert_eq(vertices[i].y, 0.0, "flat under and round the level")
+		tallest = maxf(tallest, vertices[i].y)
+		assert_gt(normals[i].y, 0.0, "it faces the sky")
+	assert_between(tallest, 35.0, 70.0, "hills, under the height asked")
+	assert_eq(horizon.find_children("*", "CollisionObject3D").size(), 0, "drawn only")
