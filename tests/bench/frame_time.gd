@@ -5,8 +5,10 @@ extends Node
 ## race's posing, the skinned rider's IK), and the drawing of the ghost and of the skinned
 ## rider as the paired difference in wall-clock frame time between alternating blocks of
 ## frames with it shown and hidden, the game paused so nothing else changes (95 % interval);
-## then each graphics quality preset's frame time on the same still picture, in blocks
-## taken in turn, with its paired difference from low. The features are measured at low.
+## then the world's drawing the same way (the land and hills round the level, the clouded
+## sky against a plain one of the same colours, the track's kerbs and edge lines), then
+## each graphics quality preset's frame time on the same still picture, in blocks taken in
+## turn, with its paired difference from low. The features are measured at low.
 ## Run under Xvfb by tools/frame-time.sh; the ghost raced is the bot's lap from the
 ## GDScript suites (build/ghosts/track.ghost), in scratch settings.
 ##
@@ -49,6 +51,7 @@ func _ready() -> void:
 	get_tree().paused = true
 	var drawing := await _drawing_cost(_game.ghost_race.ghost_view(), blocks)
 	var rider_drawing := await _drawing_cost(_live_view().rider(), blocks)
+	var world := await _world_costs(blocks)
 	# Half the rounds: three presets a round, each block a few seconds in software.
 	var presets := await _preset_costs(maxi(blocks / 2, 3))
 	get_tree().paused = false
@@ -75,6 +78,18 @@ func _ready() -> void:
 				rider_drawing[0],
 				rider_drawing[1],
 			]
+		)
+	)
+	var figures: Array = [controller]
+	for part: String in ["horizon", "sky", "kerbs"]:
+		figures.append_array(world[part])
+	print(
+		(
+			(
+				"frame time of the world (%s): the land and hills %+.2f ± %.2f ms, the clouded sky"
+				+ " %+.2f ± %.2f ms against a plain one, the kerbs and edge lines %+.2f ± %.2f ms"
+			)
+			% figures
 		)
 	)
 	var by_preset := PackedStringArray()
@@ -163,15 +178,52 @@ func _preset_costs(pairs: int) -> Dictionary:
 	return costs
 
 
-## What drawing `node` costs: frame time (ms) with it shown minus hidden, over `pairs`
-## pairs of blocks in alternating order, and the 95 % half-width.
+## What the world's drawing costs, each part as `_paired_cost` measures it: the Horizon,
+## the clouded sky against the procedural sky of the same colours it replaced, and the
+## track's kerbs and edge lines. [mean, half-width] each.
+func _world_costs(pairs: int) -> Dictionary:
+	var horizon := _game.get_node(^"Horizon") as Node3D
+	var sky := (_game.get_node(^"Environment") as WorldEnvironment).environment.sky
+	var clouded := sky.sky_material
+	var plain := ProceduralSkyMaterial.new()
+	var sky_shader := (clouded as ShaderMaterial).shader.get_rid()
+	plain.sky_top_color = RenderingServer.shader_get_parameter_default(sky_shader, &"top_colour")
+	plain.sky_horizon_color = RenderingServer.shader_get_parameter_default(
+		sky_shader, &"horizon_colour"
+	)
+	plain.ground_horizon_color = plain.sky_horizon_color
+	var painted: Array[Node3D] = []
+	for name: String in ["EdgeLineLeft", "EdgeLineRight", "KerbLeft", "KerbRight"]:
+		painted.append(_game.level.get_node(name) as Node3D)
+	var result := {}
+	result.horizon = await _paired_cost(func(on: bool) -> void: horizon.visible = on, pairs)
+	result.sky = await _paired_cost(
+		func(on: bool) -> void: sky.sky_material = clouded if on else plain, pairs
+	)
+	result.kerbs = await _paired_cost(
+		func(on: bool) -> void:
+			for node in painted:
+				node.visible = on,
+		pairs
+	)
+	sky.sky_material = clouded
+	return result
+
+
+## What drawing `node` costs (`_paired_cost` of showing it).
 func _drawing_cost(node: Node3D, pairs: int) -> Array[float]:
+	return await _paired_cost(func(shown: bool) -> void: node.visible = shown, pairs)
+
+
+## What `show(true)` costs against `show(false)`: frame time (ms) with it on minus off,
+## over `pairs` pairs of blocks in alternating order, and the 95 % half-width.
+func _paired_cost(show: Callable, pairs: int) -> Array[float]:
 	var differences := PackedFloat64Array()
 	for pair in pairs:
 		var times := [0.0, 0.0]
 		# Alternate which comes first, so a drift does not favour either.
 		for shown: bool in [true, false] if pair % 2 == 0 else [false, true]:
-			node.visible = shown
+			show.call(shown)
 			# One frame to settle on the new picture, then the block.
 			await get_tree().process_frame
 			var started := Time.get_ticks_usec()
@@ -179,6 +231,7 @@ func _drawing_cost(node: Node3D, pairs: int) -> Array[float]:
 				await get_tree().process_frame
 			times[int(shown)] = (Time.get_ticks_usec() - started) / 1000.0 / BLOCK
 		differences.append(times[1] - times[0])
+	show.call(true)
 	return _mean_and_half_width(differences)
 
 
