@@ -2,7 +2,7 @@
 # `make play` and `make test` work on a bare machine. See README.md.
 SHELL := bash
 .DEFAULT_GOAL := help
-.PHONY: help setup build play test bench experiment train clean-learn export export-check export-windows export-check-windows clean
+.PHONY: help setup build play test pictures bench experiment train clean-learn export export-check export-windows export-check-windows clean
 
 help: ## List the targets
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | awk -F':.*## ' '{printf "  make %-21s %s\n", $$1, $$2}'
@@ -21,6 +21,9 @@ play: build ## Launch the game window
 
 test: build ## Run every check: Rust fmt/clippy/tests, gdlint, GDScript suites, screenshots, export
 	@tools/test.sh
+
+pictures: build ## Draw every picture the docs show from the game as it is now into docs/images/ (tools/pictures.sh)
+	@tools/pictures.sh --docs
 
 bench: build ## Print the performance figures, planning and frame time (see docs/benchmarks.md); BIKE=FILE for another bike
 	@tools/cargo run --release --quiet -p cpbp-core --bin cpbp-bench -- $(if $(BIKE),--bike $(abspath $(BIKE)))

@@ -100,87 +100,15 @@ step "experiment reproducibility" .venv/bin/python -m unittest -v cpbp_experimen
 # On a Dask cluster of two workers: the driver, then a worker process killed part-way;
 # nothing lost or doubled, and the rows equal the local pool's.
 step "experiment on a Dask cluster" .venv/bin/python -m unittest -v cpbp_experiment.tests.check_cluster
-screenshots() {
-  local game=res://scenes/game/game.tscn levels=res://scenes/levels
-  local lessons=res://scenes/challenges/lessons
-  tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/start-menu.png \
-    && tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/school.png 30 \
-         "--copy=res://tests/fixtures/medals/some_medals.cfg>user://test-medals.cfg" \
-    && tools/screenshot.sh res://scenes/ui/start_menu.tscn build/screenshots/level-challenges.png 30 \
-         "--copy=res://tests/fixtures/medals/level_medals.cfg>user://test-medals.cfg" \
-    && tools/screenshot.sh $game build/screenshots/lesson-briefing.png 60 \
-         --set=challenge_path=$lessons/counter_steer.tres \
-    && tools/screenshot.sh $game build/screenshots/lesson-medal.png 790 \
-         --set=challenge_path=$lessons/ride_off.tres --hold=throttle:0.5@0-117 \
-         --hold=brake:1.0@689-790 \
-    && tools/screenshot.sh $game build/screenshots/lesson-failed.png 300 \
-         --set=challenge_path=$lessons/ride_off.tres --hold=throttle:0.5 \
-    && tools/screenshot.sh $game build/screenshots/test-level.png 150 \
-         --set=level_path=$levels/test_level/test_level.tscn \
-    && tools/screenshot.sh $game build/screenshots/track.png 240 \
-         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
-    && tools/screenshot.sh $game build/screenshots/telemetry.png 240 \
-         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
-         --setting=telemetry=true --setting=ui_scale=125 \
-    && tools/screenshot.sh $game build/screenshots/track-low.png 240 \
-         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 \
-         --setting=graphics_quality=low \
-    && tools/screenshot.sh $game build/screenshots/skate-park.png 150 \
-         --set=level_path=$levels/skate_park/skate_park.tscn --tap=next_spawn@5 --hold=throttle:0.6 \
-    && tools/screenshot.sh $game build/screenshots/tyre-marks.png 235 \
-         --set=level_path=$levels/track/track.tscn --hold=throttle:1.0@5-150 \
-         --hold=brake:1.0@150-235 \
-    && tools/screenshot.sh $game build/screenshots/crash.png 214 \
-         --set=level_path=$levels/track/track.tscn --call=Bike:set_controller:manual@140 \
-         --hold=throttle:1.0@5-150 --hold=steer_right:1.0@150-175 \
-    && tools/screenshot.sh $game build/screenshots/rewind.png 345 \
-         --set=level_path=$levels/track/track.tscn --call=Bike:set_controller:manual@200 \
-         --hold=throttle:0.6@0-400 --hold=steer_left:0.5@210-220 --tap=rewind@330 \
-    && tools/screenshot.sh $game build/screenshots/dust.png 285 \
-         --set=level_path=$levels/track/track.tscn --tap=next_spawn@5 --tap=next_spawn@10 \
-         --hold=throttle:1.0@15- \
-    && tools/screenshot.sh $game build/screenshots/pause-menu.png 60 \
-         --set=level_path=$levels/track/track.tscn --tap=pause@40 \
-    && tools/screenshot.sh $game build/screenshots/lab.png 70 \
-         --set=level_path=$levels/track/track.tscn --tap=pause@40 --call=PauseMenu:open_lab@45 \
-    && tools/screenshot.sh $game build/screenshots/controls.png 70 \
-         --set=level_path=$levels/track/track.tscn --tap=pause@40 \
-         --call=PauseMenu:open_controls@45 \
-    && tools/screenshot.sh $game build/screenshots/camera-low-side.png 200 \
-         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 --hold=steer_right:0.4 \
-         --tap=cycle_camera@5 \
-    && tools/screenshot.sh $game build/screenshots/camera-helmet.png 200 \
-         --set=level_path=$levels/track/track.tscn --hold=throttle:0.7 --hold=steer_right:0.4 \
-         --tap=cycle_camera@5 --tap=cycle_camera@8 \
-    && tools/screenshot.sh $game build/screenshots/replay.png 330 \
-         --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 --hold=rider_back:0.4 \
-         --tap=pause@200 --tap=ui_down@205 --tap=ui_down@208 --tap=ui_accept@212 \
-    && tools/screenshot.sh $game build/screenshots/rider-foot-down.png 400 \
-         --set=level_path=$levels/skate_park/skate_park.tscn --hold=throttle:0.5@0-100 \
-         --hold=brake:0.6@100- --hold=camera_left:0.5@150-175 \
-    && tools/screenshot.sh $game build/screenshots/ghost-race.png 190 \
-         --set=level_path=$levels/track/track.tscn --hold=throttle:0.6 \
-         "--copy=res://build/ghosts/track.ghost>user://test-ghosts/track.ghost" \
-    && bike_gallery
-}
-
-# Each bike a player chooses, leaning into the track's first bend (the README's gallery).
-bike_gallery() {
-  local bike
-  for bike in street_390 dirt_125 sport_600; do
-    tools/screenshot.sh res://scenes/game/game.tscn build/screenshots/bike-$bike.png 200 \
-      --set=level_path=res://scenes/levels/track/track.tscn --setting=bike=$bike \
-      --hold=throttle:0.7 --hold=steer_right:0.4 --tap=cycle_camera@5 || return 1
-  done
-}
-
 # Screenshots of the menus (the School on a first launch and with medals, a level's
 # challenges), a lesson's briefing, medal and failed try, the levels, the telemetry
 # overlay at 125 %, the Lab, the Controls screen, cameras, a full
 # brake's tyre marks, a crash's sparks, a fall rewound, dust on the track's gravel,
-# replay, ghost race and each bike under Xvfb, failing on a blank picture (the ghost race races the lap the bot
-# rode in the GDScript suites).
-step "screenshots (Xvfb)"   screenshots
+# replay, ghost race, the planner's trajectories, each bike and the riders' stances and
+# kits under Xvfb (tools/pictures.sh; `make pictures` puts them in docs/images/), failing
+# on a blank picture or on a picture in docs/images/ that nothing draws (the ghost race
+# races the lap the bot rode in the GDScript suites).
+step "screenshots (Xvfb)"   tools/pictures.sh
 # Each bike's engine recorded by Godot's movie writer sounds at the firing frequency of its
 # layout (a four-stroke single, a two-stroke single, an inline four), rising with speed;
 # a paused game is exactly silent.

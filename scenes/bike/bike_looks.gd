@@ -17,6 +17,7 @@ const COLOURS := {
 	rubber = Color(0.05, 0.05, 0.05),
 	lamp = Color(1.0, 0.97, 0.85),
 	chain = Color(0.3, 0.28, 0.26),
+	caliper = Color(0.85, 0.55, 0.1),
 	plate = Color(0.95, 0.85, 0.2),
 	trousers = Color(0.12, 0.13, 0.17),
 	boots = Color(0.05, 0.05, 0.05),
@@ -44,7 +45,9 @@ static func material(look: String, colour := Color(0, 0, 0, 0)) -> StandardMater
 	var made := StandardMaterial3D.new()
 	made.albedo_color = colour if colour.a > 0.0 else COLOURS.get(look, Color.MAGENTA)
 	made.roughness = (
-		0.35 if look in ["paint", "helmet", "visor", "metal", "exhaust", "chain"] else 0.8
+		0.35
+		if look in ["paint", "helmet", "visor", "metal", "exhaust", "chain", "caliper"]
+		else 0.8
 	)
 	made.metallic = 0.6 if look in ["metal", "exhaust", "visor"] else 0.0
 	if look == "visor":

@@ -14,6 +14,9 @@ var _simulation: BikeSimulation
 var _rest: Transform3D
 ## Every body's transform at rest.
 var _bodies: Array[Transform3D] = []
+## The bike's up and right at rest in the frame body's own axes, to read its lean.
+var _frame_up := Vector3.UP
+var _frame_right := Vector3.RIGHT
 
 
 func _init(simulation: BikeSimulation) -> void:
@@ -21,6 +24,9 @@ func _init(simulation: BikeSimulation) -> void:
 	_rest = simulation.global_transform
 	for body in simulation.get_body_count():
 		_bodies.append(simulation.get_body_transform(body))
+	var frame_axes := _bodies[BikeSimulation.FRAME].basis.orthonormalized().inverse()
+	_frame_up = frame_axes * basis().y
+	_frame_right = frame_axes * right()
 
 
 ## A body's transform at rest (world).
@@ -83,3 +89,12 @@ func capsule_ends(body: int, first_towards: Vector3) -> Array[Vector3]:
 	push_error("BikeRestFrame: body %d has no capsule" % body)
 	var fallback: Array[Vector3] = [Vector3.ZERO, Vector3.UP]
 	return fallback
+
+
+## The bike's lean (radians, positive to the right, as BikeSimulation.get_lean) when its
+## frame body is at `frame` (world): a recording's, which keeps the bodies alone.
+func lean_of(frame: Transform3D) -> float:
+	var up := (frame.basis * _frame_up).normalized()
+	var bike_right := frame.basis * _frame_right
+	var level_right := (bike_right - Vector3.UP * bike_right.dot(Vector3.UP)).normalized()
+	return atan2(up.dot(level_right), up.dot(Vector3.UP))

@@ -33,12 +33,28 @@ const HEAD_LAYER := 1 << 19
 ## How far ahead of the head (m) the rider looks, along the front wheel, and how far down.
 const LOOK_AHEAD := 6.0
 const LOOK_DOWN := 1.2
+## The drawn stance (RiderStance) at its fullest: standing lifts the hips off the seat and
+## moves them forward over the pegs (m), the back bent forward over the bar (radians);
+## tucking bends the back down behind the clocks, the eyes still up the road; hanging off
+## moves the hips to the inside of the seat, rolls the back in, puts the inside knee out and
+## turns the head to look through the bend.
+const STAND_RISE := 0.24
+const STAND_FORWARD := 0.1
+const STAND_BEND := deg_to_rad(20.0)
+const TUCK_BEND := deg_to_rad(36.0)
+const TUCK_LOOK_DOWN := 0.3
+const HANG_SHIFT := 0.08
+const HANG_ROLL := deg_to_rad(14.0)
+const KNEE_OUT := 0.22
+const LOOK_INTO_BEND := 3.0
 
 ## Drawn see-through (a ghost).
 var ghost := false
 ## The bike's paint, which the helmet's stripe and spoiler wear and the jacket is dyed
 ## after, so a rider reads as the bike's at a glance (set before `build`).
 var paint := Color.WHITE
+## The kit the rider wears (RiderSkin.ROAD or MOTOCROSS; set before `build`).
+var gear := RiderSkin.ROAD
 
 var _skeleton: Skeleton3D
 var _ik: TwoBoneIK3D
@@ -93,7 +109,7 @@ func build(frame: BikeRestFrame) -> void:
 		hand = forearm[1]
 	}
 	var mesh := RiderMesh.new()
-	mesh.colours = {jacket = jacket_colour(paint)}
+	var skin := RiderSkin.new(mesh, _skeleton, gear, jacket_colour(paint))
 	for side in SIDES:
 		var at := {}
 		for joint: String in joints:
@@ -111,8 +127,11 @@ func build(frame: BikeRestFrame) -> void:
 		_limbs["arm" + s] = _limb(frame, "upper_arm" + s, side, arm_ends)
 		# The grip on the bar, which the hand holds while the simulated hand holds the bar.
 		_limbs["arm" + s].grip = frame.rest_of(FORK).affine_inverse() * frame.world_of(at.hand)
-		_skin_limbs(mesh, s, local, at)
-	_skin_torso(mesh, local, hip, along)
+		skin.limbs(s, local, at)
+	var torso := PackedVector3Array([local.call(hip - along * 0.03)])
+	for joint: String in ["spine", "chest", "neck"]:
+		torso.append(local.call(hip + along * float(SPINE[joint])))
+	skin.torso(torso)
 	_dress(mesh)
 	_set_up_ik()
 	_fork_forward = frame.rest_of(FORK).basis.inverse() * -frame.basis().z
@@ -123,10 +142,22 @@ func build(frame: BikeRestFrame) -> void:
 	_keep_the_pose()
 
 
-## Puts the rider on `bodies` (global transforms, in body order); `feet_down` lists the
-## soles (world) of the feet put down on the road, as {side, sole, up}.
-func pose(bodies: Array[Transform3D], feet_down: Array[Dictionary]) -> void:
-	_skeleton.global_transform = bodies[TORSO] * _skeleton_on_torso
+## Puts the rider on `bodies` (global transforms, in body order), holding `stance` over
+## them (none: as simulated); `feet_down` lists the soles (world) of the feet put down on
+## the road, as {side, sole, up}.
+func pose(
+	bodies: Array[Transform3D], feet_down: Array[Dictionary], stance: RiderStance = null
+) -> void:
+	var held := stance if stance != null else RiderStance.new()
+	var seated := bodies[TORSO] * _skeleton_on_torso
+	var up := seated.basis.y.normalized()
+	seated.origin += (
+		up * STAND_RISE * held.stand
+		- seated.basis.z.normalized() * STAND_FORWARD * held.stand
+		+ seated.basis.x.normalized() * HANG_SHIFT * held.hang
+	)
+	_skeleton.global_transform = seated
+	_bend_back(held)
 	_feet_down.clear()
 	for foot: Dictionary in feet_down:
 		_feet_down.append(foot.side)
@@ -144,10 +175,12 @@ func pose(bodies: Array[Transform3D], feet_down: Array[Dictionary]) -> void:
 		var root := _skeleton.global_transform * limb.root_rest as Vector3
 		if limb.has("grip") and holding < HOLDING:
 			end = bodies[FORK] * (limb.grip as Vector3)
+		if key == "leg" + _suffix(held.hang) and held.hang != 0.0:
+			# The inside knee out towards the road, the foot still on its peg.
+			middle += right * KNEE_OUT * held.hang - up * KNEE_OUT * 0.3 * absf(held.hang)
 		for foot: Dictionary in feet_down:
 			if key == "leg" + _suffix(foot.side):
-				var up: Vector3 = foot.up
-				end = (foot.sole as Vector3) + up * ANKLE_HEIGHT
+				end = (foot.sole as Vector3) + (foot.up as Vector3) * ANKLE_HEIGHT
 				# The knee bends forward over the foot put down.
 				middle = (root + end) / 2.0 + forward * 0.4
 		(limb.target as Node3D).global_position = end
@@ -156,10 +189,27 @@ func pose(bodies: Array[Transform3D], feet_down: Array[Dictionary]) -> void:
 		var bend := middle - (root + end) / 2.0
 		(limb.pole as Node3D).global_position = middle + bend.normalized() * 0.3
 	var head := _skeleton.global_transform * _skeleton.get_bone_global_rest(_bone_index("head"))
+	var look_down := lerpf(LOOK_DOWN, TUCK_LOOK_DOWN, held.tuck)
 	_look_target.global_position = (
-		head.origin + forward * LOOK_AHEAD - bodies[TORSO].basis.y.normalized() * LOOK_DOWN
+		head.origin
+		+ forward * LOOK_AHEAD
+		- bodies[TORSO].basis.y.normalized() * look_down
+		+ right * LOOK_INTO_BEND * held.hang
 	)
 	_skeleton.advance(0.0)
+
+
+## Bends the back for `stance`, half at the spine and half at the chest: forward (about
+## the skeleton's right; its forward is −z) to tuck or stand, and in to the bend (about
+## its forward).
+func _bend_back(stance: RiderStance) -> void:
+	var forward_bend := TUCK_BEND * stance.tuck + STAND_BEND * stance.stand
+	var roll := HANG_ROLL * stance.hang
+	var half := (
+		Quaternion(Vector3.RIGHT, -forward_bend / 2.0) * Quaternion(Vector3.BACK, -roll / 2.0)
+	)
+	for bone: String in ["spine", "chest"]:
+		_skeleton.set_bone_pose_rotation(_bone_index(bone), half)
 
 
 ## Where the rider's eyes are now (global), inside the helmet.
@@ -258,64 +308,6 @@ func _set_up_ik() -> void:
 		index += 1
 
 
-## The legs and arms (each a tube bending at the knee or elbow), boots and gloves.
-func _skin_limbs(mesh: RiderMesh, s: String, local: Callable, at: Dictionary) -> void:
-	var side := Vector3.RIGHT
-	var bone := func(bone_name: String) -> int: return _bone_index(bone_name + s)
-	mesh.add_tube(
-		"trousers",
-		PackedVector3Array([local.call(at.hip), local.call(at.knee), local.call(at.ankle)]),
-		PackedFloat32Array([0.085, 0.066, 0.055]),
-		PackedInt32Array([bone.call("thigh"), bone.call("shin")]),
-		side
-	)
-	var ankle: Vector3 = at.ankle
-	mesh.add_tube(
-		"boots",
-		PackedVector3Array(
-			[
-				local.call(ankle + Vector3(-0.07, -0.05, 0)),
-				local.call(ankle + Vector3(0.17, -0.07, 0))
-			]
-		),
-		PackedFloat32Array([0.055, 0.045]),
-		PackedInt32Array([bone.call("foot")]),
-		side
-	)
-	var hand: Vector3 = local.call(at.hand)
-	var elbow: Vector3 = local.call(at.elbow)
-	var reach := (hand - elbow).normalized()
-	mesh.add_tube(
-		"jacket",
-		PackedVector3Array([local.call(at.shoulder), elbow, hand - reach * 0.06]),
-		PackedFloat32Array([0.065, 0.052, 0.042]),
-		PackedInt32Array([bone.call("upper_arm"), bone.call("forearm")]),
-		side
-	)
-	mesh.add_tube(
-		"gloves",
-		PackedVector3Array([hand - reach * 0.07, hand + reach * 0.03]),
-		PackedFloat32Array([0.045, 0.045]),
-		PackedInt32Array([bone.call("hand")]),
-		side
-	)
-
-
-## The torso, wider than deep, from below the hips to the base of the neck.
-func _skin_torso(mesh: RiderMesh, local: Callable, hip: Vector3, along: Vector3) -> void:
-	var joints := PackedVector3Array([local.call(hip - along * 0.03)])
-	for joint: String in ["spine", "chest", "neck"]:
-		joints.append(local.call(hip + along * float(SPINE[joint])))
-	mesh.add_tube(
-		"jacket",
-		joints,
-		PackedFloat32Array([0.14, 0.15, 0.17, 0.06]),
-		PackedInt32Array([_bone_index("hips"), _bone_index("spine"), _bone_index("chest")]),
-		Vector3.RIGHT,
-		1.25
-	)
-
-
 ## The jacket of a rider of a bike painted `bike_paint`: the paint as a textile wears it,
 ## a shade darker and less saturated than the bike's gloss.
 static func jacket_colour(bike_paint: Color) -> Color:
@@ -342,7 +334,7 @@ func _set_up_head(head: Vector3) -> void:
 	attachment.name = "Head"
 	_skeleton.add_child(attachment)
 	attachment.bone_name = "head"
-	for piece: Array in RiderHelmet.pieces():
+	for piece: Array in RiderHelmet.pieces(gear):
 		_head_piece(attachment, piece[0], piece[1], piece[2])
 	var neck_at := _skeleton.get_bone_global_rest(_bone_index("neck")).origin - head
 	var neck := CapsuleMesh.new()

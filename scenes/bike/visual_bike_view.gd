@@ -21,6 +21,9 @@ const BIKE_DOWN := BikeRestFrame.DOWN
 @export var posed_by_recording := false
 ## Drawn see-through (a ghost).
 @export var ghost := false
+## The rider drawn in the stance a rider takes (RiderStance: tucked, hanging off, standing);
+## off, the drawn rider is the simulated one alone.
+@export var stance_drawn := true
 
 ## The physical_model setting (the game sets it by name): the physical view is drawn
 ## instead of this one.
@@ -32,8 +35,8 @@ var physical_model := false:
 var _simulation: BikeSimulation
 ## The bike as it stood when its drawing was built.
 var _frame: BikeRestFrame
-## Per piece: the mesh, the body it rides on and its offset within that body.
-var _pieces: Array[Dictionary] = []
+## The drawn bike's pieces, each on its body.
+var _parts: BikeParts
 ## Centre of the grips (bike frame), where the simulated hand holds the bar.
 var _grip := Vector3.ZERO
 ## The rear shock's coil, stretched between its mounts every frame: its mounts on the
@@ -47,6 +50,9 @@ var _fork_leg: Node3D
 var _rider: RiderFigure
 ## The bike's paint (BikeDescription.paint).
 var _paint := Color.WHITE
+## The bike's bodywork, whose rider's style (tuck, hang off, stand) the stance follows.
+var _bodywork: BikeBodywork
+var _stance := RiderStance.new()
 
 
 func _ready() -> void:
@@ -61,8 +67,10 @@ func _ready() -> void:
 	_grip = _frame.capsule_ends(LOWER_ARM, -BIKE_FORWARD)[1]
 	var bike: BikeDescription = _simulation.bike if _simulation.bike else BikeDescription.new()
 	_paint = bike.paint
-	_build_wheels()
 	var bodywork := BikeBodywork.worn_by(bike)
+	_parts = BikeParts.new(_frame, self, _paint, ghost)
+	BikeWheels.build(_parts, _simulation.get_wheel_radius(), bodywork)
+	_bodywork = bodywork
 	_build_bodywork(bodywork)
 	_build_swingarm()
 	_build_fork(bodywork)
@@ -70,6 +78,7 @@ func _ready() -> void:
 	_rider.name = "Rider"
 	_rider.ghost = ghost
 	_rider.paint = _paint
+	_rider.gear = bodywork.gear
 	add_child(_rider)
 	_rider.build(_frame)
 	follow()
@@ -83,14 +92,18 @@ func _process(_delta: float) -> void:
 ## Puts every piece on the bodies at `bodies` (global transforms, in body order), the
 ## rider's feet put down on the road at `feet_down` (see RiderFigure.pose).
 func show_pose(bodies: Array[Transform3D], feet_down: Array[Dictionary] = []) -> void:
-	_rider.pose(bodies, feet_down)
-	for piece: Dictionary in _pieces:
-		(piece.node as Node3D).global_transform = bodies[piece.body] * (piece.offset as Transform3D)
+	if posed_by_recording:
+		var frame := bodies[FRAME]
+		_stance.advance_recorded(
+			get_process_delta_time(), _bodywork, frame.origin, _frame.lean_of(frame)
+		)
+	_rider.pose(bodies, feet_down, _stance if stance_drawn else null)
+	_parts.place(bodies)
 	# The coil between its mounts: it shortens as the swingarm rises.
 	var top := bodies[FRAME] * _shock_mounts[0]
 	var bottom := bodies[SWINGARM] * _shock_mounts[1]
 	var stretch := top.distance_to(bottom) / _shock_rest_length
-	var basis := _basis_with_y((top - bottom).normalized(), _frame.right())
+	var basis := BikeParts.basis_with_y((top - bottom).normalized(), _frame.right())
 	_shock.global_transform = Transform3D(
 		basis.scaled_local(Vector3(1, stretch, 1)), (top + bottom) / 2.0
 	)
@@ -102,7 +115,13 @@ func follow() -> void:
 	var bodies: Array[Transform3D] = []
 	for body in _simulation.get_body_count():
 		bodies.append(_simulation.get_body_transform(body))
+	_stance.advance_riding(get_process_delta_time(), _bodywork, _simulation)
 	show_pose(bodies, feet_down_of(_simulation))
+
+
+## How the drawn rider holds themself now (tucked, hanging off, standing).
+func stance() -> RiderStance:
+	return _stance
 
 
 ## The feet the rider of `simulation` has put down that stand on the road (or on the side
@@ -151,42 +170,6 @@ func drawn_shock_length() -> float:
 	return _shock.global_transform.basis.y.length() * _shock_rest_length
 
 
-func _build_wheels() -> void:
-	# Sized by the simulated wheel: a tyre a quarter of the radius deep on its rim.
-	var radius := _simulation.get_wheel_radius()
-	for body in WHEELS:
-		var hub := _frame.rest_of(body).origin
-		var axle := _frame.right().normalized()
-		var facing := _basis_with_y(axle, Vector3.UP)
-		var tyre := TorusMesh.new()
-		tyre.inner_radius = 0.75 * radius
-		tyre.outer_radius = radius
-		tyre.rings = 48
-		_add(body, tyre, "tyre", Transform3D(facing, hub))
-		var rim := TorusMesh.new()
-		rim.inner_radius = 0.63 * radius
-		rim.outer_radius = 0.78 * radius
-		_add(body, rim, "rim", Transform3D(facing, hub))
-		var hub_mesh := CylinderMesh.new()
-		hub_mesh.top_radius = 0.05
-		hub_mesh.bottom_radius = 0.05
-		hub_mesh.height = 0.16
-		_add(body, hub_mesh, "metal", Transform3D(facing, hub))
-		# Spokes make the wheel's turning visible.
-		for i in 5:
-			var spoke := BoxMesh.new()
-			spoke.size = Vector3(0.02, 0.67 * radius, 0.035)
-			var radial := _frame.basis().y.rotated(axle, TAU * i / 5.0)
-			var middle := hub + radial * radius / 3.0
-			_add(body, spoke, "rim", Transform3D(_basis_with_y(radial, axle), middle))
-		if body == BikeSimulation.REAR_WHEEL:
-			var disc := CylinderMesh.new()
-			disc.top_radius = 0.4 * radius
-			disc.bottom_radius = 0.4 * radius
-			disc.height = 0.01
-			_add(body, disc, "metal", Transform3D(facing, hub - axle * 0.07))
-
-
 ## The bodywork on the frame (engine, tank, seat, tail, frame rails, exhaust), from the
 ## bike's description, fitted to this bike's size.
 func _build_bodywork(bodywork: BikeBodywork) -> void:
@@ -200,16 +183,16 @@ func _build_bodywork(bodywork: BikeBodywork) -> void:
 			if piece.shape == BodyworkPiece.Shape.ROD:
 				var a := bodywork.fitted(piece.from * mirror, points)
 				var b := bodywork.fitted(piece.to * mirror, points)
-				_rod(FRAME, a, b, piece.radius, piece.look)
+				_parts.rod(FRAME, a, b, piece.radius, piece.look)
 				continue
 			var block := bodywork.fitted_block(piece.from * mirror, piece.size, piece.pitch, points)
 			match piece.shape:
 				BodyworkPiece.Shape.ELLIPSOID:
-					_unit_shape(FRAME, _unit_sphere(), block, piece.look)
+					_parts.unit_shape(FRAME, BikeParts.unit_sphere(), block, piece.look)
 				BodyworkPiece.Shape.ROUNDED:
-					_unit_shape(FRAME, RoundedBox.mesh(), block, piece.look)
+					_parts.unit_shape(FRAME, RoundedBox.mesh(), block, piece.look)
 				_:
-					_box(FRAME, block.centre, block.size, block.pitch, piece.look)
+					_parts.box(FRAME, block.centre, block.size, block.pitch, piece.look)
 
 
 ## The swingarm's two arms from the pivot to the axle, and the rear shock from the frame
@@ -219,20 +202,20 @@ func _build_swingarm() -> void:
 	var pivot: Vector3 = pivot_axle[0]
 	var axle := _frame.bike_of(_frame.rest_of(BikeSimulation.REAR_WHEEL).origin)
 	for side: float in [-1.0, 1.0]:
-		_rod(
+		_parts.rod(
 			SWINGARM,
 			pivot + Vector3(0, 0, side * 0.1),
 			axle + Vector3(0, 0, side * 0.1),
 			0.03,
 			"frame"
 		)
-	_rod(SWINGARM, pivot + Vector3(0, 0, -0.1), pivot + Vector3(0, 0, 0.1), 0.035, "frame")
+	_parts.rod(SWINGARM, pivot + Vector3(0, 0, -0.1), pivot + Vector3(0, 0, 0.1), 0.035, "frame")
 	_build_chain(pivot, axle)
 	# A monoshock under the seat: from the frame to a third of the way along the arm.
 	var bottom := pivot.lerp(axle, 0.35) + Vector3(0, 0.04, 0)
 	var top := pivot + Vector3(-0.12, 0.36, 0)
-	_rod(FRAME, top, top.lerp(bottom, 0.45), 0.03, "metal")
-	_rod(SWINGARM, bottom, bottom.lerp(top, 0.5), 0.012, "metal")
+	_parts.rod(FRAME, top, top.lerp(bottom, 0.45), 0.03, "metal")
+	_parts.rod(SWINGARM, bottom, bottom.lerp(top, 0.5), 0.012, "metal")
 	var coil := CylinderMesh.new()
 	coil.top_radius = 0.045
 	coil.bottom_radius = 0.045
@@ -259,20 +242,10 @@ func _build_chain(pivot: Vector3, axle: Vector3) -> void:
 		FRAME: [pivot + Vector3(0.06, 0.0, 0.0), 0.045], BikeSimulation.REAR_WHEEL: [axle, 0.09]
 	}
 	for body: int in sprockets:
-		var disc := CylinderMesh.new()
-		disc.top_radius = sprockets[body][1]
-		disc.bottom_radius = sprockets[body][1]
-		disc.height = 0.012
-		var centre: Vector3 = sprockets[body][0] + left
-		_add(
-			body,
-			disc,
-			"chain",
-			Transform3D(_basis_with_y(_frame.right(), Vector3.UP), _frame.world_of(centre))
-		)
+		_parts.disc(body, sprockets[body][0] + left, sprockets[body][1], 0.012, "chain")
 	var front: Vector3 = sprockets[FRAME][0] + left
 	for run: float in [-1.0, 1.0]:
-		_rod(
+		_parts.rod(
 			SWINGARM,
 			front + Vector3(0, run * 0.045, 0),
 			axle + left + Vector3(0, run * 0.09, 0),
@@ -291,104 +264,57 @@ func _build_fork(bodywork: BikeBodywork) -> void:
 	var top: Vector3 = stanchions[1]
 	for side: float in [-1.0, 1.0]:
 		var out := Vector3(0, 0, side * 0.09)
-		_rod(FORK, stanchions[0] + out, top + out, 0.022, "metal")
-		_stanchion = _pieces[-1].node
-		_rod(FORK_LOWER, axle + out, lower_top + out, 0.032, "frame")
-		_fork_leg = _pieces[-1].node
-		_rod(
+		_stanchion = _parts.rod(FORK, stanchions[0] + out, top + out, 0.022, "metal")
+		_fork_leg = _parts.rod(FORK_LOWER, axle + out, lower_top + out, 0.032, "frame")
+		_parts.rod(
 			FORK,
 			top + Vector3(-0.04, 0.04, side * 0.06),
 			Vector3(_grip.x, _grip.y, side * 0.33),
 			0.016,
 			"frame"
 		)
-	_rod(FORK, Vector3(_grip.x, _grip.y, -0.38), Vector3(_grip.x, _grip.y, 0.38), 0.015, "frame")
+	_parts.rod(
+		FORK, Vector3(_grip.x, _grip.y, -0.38), Vector3(_grip.x, _grip.y, 0.38), 0.015, "frame"
+	)
 	for side: float in [-1.0, 1.0]:
-		_rod(
+		_parts.rod(
 			FORK,
 			Vector3(_grip.x, _grip.y, side * 0.3),
 			Vector3(_grip.x, _grip.y, side * 0.4),
 			0.022,
 			"rubber"
 		)
-	_box(FORK, top + Vector3(0.0, -0.02, 0.0), Vector3(0.08, 0.05, 0.24), 0.0, "frame")
+	_parts.box(FORK, top + Vector3(0.0, -0.02, 0.0), Vector3(0.08, 0.05, 0.24), 0.0, "frame")
+	if bodywork.mirrors:
+		for side: float in [-1.0, 1.0]:
+			# A stalk up and out from inside the grip, a mirror's head on it facing back.
+			var foot := Vector3(_grip.x - 0.02, _grip.y + 0.02, side * 0.25)
+			var head := foot + Vector3(-0.02, 0.2, side * 0.08)
+			_parts.rod(FORK, foot, head, 0.007, "frame")
+			var block := {
+				centre = head + Vector3(0, 0.03, side * 0.02),
+				size = Vector3(0.03, 0.07, 0.12),
+				pitch = 0.0
+			}
+			_parts.unit_shape(FORK, BikeParts.unit_sphere(), block, "frame")
 	match bodywork.fork_front:
 		"lamp":
 			var lamp := SphereMesh.new()
 			lamp.radius = 0.085
 			lamp.height = 0.15
 			var at := _frame.world_of(top + Vector3(0.14, -0.12, 0.0))
-			_add(FORK, lamp, "lamp", Transform3D(_frame.basis(), at))
+			_parts.add(FORK, lamp, "lamp", Transform3D(_frame.basis(), at))
 		"number_board":
 			# Leaning back with the fork, ahead of the clamps and the bar.
-			_box(FORK, top + Vector3(0.17, -0.16, 0.0), Vector3(0.02, 0.24, 0.26), 0.4, "plate")
+			_parts.box(
+				FORK, top + Vector3(0.17, -0.16, 0.0), Vector3(0.02, 0.24, 0.26), 0.4, "plate"
+			)
 	var radius := _simulation.get_wheel_radius()
 	if bodywork.high_mudguard:
 		# On the bottom clamp, clear of the tyre by the travel: a blade reaching forward.
 		var clamp := axle + Vector3(0.03, radius + 0.13, 0.0)
-		_box(FORK, clamp, Vector3(0.5, 0.03, 0.13), -0.1, "paint")
+		_parts.box(FORK, clamp, Vector3(0.5, 0.03, 0.13), -0.1, "paint")
 	else:
 		# The mudguard a few centimetres above the tyre, whatever its size.
 		var mudguard := axle + Vector3(0.0, radius + 0.05, 0.0)
-		_box(FORK_LOWER, mudguard, Vector3(0.3, 0.03, 0.14), 0.0, "paint")
-
-
-## A capsule (rounded rod) from `a` to `b` (bike frame), `widen` times wider sideways.
-func _rod(body: int, a: Vector3, b: Vector3, radius: float, look: String, widen := 1.0) -> void:
-	var capsule := CapsuleMesh.new()
-	capsule.radius = radius
-	capsule.height = a.distance_to(b) + 2.0 * radius
-	var from := _frame.world_of(a)
-	var to := _frame.world_of(b)
-	var basis := _basis_with_y((to - from).normalized(), _frame.right()).scaled_local(
-		Vector3(widen, 1.0, 1.0)
-	)
-	_add(body, capsule, look, Transform3D(basis, (from + to) / 2.0))
-
-
-func _box(body: int, centre: Vector3, size: Vector3, pitch: float, look: String) -> void:
-	var box := BoxMesh.new()
-	box.size = Vector3(size.z, size.y, size.x)
-	var basis := _frame.basis() * Basis(Vector3.RIGHT, pitch)
-	_add(body, box, look, Transform3D(basis, _frame.world_of(centre)))
-
-
-## `unit` (a metre each way about its centre) stretched to `block`'s size and tilt.
-func _unit_shape(body: int, unit: Mesh, block: Dictionary, look: String) -> void:
-	var size: Vector3 = block.size
-	var basis := (
-		_frame.basis()
-		* Basis(Vector3.RIGHT, block.pitch)
-		* Basis.from_scale(Vector3(size.z, size.y, size.x))
-	)
-	_add(body, unit, look, Transform3D(basis, _frame.world_of(block.centre)))
-
-
-static func _unit_sphere() -> SphereMesh:
-	var sphere := SphereMesh.new()
-	sphere.radius = 0.5
-	sphere.height = 1.0
-	return sphere
-
-
-## Adds a mesh placed at `world_at_rest` that rides on `body` from now on.
-func _add(body: int, mesh: Mesh, look: String, world_at_rest: Transform3D) -> void:
-	var node := MeshInstance3D.new()
-	node.mesh = mesh
-	var colour := _paint if look == "paint" else Color(0, 0, 0, 0)
-	BikeLooks.dress(node, look, colour, ghost)
-	node.top_level = true
-	node.name = "%s_%d" % [look, _pieces.size()]
-	add_child(node)
-	_pieces.append({node = node, body = body, offset = _frame.on_body(body, world_at_rest)})
-
-
-## An orthonormal basis whose y is `y` and whose x is as close to `x_hint` as it can be.
-static func _basis_with_y(y: Vector3, x_hint: Vector3) -> Basis:
-	var hint := (
-		x_hint
-		if absf(x_hint.normalized().dot(y)) < 0.95
-		else y.cross(Vector3.UP + Vector3.RIGHT * 0.3)
-	)
-	var x := (hint - y * hint.dot(y)).normalized()
-	return Basis(x, y, x.cross(y))
+		_parts.box(FORK_LOWER, mudguard, Vector3(0.3, 0.03, 0.14), 0.0, "paint")

@@ -2,7 +2,8 @@ extends TestCase
 ## A bike's looks are data: its bodywork (a BikeBodywork file) is drawn as authored on the
 ## bike it was drawn on, fitted to a bike of another size and painted in the bike's own
 ## colour; a description naming something that is not usable bodywork draws the standard
-## bodywork, with an error saying why. A ghost is see-through all over and casts no shadow.
+## bodywork, with an error saying why. Each bike has its wheels (cast or wire-spoked),
+## brake discs and mirrors. A ghost is see-through all over and casts no shadow.
 
 const GAME := preload("res://scenes/game/game.tscn")
 const LEVEL := "res://scenes/levels/test_level/test_level.tscn"
@@ -112,6 +113,41 @@ func test_each_bike_a_player_chooses_wears_its_own_bodywork_and_fork_front() -> 
 	assert_eq(fronts.street_390, [1, 0], "a round headlamp")
 	assert_eq(fronts.dirt_125, [0, 1], "a number board")
 	assert_eq(fronts.sport_600, [0, 0], "the fairing's lamps")
+
+
+func test_each_bike_has_its_wheels_brakes_and_mirrors() -> void:
+	var seen := {}
+	for key: String in Bikes.keys():
+		var view := await _drawn(Bikes.path_of(key))
+		var axle := _game.bike.get_body_transform(BikeSimulation.FRONT_WHEEL).origin
+		var front_calipers := 0
+		for caliper in _pieces(view, "caliper", "BoxMesh"):
+			var off := caliper.global_position.distance_to(axle)
+			front_calipers += int(off < BikeWheels.DISC * _game.bike.get_wheel_radius() + 0.05)
+		var spokes := 0
+		for wheel in _pieces(view, "rim", "ArrayMesh"):
+			spokes = maxi(spokes, wheel.mesh.surface_get_array_len(0))
+		seen[key] = {
+			calipers = _pieces(view, "caliper", "BoxMesh").size(),
+			front_calipers = front_calipers,
+			mirrors = _pieces(view, "frame", "SphereMesh").size(),
+			spoke_vertices = spokes,
+		}
+		_game.queue_free()
+		_game = null
+		await wait_frames(1)
+	assert_eq(seen.street_390.front_calipers, 2, "two discs up front on the street 390")
+	assert_eq(seen.sport_600.front_calipers, 2, "and on the sport 600")
+	assert_eq(seen.dirt_125.front_calipers, 1, "one on the light dirt 125")
+	for key: String in seen:
+		assert_eq(seen[key].calipers - seen[key].front_calipers, 1, "%s: one at the back" % key)
+	assert_eq([seen.street_390.mirrors, seen.sport_600.mirrors], [2, 2], "road bikes' mirrors")
+	assert_eq(seen.dirt_125.mirrors, 0, "no mirrors on the dirt bike")
+	assert_gt(
+		seen.dirt_125.spoke_vertices,
+		2 * seen.street_390.spoke_vertices,
+		"laced wire spokes on the dirt bike, a few cast ones on the road bikes"
+	)
 
 
 func test_bodywork_that_cannot_be_worn_draws_the_standard_bodywork_with_an_error() -> void:

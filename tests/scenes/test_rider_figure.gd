@@ -2,7 +2,8 @@ extends TestCase
 ## The skinned rider is posed by IK on the simulated bodies: hands on the simulated
 ## hands, feet on the simulated feet, elbows and knees bent towards the simulated ones,
 ## the head turned into a turn; after a crash the drawn rider follows the tumbling bodies.
-## The jacket is dyed after the bike's paint.
+## The jacket is dyed after the bike's paint. (The stance drawn over the simulated rider is
+## test_rider_stance.gd's.)
 
 ## How close (m) the IK puts a hand or foot to where the simulation has it.
 const REACH := 0.02
@@ -78,6 +79,9 @@ func test_the_skin_is_bound_to_a_skeleton_of_two_armed_two_legged_rider() -> voi
 
 
 func test_hands_and_feet_are_where_the_simulation_has_them_in_a_turn() -> void:
+	# The drawing of the simulated rider alone: the stance riders take is drawn over it
+	# (test_rider_stance.gd).
+	_view().stance_drawn = false
 	# The arcade controller plans nothing, so the ride is the same however busy the machine.
 	_game.bike.controller = "arcade"
 	Input.action_press(&"throttle", 0.7)

@@ -31,6 +31,28 @@ const STANDARD := "res://scenes/bike/bodywork/naked.tres"
 ## The front mudguard: just above the tyre (a road bike's), or high under the fork's
 ## bottom clamp, clear of mud and the long travel (a dirt bike's).
 @export var high_mudguard := false
+## Mirrors on stalks from the bar (a road bike's).
+@export var mirrors := false
+
+@export_group("Wheels")
+## Cast spokes (a road bike's) or laced wire spokes (a dirt bike's) (BikeWheels).
+@export_enum("cast", "spoked") var wheels := "cast"
+## Brake discs on the front wheel: two on a road bike that stops hard, one on a light one.
+@export_range(0, 2) var front_discs := 1
+
+@export_group("The rider")
+## What the rider wears (RiderSkin): road leathers and a full-face helmet, or a motocross
+## kit, its helmet with a peak and goggles.
+@export_enum("road", "motocross") var gear := "road"
+## Speed (km/h) where the rider starts to tuck in behind the clocks, and where they are
+## tucked all the way; equal speeds, never (a dirt rider sits up).
+@export var tuck_from_kmh := 0.0
+@export var tuck_full_kmh := 0.0
+## How far the rider hangs off into a bend (RiderStance): 0 sits on the centre line, 1 puts
+## the inside knee all the way out and the head inside the bike's.
+@export_range(0.0, 1.0) var hang_off := 0.0
+## Stands on the pegs in the air and over rough ground, as a dirt rider does.
+@export var stands_on_pegs := false
 
 
 ## The bodywork `bike` (a BikeDescription) names, or the standard one (with an error
