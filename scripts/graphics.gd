@@ -17,7 +17,9 @@ signal applied(preset: String)
 ## does it almost for free; in software 2× multiplies the frame time by five, so only high
 ## has it); `tree_share`: the share of the trees beside a track that stand (`Trackside`);
 ## `prop_shadows`: whether the things beside the track cast shadows (in software, most of
-## what the trees cost).
+## what the trees cost); `edge_smoothing`: a pass over the drawn picture that smooths its
+## jagged edges (scenes/world/edge_smoothing.gdshader: antialiasing a software renderer
+## affords, for the preset without MSAA that has textures).
 const PRESETS := {
 	low =
 	{
@@ -27,6 +29,7 @@ const PRESETS := {
 		msaa = Viewport.MSAA_DISABLED,
 		tree_share = 0.25,
 		prop_shadows = false,
+		edge_smoothing = false,
 	},
 	medium =
 	{
@@ -36,6 +39,7 @@ const PRESETS := {
 		msaa = Viewport.MSAA_DISABLED,
 		tree_share = 0.7,
 		prop_shadows = true,
+		edge_smoothing = true,
 	},
 	high =
 	{
@@ -45,6 +49,7 @@ const PRESETS := {
 		msaa = Viewport.MSAA_4X,
 		tree_share = 1.0,
 		prop_shadows = true,
+		edge_smoothing = false,
 	},
 }
 ## The presets from the plainest to the richest (the order auto steps in).
@@ -58,6 +63,10 @@ const FAST_FRAME_S := 1.0 / 55.0
 ## before it measures, and the frames it averages.
 const SETTLING_FRAMES := 30
 const MEASURED_FRAMES := 120
+## The edge smoothing pass, drawn on the lowest canvas layer: above the 3D picture, below
+## every menu and HUD, whose text it would blur.
+const EDGE_SMOOTHING := preload("res://scenes/world/edge_smoothing.gdshader")
+const EDGE_SMOOTHING_LAYER := -128
 
 ## The surfaces whose textures `textured` turns on and off: the levels' materials.
 const SURFACES: Array[String] = [
@@ -93,9 +102,11 @@ var _frames_to_settle := SETTLING_FRAMES
 var _measured: PackedFloat64Array = []
 var _last_frame_usec := 0
 var _stepped_down := false
+var _edge_smoothing: ColorRect
 
 
 func _ready() -> void:
+	_add_edge_smoothing()
 	for path in SURFACES:
 		var material := load(path) as Material if ResourceLoader.exists(path) else null
 		if material == null:
@@ -130,6 +141,7 @@ func apply(name: String) -> void:
 	RenderingServer.directional_shadow_atlas_set_size(settings.shadow_size, true)
 	RenderingServer.directional_soft_shadow_filter_set_quality(settings.shadow_filter)
 	get_tree().root.msaa_3d = settings.msaa
+	_edge_smoothing.visible = settings.edge_smoothing
 	preset = name
 	_frames_to_settle = SETTLING_FRAMES
 	_measured.clear()
@@ -186,3 +198,25 @@ func measure_frame(frame_s: float) -> void:
 ## Whether a level is being ridden: a 3D camera draws the window and the game runs.
 func _riding() -> bool:
 	return get_viewport().get_camera_3d() != null and not get_tree().paused
+
+
+## Whether the edge smoothing pass is drawn now.
+func is_smoothing_edges() -> bool:
+	return _edge_smoothing.visible
+
+
+## The edge smoothing pass: a rectangle over the whole window on the lowest canvas layer,
+## which lets every click and touch through.
+func _add_edge_smoothing() -> void:
+	var layer := CanvasLayer.new()
+	layer.name = "EdgeSmoothing"
+	layer.layer = EDGE_SMOOTHING_LAYER
+	add_child(layer)
+	_edge_smoothing = ColorRect.new()
+	_edge_smoothing.name = "Pass"
+	_edge_smoothing.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_edge_smoothing.set_anchors_preset(Control.PRESET_FULL_RECT)
+	var material := ShaderMaterial.new()
+	material.shader = EDGE_SMOOTHING
+	_edge_smoothing.material = material
+	layer.add_child(_edge_smoothing)

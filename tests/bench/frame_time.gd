@@ -6,7 +6,8 @@ extends Node
 ## rider as the paired difference in wall-clock frame time between alternating blocks of
 ## frames with it shown and hidden, the game paused so nothing else changes (95 % interval);
 ## then the world's drawing the same way (the land and hills round the level, the clouded
-## sky against a plain one of the same colours, the track's kerbs and edge lines), then
+## sky against a plain one of the same colours, the track's kerbs and edge lines, medium's
+## edge smoothing pass), then
 ## each graphics quality preset's frame time on the same still picture, in blocks taken in
 ## turn, with its paired difference from low. The features are measured at low.
 ## Run under Xvfb by tools/frame-time.sh; the ghost raced is the bot's lap from the
@@ -81,13 +82,14 @@ func _ready() -> void:
 		)
 	)
 	var figures: Array = [controller]
-	for part: String in ["horizon", "sky", "kerbs"]:
+	for part: String in ["horizon", "sky", "kerbs", "edges"]:
 		figures.append_array(world[part])
 	print(
 		(
 			(
 				"frame time of the world (%s): the land and hills %+.2f ± %.2f ms, the clouded sky"
-				+ " %+.2f ± %.2f ms against a plain one, the kerbs and edge lines %+.2f ± %.2f ms"
+				+ " %+.2f ± %.2f ms against a plain one, the kerbs and edge lines %+.2f ± %.2f ms,"
+				+ " the edge smoothing pass %+.2f ± %.2f ms"
 			)
 			% figures
 		)
@@ -180,7 +182,8 @@ func _preset_costs(pairs: int) -> Dictionary:
 
 ## What the world's drawing costs, each part as `_paired_cost` measures it: the Horizon,
 ## the clouded sky against the procedural sky of the same colours it replaced, and the
-## track's kerbs and edge lines. [mean, half-width] each.
+## track's kerbs and edge lines, and the edge smoothing pass (Graphics). [mean, half-width]
+## each.
 func _world_costs(pairs: int) -> Dictionary:
 	var horizon := _game.get_node(^"Horizon") as Node3D
 	var sky := (_game.get_node(^"Environment") as WorldEnvironment).environment.sky
@@ -207,6 +210,10 @@ func _world_costs(pairs: int) -> Dictionary:
 		pairs
 	)
 	sky.sky_material = clouded
+	var edge_pass := Graphics.get_node(^"EdgeSmoothing/Pass") as CanvasItem
+	var smoothing := edge_pass.visible
+	result.edges = await _paired_cost(func(on: bool) -> void: edge_pass.visible = on, pairs)
+	edge_pass.visible = smoothing
 	return result
 
 

@@ -1,6 +1,6 @@
 extends TestCase
-## The graphics quality: each preset draws what it says (textures, shadow filter,
-## antialiasing), the setting chooses it, and auto settles on the richest preset the
+## The graphics quality: each preset draws what it says (textures, shadow filter, edge
+## smoothing, antialiasing), the setting chooses it, and auto settles on the richest preset the
 ## measured frame time holds without swinging between two.
 
 const ROAD := "res://scenes/levels/materials/road.tres"
@@ -78,3 +78,17 @@ func test_an_unknown_preset_is_refused() -> void:
 func _frames(frame_s: float) -> void:
 	for i in Graphics.SETTLING_FRAMES + Graphics.MEASURED_FRAMES:
 		Graphics.measure_frame(frame_s)
+
+
+func test_medium_smooths_the_edges_below_the_hud_and_low_and_high_do_not() -> void:
+	var smoothed := {}
+	for preset: String in Graphics.ORDER:
+		Settings.set_value(&"graphics_quality", preset)
+		smoothed[preset] = Graphics.is_smoothing_edges()
+	assert_eq(smoothed, {low = false, medium = true, high = false}, "high has MSAA instead")
+	var layer := Graphics.get_node(^"EdgeSmoothing") as CanvasLayer
+	assert_eq(layer.layer, -128, "below every menu and HUD (the lowest layer there is)")
+	var pass_rect := layer.get_node(^"Pass") as ColorRect
+	assert_eq(pass_rect.mouse_filter, Control.MOUSE_FILTER_IGNORE, "clicks go through")
+	var shader := (pass_rect.material as ShaderMaterial).shader
+	assert_true(shader.code.contains("hint_screen_texture"), "it reads the drawn picture")

@@ -24,8 +24,8 @@ extends Node
 ## instead took 50 ms a frame, most of this step's time. The full ride is drawn frame by
 ## frame by the sound check's recording.
 
-## The graphics quality pictures show: the textured world, without the antialiasing that
-## multiplies a software renderer's frame time several times over.
+## The graphics quality pictures show: the textured world with its edges smoothed, without
+## the MSAA that multiplies a software renderer's frame time several times over.
 const PICTURE_QUALITY := "medium"
 const MIN_DISTINCT_COLOURS := 12
 const MIN_LUMINANCE_SPREAD := 0.04
