@@ -13,7 +13,7 @@ shots=build/screenshots
 
 # docs/images/ pictures other tools draw, with the command that draws each.
 declare -A MADE_ELSEWHERE=(
-  [auto-trajectories.png]="tools/auto-trajectories.sh (a timing study, drawn with its run)"
+  [auto-trajectories.png]="a real-time ride's window (make play, telemetry on): a capture waits for every plan, so it cannot show what auto chooses in time"
   [benchmark-bicycle.png]="tools/bicycle-benchmark --chart docs/images/benchmark-bicycle.png"
   [look-before-after.png]="a before/after of issue 101's world, from two trees (docs/levels.md)"
   [bikes-before-after.png]="a before/after of issue 101's bikes, from two trees (docs/bike-model.md)"
