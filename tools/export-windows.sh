@@ -23,7 +23,7 @@ for file in counter-steer.exe counter-steer.pck cpbp.dll; do
   [ -f "$out_dir/$file" ] || die "the Windows export has no $file"
 done
 # The credits and licences ship beside the game.
-cp CREDITS.md "$out_dir/"
+cp LICENSE CREDITS.md "$out_dir/"
 runtime=$(objdump -p "$out_dir/counter-steer.exe" "$out_dir/cpbp.dll" | sed -n 's/^\tDLL Name: //p' \
   | grep -iE '^lib|mingw' || true)
 [ -z "$runtime" ] || die "the Windows build needs DLLs Windows does not have: $runtime"

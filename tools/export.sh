@@ -34,7 +34,7 @@ tools/godot --headless --path . --export-release "Linux" "$PROJECT_ROOT/$binary"
 tools/check-godot-log build/logs/export.log
 [ -x "$binary" ] || die "the export produced no $binary"
 # The credits and licences ship beside the game.
-cp CREDITS.md "$out_dir/"
+cp LICENSE CREDITS.md "$out_dir/"
 
 # Start the exported game once. Here its binary needs the private root's newer glibc; run
 # through that root's loader it would take the loader for itself and miss its .pck and
