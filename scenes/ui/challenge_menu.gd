@@ -61,7 +61,7 @@ func show_lessons(catalogue: ChallengeCatalogue, bike: String) -> void:
 
 ## Level `level_key`'s challenges (`paths`, all open) after a free ride of it.
 func show_level(level_key: String, paths: Array[String], bike: String) -> void:
-	_intro.text = "%s: ride it freely, or take on its challenges." % Levels.NAMES[level_key]
+	_intro.text = "%s: ride it freely, or take on its challenges." % Levels.name_of(level_key)
 	_show(paths, false, level_key, bike)
 
 

@@ -57,7 +57,7 @@ func _ready() -> void:
 ## path), drawn once.
 func show_level(key: String) -> void:
 	var path := key if key.begins_with("res://") else Levels.path_of(key)
-	show_scene(path if not path.is_empty() else Levels.ALL.values()[0])
+	show_scene(path if not path.is_empty() else Levels.path_of(Levels.keys()[0]))
 
 
 ## Shows the lesson or challenge at `path` where it starts, with only its markers.

@@ -7,7 +7,7 @@ extends Control
 ## Works with a gamepad alone (d-pad/stick to move, A to choose).
 ## `--native-info` prints the native module and exits (smoke tests, bug reports).
 
-## The player chose a level to ride freely (its key in `Levels.ALL`), or a lesson or
+## The player chose a level to ride freely (its key in `Levels.keys()`), or a lesson or
 ## challenge (its file).
 signal ride_requested(level: String)
 signal challenge_requested(path: String)
@@ -150,7 +150,7 @@ func _focus_where_the_player_left_off() -> void:
 		return
 	if challenge >= 0 and _open_level_at(catalogue.challenges[challenge]):
 		return
-	var key := last if Levels.ALL.has(last) else str(Settings.get_value(&"level"))
+	var key := last if Levels.keys().has(last) else str(Settings.get_value(&"level"))
 	var chosen := _levels.get_node_or_null(NodePath(key)) as Button
 	(chosen if chosen != null else _levels.get_child(0) as Button).grab_focus()
 
@@ -186,10 +186,10 @@ func _build_choices() -> void:
 	_list.free_ride_chosen.connect(func(key: String) -> void: ride_requested.emit(key))
 	_list.closed.connect(close_list)
 	_list.challenge_focused.connect(_show_in_backdrop)
-	for key: String in Levels.ALL:
+	for key in Levels.keys():
 		var button := Button.new()
 		button.name = key
-		button.text = Levels.NAMES[key]
+		button.text = Levels.name_of(key)
 		button.add_theme_font_size_override(&"font_size", 26)
 		button.pressed.connect(open_level.bind(key, -1))
 		# The backdrop shows the level the focus is on.

@@ -1,6 +1,8 @@
 extends TestCase
-## Every level loads, its geometry becomes the bike's terrain without a problem, and the
-## bike spawned at each of its spawn points comes to rest on both wheels.
+## The levels are the `level` setting's choices, each a scene at its folder's name, named
+## in menus by its title. Every level loads, its geometry becomes the bike's terrain
+## without a problem, and the bike spawned at each of its spawn points comes to rest on
+## both wheels.
 
 const BIKE := preload("res://scenes/bike/bike.tscn")
 ## Control steps to settle onto the wheels: 0.5 s. Nobody can balance a bike standing
@@ -8,8 +10,21 @@ const BIKE := preload("res://scenes/bike/bike.tscn")
 const SETTLE_STEPS := 15
 
 
+func test_the_levels_are_the_level_settings_choices_each_a_scene_named_by_its_title() -> void:
+	assert_eq(Levels.keys(), ["test_level", "track", "skate_park"], "the schema's order")
+	assert_eq(Levels.path_of("track"), "res://scenes/levels/track/track.tscn")
+	assert_eq(Levels.key_of("res://scenes/levels/skate_park/skate_park.tscn"), "skate_park")
+	var names := Levels.keys().map(Levels.name_of)
+	assert_eq(names, ["Thesis test (rides itself)", "Track", "Skate park"], "by their titles")
+	assert_eq(Levels.path_of("school"), "", "the School is not a level to ride freely")
+	assert_eq(Levels.path_of("../track"), "", "nor a path")
+	assert_eq(Levels.key_of("res://scenes/levels/nowhere.tscn"), "")
+	var default_level: String = Settings.schema_entry(&"level").default
+	assert_has(Levels.keys(), default_level, "the default is one of them")
+
+
 func test_every_level_converts_to_terrain_without_problems() -> void:
-	for key: String in Levels.ALL:
+	for key in Levels.keys():
 		var level := _load(key)
 		add_child(level)
 		assert_eq(
@@ -21,7 +36,7 @@ func test_every_level_converts_to_terrain_without_problems() -> void:
 
 
 func test_the_bike_rests_on_its_wheels_at_every_spawn_point() -> void:
-	for key: String in Levels.ALL:
+	for key in Levels.keys():
 		var level := _load(key)
 		add_child(level)
 		var spawns := level.spawn_points()
@@ -49,7 +64,7 @@ func test_lap_gates_face_the_way_the_lap_is_ridden() -> void:
 	# A gate counts crossings towards its −z only: turned the other way, no lap could ever
 	# count (the track's two bend gates once were, found by the bot's first lap).
 	var gates := 0
-	for key: String in Levels.ALL:
+	for key in Levels.keys():
 		var level := _load(key)
 		add_child(level)
 		var lap := level.get_node_or_null("Lap") as Path3D

@@ -42,7 +42,7 @@ func test_every_levels_start_has_the_bikes_shadow_in_the_chase_cameras_view() ->
 	var sun := _game.get_node(^"Sun") as DirectionalLight3D
 	var travels := -sun.basis.z
 	var shadow_heading := Vector2(travels.x, travels.z).normalized()
-	for key: String in Levels.ALL:
+	for key in Levels.keys():
 		var level := (load(Levels.path_of(key)) as PackedScene).instantiate() as Level
 		add_child(level)
 		var spawn := level.spawn_points()[0].spawn_transform()

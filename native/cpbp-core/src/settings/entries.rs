@@ -275,7 +275,11 @@ pub const LEVEL: Setting = Setting {
     name: "level",
     label: "Level",
     description: "The level the start menu offers first.",
+    // The levels, each a scene in a folder of the same name under scenes/levels/
+    // (scenes/levels/track/track.tscn); the start menu offers them in this order and names
+    // each by its scene's title. A new level is its scene and one name here.
     default: D::Text("test_level"),
+    choices: &["test_level", "track", "skate_park"],
     owner: Owner::Game,
     player: true,
     ..BASE
