@@ -48,6 +48,10 @@ const HANG_ROLL := deg_to_rad(14.0)
 const KNEE_OUT := 0.22
 const LOOK_INTO_BEND := 3.0
 
+## The stance of a rider drawn as simulated (every part at rest), shared, so posing
+## without a stance makes nothing each frame.
+static var _seated := RiderStance.new()
+
 ## Drawn see-through (a ghost).
 var ghost := false
 ## The bike's paint, which the helmet's stripe and spoiler wear and the jacket is dyed
@@ -148,7 +152,7 @@ func build(frame: BikeRestFrame) -> void:
 func pose(
 	bodies: Array[Transform3D], feet_down: Array[Dictionary], stance: RiderStance = null
 ) -> void:
-	var held := stance if stance != null else RiderStance.new()
+	var held := stance if stance != null else _seated
 	var seated := bodies[TORSO] * _skeleton_on_torso
 	var up := seated.basis.y.normalized()
 	seated.origin += (
